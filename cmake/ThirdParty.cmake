@@ -1,0 +1,25 @@
+# Header-only dependencies from Debian: Eigen, nlohmann-json, doctest.
+#
+# Emscripten's sysroot hides /usr/include, and adding -I/usr/include breaks its libc headers.
+# So both builds see these libraries through folders of symlinks in the build tree that hold
+# nothing but them. Two folders, so that the core cannot even see doctest.
+set(_shim "${CMAKE_BINARY_DIR}/thirdparty-include")
+
+function(_cspacelab_shim folder name target)
+  if(NOT EXISTS "${target}")
+    message(FATAL_ERROR "${target} not found: run scripts/setup.sh (Debian package providing '${name}')")
+  endif()
+  file(MAKE_DIRECTORY "${_shim}/${folder}")
+  file(CREATE_LINK "${target}" "${_shim}/${folder}/${name}" SYMBOLIC)
+endfunction()
+
+_cspacelab_shim(core Eigen "/usr/include/eigen3/Eigen")
+_cspacelab_shim(core nlohmann "/usr/include/nlohmann")
+_cspacelab_shim(test doctest "/usr/include/doctest")
+
+# What src/core may use, and nothing else.
+add_library(cspacelab_core_deps INTERFACE)
+target_include_directories(cspacelab_core_deps SYSTEM INTERFACE "${_shim}/core")
+
+add_library(cspacelab_doctest INTERFACE)
+target_include_directories(cspacelab_doctest SYSTEM INTERFACE "${_shim}/test")

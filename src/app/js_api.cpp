@@ -1,0 +1,59 @@
+#include "app/js_api.hpp"
+
+#ifdef __EMSCRIPTEN__
+#include <emscripten.h>
+#define CSL_EXPORT EMSCRIPTEN_KEEPALIVE
+#else
+#define CSL_EXPORT
+#endif
+
+namespace csl::app {
+
+using json = nlohmann::json;
+
+namespace {
+// Invalid UTF-8 from the page (say, in an unknown command's name) must not make dump() throw.
+std::string text(const json& j) { return j.dump(-1, ' ', false, json::error_handler_t::replace); }
+}  // namespace
+
+void JsApi::add(const std::string& name, const std::string& help, ApiHandler handler) {
+  commands_[name] = Entry{help, std::move(handler)};
+}
+
+std::string JsApi::call(const std::string& request) const {
+  auto error = [](const std::string& message) { return text(json{{"ok", false}, {"error", message}}); };
+  const json req = json::parse(request, nullptr, /*allow_exceptions=*/false);
+  if (req.is_discarded() || !req.is_object()) return error("request is not a JSON object");
+  auto cmd = req.find("cmd");
+  if (cmd == req.end() || !cmd->is_string()) return error("request has no \"cmd\" string");
+  const std::string name = cmd->get<std::string>();
+  if (name == "help") {
+    json list = json::object();
+    for (const auto& [n, e] : commands_) list[n] = e.help;
+    return text(json{{"ok", true}, {"result", list}});
+  }
+  auto it = commands_.find(name);
+  if (it == commands_.end()) return error("unknown command \"" + name + "\" (try \"help\")");
+  json args = req.value("args", json::object());
+  if (!args.is_object()) return error("\"args\" must be an object");
+  try {
+    return text(json{{"ok", true}, {"result", it->second.handler(args)}});
+  } catch (const std::exception& e) {
+    // ApiError, SceneError and json type errors alike: the app state is untouched by a
+    // handler that throws before it commits, which every handler is written to do.
+    return error(e.what());
+  }
+}
+
+JsApi& js_api() {
+  static JsApi api;
+  return api;
+}
+
+}  // namespace csl::app
+
+extern "C" CSL_EXPORT const char* csl_call(const char* request) {
+  static std::string response;
+  response = csl::app::js_api().call(request ? request : "");
+  return response.c_str();
+}

@@ -1,0 +1,148 @@
+#include "app/platform.hpp"
+
+#include <SDL.h>
+
+#include <cstdio>
+
+#include "app/fonts.hpp"
+#include "imgui.h"
+#include "imgui_impl_opengl3.h"
+#include "imgui_impl_sdl.h"
+
+#ifdef __EMSCRIPTEN__
+#include <GLES3/gl3.h>
+#include <emscripten.h>
+#include <emscripten/html5.h>
+#else
+#include <SDL_opengl.h>
+#endif
+
+namespace csl::app {
+
+bool Platform::init(const PlatformOptions& options) {
+  max_frames_ = options.max_frames;
+  if (SDL_Init(SDL_INIT_VIDEO | SDL_INIT_TIMER) != 0) {
+    std::fprintf(stderr, "SDL_Init failed: %s\n", SDL_GetError());
+    return false;
+  }
+#ifdef __EMSCRIPTEN__
+  // WebGL2 is OpenGL ES 3.0.
+  const char* glsl_version = "#version 300 es";
+  SDL_GL_SetAttribute(SDL_GL_CONTEXT_PROFILE_MASK, SDL_GL_CONTEXT_PROFILE_ES);
+  SDL_GL_SetAttribute(SDL_GL_CONTEXT_MAJOR_VERSION, 3);
+  SDL_GL_SetAttribute(SDL_GL_CONTEXT_MINOR_VERSION, 0);
+  // Keys go to the canvas, not the whole page: the page around an embedded lab keeps its keys.
+  SDL_SetHint(SDL_HINT_EMSCRIPTEN_KEYBOARD_ELEMENT, "#canvas");
+#else
+  const char* glsl_version = "#version 130";
+  SDL_GL_SetAttribute(SDL_GL_CONTEXT_PROFILE_MASK, SDL_GL_CONTEXT_PROFILE_CORE);
+  SDL_GL_SetAttribute(SDL_GL_CONTEXT_MAJOR_VERSION, 3);
+  SDL_GL_SetAttribute(SDL_GL_CONTEXT_MINOR_VERSION, 2);
+#endif
+  SDL_GL_SetAttribute(SDL_GL_DOUBLEBUFFER, 1);
+  // Multisampling is not needed: ImGui anti-aliases its own geometry.
+  const auto flags = static_cast<SDL_WindowFlags>(SDL_WINDOW_OPENGL | SDL_WINDOW_RESIZABLE |
+                                                  SDL_WINDOW_ALLOW_HIGHDPI);
+  window_ = SDL_CreateWindow(options.title, SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
+                             options.width, options.height, flags);
+  if (!window_) {
+    std::fprintf(stderr, "SDL_CreateWindow failed: %s\n", SDL_GetError());
+    return false;
+  }
+  gl_context_ = SDL_GL_CreateContext(window_);
+  if (!gl_context_) {
+    std::fprintf(stderr, "Could not create an OpenGL/WebGL2 context: %s\n", SDL_GetError());
+    return false;
+  }
+  SDL_GL_MakeCurrent(window_, gl_context_);
+  SDL_GL_SetSwapInterval(1);
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;  // layout is the app's, not a file's (and the web has no files)
+  io.ConfigFlags |= ImGuiConfigFlags_NavEnableKeyboard;
+  ImGui_ImplSDL2_InitForOpenGL(window_, gl_context_);
+  ImGui_ImplOpenGL3_Init(glsl_version);
+  return true;
+}
+
+void Platform::sync_canvas_size() {
+#ifdef __EMSCRIPTEN__
+  // The page sizes the canvas with CSS (it may sit in any container); follow it, so that the
+  // backing store is always CSS size x devicePixelRatio and nothing is blurred.
+  double css_w = 0, css_h = 0;
+  emscripten_get_element_css_size("#canvas", &css_w, &css_h);
+  int w = 0, h = 0;
+  SDL_GetWindowSize(window_, &w, &h);
+  const int want_w = css_w < 1 ? 1 : static_cast<int>(css_w);
+  const int want_h = css_h < 1 ? 1 : static_cast<int>(css_h);
+  const auto dpr = static_cast<float>(emscripten_get_device_pixel_ratio());
+  if (want_w != w || want_h != h || dpr != pixel_ratio_) SDL_SetWindowSize(window_, want_w, want_h);
+#endif
+}
+
+void Platform::update_pixel_ratio() {
+  int w = 0, h = 0, dw = 0, dh = 0;
+  SDL_GetWindowSize(window_, &w, &h);
+  SDL_GL_GetDrawableSize(window_, &dw, &dh);
+  const float ratio = w > 0 ? static_cast<float>(dw) / static_cast<float>(w) : 1.0f;
+  if (ratio <= 0.0f || ratio == pixel_ratio_) return;
+  pixel_ratio_ = ratio;
+  // Rasterise glyphs at device resolution and scale them back: crisp text on HiDPI screens.
+  build_fonts(ratio);
+  ImGui_ImplOpenGL3_DestroyFontsTexture();
+  ImGui_ImplOpenGL3_CreateFontsTexture();
+}
+
+void Platform::frame_once() {
+  SDL_Event event;
+  while (SDL_PollEvent(&event)) {
+    ImGui_ImplSDL2_ProcessEvent(&event);
+    if (event.type == SDL_QUIT) quit_ = true;
+    if (event.type == SDL_WINDOWEVENT && event.window.event == SDL_WINDOWEVENT_CLOSE &&
+        event.window.windowID == SDL_GetWindowID(window_))
+      quit_ = true;
+  }
+  sync_canvas_size();
+  update_pixel_ratio();
+
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplSDL2_NewFrame();
+  ImGui::NewFrame();
+  frame_();
+  ImGui::Render();
+
+  const ImGuiIO& io = ImGui::GetIO();
+  glViewport(0, 0, static_cast<int>(io.DisplaySize.x * io.DisplayFramebufferScale.x),
+             static_cast<int>(io.DisplaySize.y * io.DisplayFramebufferScale.y));
+  glClearColor(0.94f, 0.94f, 0.93f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  SDL_GL_SwapWindow(window_);
+  ++frames_;
+  if (max_frames_ >= 0 && frames_ >= max_frames_) quit_ = true;
+}
+
+void Platform::frame_trampoline(void* self) { static_cast<Platform*>(self)->frame_once(); }
+
+void Platform::run(std::function<void()> frame) {
+  frame_ = std::move(frame);
+#ifdef __EMSCRIPTEN__
+  // The browser calls us once per animation frame; this call does not return.
+  emscripten_set_main_loop_arg(&Platform::frame_trampoline, this, 0, true);
+#else
+  while (!quit_) frame_once();
+#endif
+}
+
+void Platform::shutdown() {
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplSDL2_Shutdown();
+  ImGui::DestroyContext();
+  SDL_GL_DeleteContext(gl_context_);
+  SDL_DestroyWindow(window_);
+  SDL_Quit();
+}
+
+}  // namespace csl::app

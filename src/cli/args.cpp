@@ -1,0 +1,96 @@
+#include "cli/args.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
+namespace csl::cli {
+
+std::optional<std::string> Args::take(const std::string& name) {
+  const std::string flag = "--" + name, prefix = flag + "=";
+  std::optional<std::string> value;
+  for (std::size_t i = 0; i < args_.size();) {
+    std::optional<std::string> found;
+    if (args_[i] == flag) {
+      if (i + 1 >= args_.size()) throw UsageError(flag + " needs a value");
+      found = args_[i + 1];
+      args_.erase(args_.begin() + static_cast<long>(i), args_.begin() + static_cast<long>(i) + 2);
+    } else if (args_[i].rfind(prefix, 0) == 0) {
+      found = args_[i].substr(prefix.size());
+      args_.erase(args_.begin() + static_cast<long>(i));
+    } else {
+      ++i;
+      continue;
+    }
+    if (value) throw UsageError(flag + " given twice");
+    value = found;
+  }
+  return value;
+}
+
+bool Args::take_flag(const std::string& name) {
+  const std::string flag = "--" + name;
+  bool seen = false;
+  for (std::size_t i = 0; i < args_.size();) {
+    if (args_[i] == flag) {
+      seen = true;
+      args_.erase(args_.begin() + static_cast<long>(i));
+    } else if (args_[i].rfind(flag + "=", 0) == 0) {
+      throw UsageError(flag + " takes no value");
+    } else {
+      ++i;
+    }
+  }
+  return seen;
+}
+
+std::string Args::take_positional(const std::string& what) {
+  for (std::size_t i = 0; i < args_.size(); ++i) {
+    // A lone "-" and negative numbers are positionals; anything else starting with "--" is not.
+    if (args_[i].rfind("--", 0) == 0) continue;
+    std::string v = args_[i];
+    args_.erase(args_.begin() + static_cast<long>(i));
+    return v;
+  }
+  throw UsageError("missing " + what);
+}
+
+void Args::finish() const {
+  if (args_.empty()) return;
+  const std::string& a = args_.front();
+  throw UsageError(a.rfind("--", 0) == 0 ? "unknown option " + a : "unexpected argument '" + a + "'");
+}
+
+double parse_number(const std::string& text, const std::string& what) {
+  const char* begin = text.c_str();
+  char* end = nullptr;
+  errno = 0;
+  double v = std::strtod(begin, &end);
+  if (text.empty() || end != begin + text.size() || errno == ERANGE || !std::isfinite(v))
+    throw UsageError(what + ": '" + text + "' is not a finite number");
+  return v;
+}
+
+long long parse_count(const std::string& text, const std::string& what, long long max) {
+  const char* begin = text.c_str();
+  char* end = nullptr;
+  errno = 0;
+  long long v = std::strtoll(begin, &end, 10);
+  if (text.empty() || end != begin + text.size() || errno == ERANGE || v < 0 || v > max)
+    throw UsageError(what + ": '" + text + "' is not an integer in [0, " + std::to_string(max) + "]");
+  return v;
+}
+
+std::vector<double> parse_numbers(const std::string& text, const std::string& what) {
+  std::vector<double> out;
+  std::size_t pos = 0;
+  while (true) {
+    std::size_t comma = text.find(',', pos);
+    out.push_back(parse_number(text.substr(pos, comma - pos), what));
+    if (comma == std::string::npos) break;
+    pos = comma + 1;
+  }
+  return out;
+}
+
+}  // namespace csl::cli

@@ -1,0 +1,41 @@
+#pragma once
+// A small strict argument parser: every option a command does not take is an error.
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace csl::cli {
+
+/// Bad command line or bad input: printed as one line on stderr, exit status 2.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// The arguments after the command name. Options are `--name value`, `--name=value` or `--flag`.
+class Args {
+ public:
+  explicit Args(std::vector<std::string> args) : args_(std::move(args)) {}
+
+  /// Removes and returns the value of option --name, if given (at most once).
+  std::optional<std::string> take(const std::string& name);
+  /// Removes --name if given and returns whether it was there.
+  bool take_flag(const std::string& name);
+  /// Removes and returns the next positional argument; UsageError naming `what` if there is none.
+  std::string take_positional(const std::string& what);
+  /// UsageError if anything was not taken (an unknown option or an extra argument).
+  void finish() const;
+
+ private:
+  std::vector<std::string> args_;
+};
+
+/// A finite number, or UsageError naming `what`.
+double parse_number(const std::string& text, const std::string& what);
+/// A non-negative integer no larger than `max`, or UsageError naming `what`.
+long long parse_count(const std::string& text, const std::string& what, long long max);
+/// Comma-separated finite numbers ("0.5,-1,2"), or UsageError naming `what`.
+std::vector<double> parse_numbers(const std::string& text, const std::string& what);
+
+}  // namespace csl::cli

@@ -1,0 +1,101 @@
+// Shared pieces of the browser end-to-end tests: serve the built site, launch Debian's
+// Chromium through playwright-core (headless, WebGL2 on the CPU via SwiftShader), open the lab,
+// and read pictures back.
+import path from 'node:path';
+import fs from 'node:fs';
+import { fileURLToPath } from 'node:url';
+import { chromium } from 'playwright-core';
+import { serve } from '../../../scripts/static-server.mjs';
+
+const here = path.dirname(fileURLToPath(import.meta.url));
+export const DIST = process.env.CSPACELAB_DIST || path.resolve(here, '../../../build/wasm/dist');
+export const ARTIFACTS = process.env.CSPACELAB_ARTIFACTS || path.resolve(here, '../../../build/test-artifacts');
+
+const CHROMIUM_ARGS = [
+  '--headless', '--no-sandbox', '--disable-quic', '--no-first-run', '--disable-background-networking',
+  '--disable-component-update', '--disable-sync', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
+];
+
+/** Serves DIST on a free port of 127.0.0.1. */
+export async function startServer() {
+  if (!fs.existsSync(path.join(DIST, 'cspacelab.wasm')))
+    throw new Error(`no wasm build in ${DIST}: run 'cmake --build --preset wasm' first`);
+  return serve(DIST, 0);
+}
+
+export async function launchBrowser() {
+  return chromium.launch({ executablePath: '/usr/bin/chromium', args: CHROMIUM_ARGS });
+}
+
+/** Collects console errors and page errors (uncaught exceptions, wasm aborts) of a page. */
+export function collectErrors(page) {
+  const errors = [];
+  page.on('console', (msg) => { if (msg.type() === 'error') errors.push(msg.text()); });
+  page.on('pageerror', (err) => errors.push(String(err)));
+  return errors;
+}
+
+/** Waits until the app has drawn at least `count` more frames. */
+export async function waitFrames(page, count = 2) {
+  const start = await page.evaluate(() => window.cspacelab.status().frames);
+  await page.waitForFunction((n) => window.cspacelab.status().frames >= n, start + count);
+}
+
+/** Opens the lab at `url` and waits for its API and its first frames. */
+export async function openLab(page, url) {
+  await page.goto(url);
+  await page.waitForFunction(() => window.cspacelab && window.cspacelab.status().frames >= 2,
+                             null, { timeout: 30000 });
+}
+
+/** Page coordinates (CSS px) of world points, through the app's own world->canvas mapping. */
+export async function worldToPage(page, points) {
+  const { points: local } = await page.evaluate((p) => window.cspacelab.view(p), points);
+  const box = await page.locator('canvas').boundingBox();
+  return local.map(([x, y]) => ({ x: box.x + x, y: box.y + y }));
+}
+
+/** Drags the mouse with real events from one page point to another. */
+export async function drag(page, from, to, steps = 12) {
+  await page.mouse.move(from.x, from.y);
+  await page.mouse.down();
+  await page.mouse.move(to.x, to.y, { steps });
+  await page.mouse.up();
+}
+
+/** Saves a screenshot under ARTIFACTS and returns its bytes. */
+export async function screenshot(page, name) {
+  fs.mkdirSync(ARTIFACTS, { recursive: true });
+  const file = path.join(ARTIFACTS, name);
+  const png = await page.screenshot({ path: file });
+  return { file, png };
+}
+
+/**
+ * Decodes a PNG in a blank page of the same browser and reports on it: the number of distinct
+ * colours (quantised to 5 bits per channel) and the RGB at given device-pixel positions.
+ */
+export async function inspectPng(browser, png, probes = []) {
+  const page = await browser.newPage();
+  try {
+    return await page.evaluate(async ({ b64, probes }) => {
+      const img = new Image();
+      img.src = 'data:image/png;base64,' + b64;
+      await img.decode();
+      const canvas = new OffscreenCanvas(img.width, img.height);
+      const ctx = canvas.getContext('2d');
+      ctx.drawImage(img, 0, 0);
+      const { data } = ctx.getImageData(0, 0, img.width, img.height);
+      const colours = new Set();
+      for (let i = 0; i < data.length; i += 4)
+        colours.add(((data[i] >> 3) << 10) | ((data[i + 1] >> 3) << 5) | (data[i + 2] >> 3));
+      const at = probes.map(([x, y]) => {
+        const i = 4 * (Math.round(y) * img.width + Math.round(x));
+        return [data[i], data[i + 1], data[i + 2]];
+      });
+      return { width: img.width, height: img.height, colours: colours.size, at };
+    }, { b64: png.toString('base64'), probes });
+  } finally {
+    await page.close();
+  }
+}

@@ -1,0 +1,38 @@
+// The JS-visible API of one C-Space Lab instance: JSON commands into the wasm app.
+// Strings cross through malloc'd memory (not the stack), so large scenes are fine.
+// Nothing received is evaluated; results are parsed with JSON.parse only.
+'use strict';
+
+class CSpaceLabApi {
+  constructor(module) {
+    this._module = module;
+  }
+
+  /** Runs a command of the app; returns its result or throws an Error with the app's message. */
+  call(cmd, args = {}) {
+    const m = this._module;
+    const request = JSON.stringify({ cmd, args });
+    const size = m.lengthBytesUTF8(request) + 1;
+    const ptr = m._malloc(size);
+    if (!ptr) throw new Error('C-Space Lab: out of memory for a request of ' + size + ' bytes');
+    let response;
+    try {
+      m.stringToUTF8(request, ptr, size);
+      response = JSON.parse(m.UTF8ToString(m._csl_call(ptr)));
+    } finally {
+      m._free(ptr);
+    }
+    if (!response.ok) throw new Error(response.error);
+    return response.result;
+  }
+
+  /** The commands the app offers, with one line of help each. */
+  help() { return this.call('help'); }
+  status() { return this.call('status'); }
+  getScene() { return this.call('get_scene'); }
+  setScene(scene) { return this.call('set_scene', { scene }); }
+  /** Canvas-relative CSS pixel positions of world points: view([[x, y], ...]).points */
+  view(points = []) { return this.call('view', { points }); }
+}
+
+if (typeof window !== 'undefined') window.CSpaceLabApi = CSpaceLabApi;
