@@ -20,6 +20,11 @@ _cspacelab_shim(test doctest "/usr/include/doctest")
 # What src/core may use, and nothing else.
 add_library(cspacelab_core_deps INTERFACE)
 target_include_directories(cspacelab_core_deps SYSTEM INTERFACE "${_shim}/core")
+# Identical bits natively and in wasm: Eigen's SSE reductions sum in another order than its
+# scalar code, so Eigen stays scalar everywhere (the core's hot loops are written by hand), and
+# no compiler may fuse a*b+c into an FMA in one build and not in the other.
+target_compile_definitions(cspacelab_core_deps INTERFACE EIGEN_DONT_VECTORIZE)
+target_compile_options(cspacelab_core_deps INTERFACE -ffp-contract=off)
 
 add_library(cspacelab_doctest INTERFACE)
 target_include_directories(cspacelab_doctest SYSTEM INTERFACE "${_shim}/test")
