@@ -32,7 +32,7 @@ void App::register_api() {
     return json{{"frames", platform_.frame_count()},
                 {"version", kVersion},
                 {"pixel_ratio", platform_.pixel_ratio()},
-                {"obstacles", scene_.disks.size()}};
+                {"obstacles", scene_.obstacles.size()}};
   });
   api.add("get_scene", "the current scene (schema version 1)",
           [this](const json&) { return scene_to_json(scene_); });
@@ -84,20 +84,22 @@ void App::draw_panel() {
   ImGui::TextWrapped("Drag in the workspace to draw a disk obstacle: press at its centre, "
                      "release at its rim.");
   ImGui::Spacing();
-  ImGui::Text("Obstacles: %zu", scene_.disks.size());
+  ImGui::Text("Obstacles: %zu", scene_.obstacles.size());
   int remove = -1;
   if (ImGui::BeginTable("obstacles", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerH)) {
     ImGui::TableSetupColumn("disk", ImGuiTableColumnFlags_WidthStretch);
     ImGui::TableSetupColumn("r", ImGuiTableColumnFlags_WidthFixed, 56.0f);
     ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, 24.0f);
-    for (std::size_t i = 0; i < scene_.disks.size(); ++i) {
-      const Disk& d = scene_.disks[i];
+    for (std::size_t i = 0; i < scene_.obstacles.size(); ++i) {
+      const Obstacle& o = scene_.obstacles[i];
       ImGui::PushID(static_cast<int>(i));
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
-      ImGui::Text("%zu  (%.3f, %.3f)", i + 1, d.center.x(), d.center.y());
+      const Box b = obstacle_bounds(o);
+      const Vec2 c = 0.5 * (b.min + b.max);
+      ImGui::Text("%zu %s (%.3f, %.3f)", i + 1, obstacle_type_name(o), c.x(), c.y());
       ImGui::TableNextColumn();
-      ImGui::Text("r %.3f", d.radius);
+      if (const auto* d = std::get_if<Disk>(&o)) ImGui::Text("r %.3f", d->radius);
       ImGui::TableNextColumn();
       if (ImGui::SmallButton("×")) remove = static_cast<int>(i);
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("delete this disk");
@@ -105,8 +107,8 @@ void App::draw_panel() {
     }
     ImGui::EndTable();
   }
-  if (remove >= 0) scene_.disks.erase(scene_.disks.begin() + remove);
-  if (!scene_.disks.empty() && ImGui::Button("Clear all")) scene_.disks.clear();
+  if (remove >= 0) scene_.obstacles.erase(scene_.obstacles.begin() + remove);
+  if (!scene_.obstacles.empty() && ImGui::Button("Clear all")) scene_.obstacles.clear();
   if (!message_.empty()) {
     ImGui::Spacing();
     ImGui::TextWrapped("%s", message_.c_str());
@@ -125,7 +127,7 @@ void App::handle_disk_drag() {
   }
   // Released: a real drag makes a disk, a click does not.
   if (radius * static_cast<double>(view_.scale()) >= static_cast<double>(kMinDragPixels)) {
-    scene_.disks.push_back(Disk{*drag_from_, radius});
+    scene_.obstacles.push_back(Disk{*drag_from_, radius});
     message_.clear();
   } else {
     message_ = "Drag (do not just click) to give the disk a radius.";
@@ -138,9 +140,9 @@ void App::draw_workspace(ImVec2 size) {
   view_.draw_grid();
   ImDrawList* dl = view_.draw_list();
   dl->PushClipRect(view_.canvas_min(), view_.canvas_max(), true);
-  for (const Disk& d : scene_.disks) view_.draw_disk(d.center, d.radius, theme::kObstacleFill, theme::kObstacleEdge);
-  view_.draw_marker(scene_.start, theme::kStart, "S");
-  view_.draw_marker(scene_.goal, theme::kGoal, "G");
+  for (const Obstacle& o : scene_.obstacles) view_.draw_obstacle(o);
+  view_.draw_marker(Vec2(scene_.start[0], scene_.start[1]), theme::kStart, "S");
+  view_.draw_marker(Vec2(scene_.goal[0], scene_.goal[1]), theme::kGoal, "G");
   handle_disk_drag();
   dl->PopClipRect();
   if (view_.hovered()) {

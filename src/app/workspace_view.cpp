@@ -92,6 +92,39 @@ void WorkspaceView::draw_disk(const Vec2& center, double radius, ImU32 fill, ImU
   dl->AddCircle(c, r, edge, segments, thickness);
 }
 
+void WorkspaceView::draw_polygon(const Polygon& poly, ImU32 fill, ImU32 edge, float thickness) const {
+  ImDrawList* dl = draw_list();
+  ImVector<ImVec2> pts;
+  pts.reserve(static_cast<int>(poly.size()));
+  for (const Vec2& v : poly) pts.push_back(to_screen(v));
+  if (polygon_is_convex(poly)) {
+    dl->AddConvexPolyFilled(pts.Data, pts.Size, fill);
+  } else {
+    // ImGui fills convex shapes only: fill the ear-clipping triangles without anti-aliasing
+    // (anti-aliased fringes would show seams between them); the outline smooths the border.
+    const std::vector<Triangle> tris = triangulate(poly);
+    const ImVec2 uv = ImGui::GetFontTexUvWhitePixel();
+    dl->PrimReserve(static_cast<int>(3 * tris.size()), static_cast<int>(3 * tris.size()));
+    for (const Triangle& t : tris)
+      for (int k : t) {
+        dl->PrimWriteIdx(static_cast<ImDrawIdx>(dl->_VtxCurrentIdx));
+        dl->PrimWriteVtx(pts[k], uv, fill);
+      }
+  }
+  dl->AddPolyline(pts.Data, pts.Size, edge, ImDrawFlags_Closed, thickness);
+}
+
+void WorkspaceView::draw_obstacle(const Obstacle& o) const {
+  if (const auto* d = std::get_if<Disk>(&o)) {
+    draw_disk(d->center, d->radius, theme::kObstacleFill, theme::kObstacleEdge);
+  } else if (const auto* g = std::get_if<PolygonObstacle>(&o)) {
+    draw_polygon(g->vertices, theme::kObstacleFill, theme::kObstacleEdge);
+  } else {
+    const Wall& w = std::get<Wall>(o);
+    draw_list()->AddLine(to_screen(w.a), to_screen(w.b), theme::kObstacleEdge, 3.0f);
+  }
+}
+
 void WorkspaceView::draw_marker(const Vec2& p, ImU32 color, const char* label) const {
   const ImVec2 c = to_screen(p);
   ImDrawList* dl = draw_list();

@@ -1,7 +1,7 @@
 #pragma once
 // A canvas showing a rectangle of the plane (the workspace) with y pointing up: the mapping
 // between world and screen, the grid, and drawing helpers for the things lessons show.
-#include "core/vec2.hpp"
+#include "core/obstacles.hpp"
 #include "imgui.h"
 
 namespace csl::app {
@@ -26,6 +26,9 @@ class WorkspaceView {
   ImDrawList* draw_list() const { return ImGui::GetWindowDrawList(); }
   void draw_grid() const;
   void draw_disk(const Vec2& center, double radius, ImU32 fill, ImU32 edge, float thickness = 1.5f) const;
+  void draw_polygon(const Polygon& poly, ImU32 fill, ImU32 edge, float thickness = 1.5f) const;
+  /// An obstacle in the lab's obstacle colours.
+  void draw_obstacle(const Obstacle& o) const;
   /// A labelled marker (start, goal): a filled circle of fixed screen size with a letter.
   void draw_marker(const Vec2& p, ImU32 color, const char* label) const;
 

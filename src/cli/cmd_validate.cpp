@@ -1,9 +1,5 @@
 // cspacelab validate SCENE.json: parse and validate a scene, print it normalised.
-#include <iostream>
-#include <nlohmann/json.hpp>
-
 #include "cli/commands.hpp"
-#include "core/scene.hpp"
 
 namespace csl::cli {
 namespace {
@@ -11,12 +7,7 @@ namespace {
 int run_validate(Args& args) {
   const std::string path = args.take_positional("SCENE.json");
   args.finish();
-  try {
-    Scene scene = scene_from_string(read_file(path));
-    std::cout << nlohmann::json{{"valid", true}, {"scene", scene_to_json(scene)}}.dump() << "\n";
-  } catch (const SceneError& e) {
-    throw UsageError(path + ": " + e.what());
-  }
+  print_json({{"valid", true}, {"scene", scene_to_json(load_scene(path))}});
   return 0;
 }
 
@@ -27,7 +18,21 @@ const Command kValidateCommand{
     "Usage: cspacelab validate SCENE.json\n\n"
     "Parses and validates SCENE.json (schema version 1). On success prints\n"
     "  {\"valid\": true, \"scene\": {...normalised scene...}}\n"
-    "On failure prints one line naming the offending field and exits with status 2.\n",
+    "On failure prints one line naming the offending field and exits with status 2.\n\n"
+    "Scene schema (version 1):\n"
+    "  { \"version\": 1, \"name\": \"optional title\",\n"
+    "    \"workspace\": { \"min\": [0, 0], \"max\": [1, 1] },\n"
+    "    \"robot\": { \"type\": \"point\" }\n"
+    "           | { \"type\": \"arm2\", \"base\": [x, y], \"lengths\": [l1, l2] }\n"
+    "           | { \"type\": \"polygon\", \"vertices\": [[x, y], ...] }   (robot frame)\n"
+    "    \"obstacles\": [ { \"type\": \"disk\", \"center\": [x, y], \"radius\": r },\n"
+    "                   { \"type\": \"polygon\", \"vertices\": [[x, y], ...] },\n"
+    "                   { \"type\": \"segment\", \"a\": [x, y], \"b\": [x, y] } ],\n"
+    "    \"start\": q, \"goal\": q }\n"
+    "q is [x, y] (point), [theta1, theta2] in radians with theta2 relative to link 1 (arm2),\n"
+    "or [x, y, theta] (polygon). Segments are walls of zero thickness; a robot within 1e-6\n"
+    "of one collides. Limits: 1000 obstacles, 256 vertices per polygon (32 for the robot),\n"
+    "|coordinates| <= 1e6.\n",
     run_validate};
 
 }  // namespace csl::cli

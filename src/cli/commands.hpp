@@ -1,8 +1,11 @@
 #pragma once
 // The CLI's commands. Each lives in its own cmd_*.cpp; main.cpp lists them in kCommands.
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "cli/args.hpp"
+#include "core/collision.hpp"
+#include "core/scene.hpp"
 
 namespace csl::cli {
 
@@ -14,8 +17,19 @@ struct Command {
 };
 
 extern const Command kValidateCommand;
+extern const Command kCheckCommand;
+extern const Command kDistanceCommand;
 
 /// Reads a whole file; UsageError naming the path if it cannot be read.
 std::string read_file(const std::string& path);
+/// Reads and validates a scene file; UsageError "PATH: field: problem" if it is not valid.
+Scene load_scene(const std::string& path);
+/// A configuration for the scene's robot from "a,b[,c]": right arity, finite, angles wrapped,
+/// positions inside the workspace; UsageError naming `what` otherwise.
+Config parse_config(const std::string& text, const Scene& scene, const std::string& what);
+/// A point "x,y"; UsageError naming `what` otherwise.
+Vec2 parse_point(const std::string& text, const std::string& what);
+/// Prints JSON on stdout (one line).
+void print_json(const nlohmann::json& j);
 
 }  // namespace csl::cli

@@ -3,9 +3,7 @@
 // (bad input or usage) or 1 (internal error).
 #include <cstdio>
 #include <exception>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -14,18 +12,9 @@
 
 namespace csl::cli {
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw UsageError(path + ": cannot read file");
-  std::ostringstream s;
-  s << in.rdbuf();
-  if (in.bad()) throw UsageError(path + ": read error");
-  return s.str();
-}
-
 namespace {
 
-const Command* const kCommands[] = {&kValidateCommand};
+const Command* const kCommands[] = {&kValidateCommand, &kCheckCommand, &kDistanceCommand};
 
 const Command* find_command(const std::string& name) {
   for (const Command* c : kCommands)
@@ -48,7 +37,7 @@ void print_help() {
             << "  --version     the version, as {\"version\": \"X.Y.Z\"}\n\n"
             << "Output is JSON on stdout. Errors are one line on stderr, exit status 2 for bad\n"
             << "input or usage, 1 for internal errors. Configurations Q are comma-separated\n"
-            << "numbers, e.g. --from 0,0. Scenes are JSON files (schema: cspacelab help scene).\n";
+            << "numbers, e.g. --from 0,0. Scenes are JSON files (schema: cspacelab help validate).\n";
 }
 
 int run(const std::vector<std::string>& argv) {

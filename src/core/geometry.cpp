@@ -1,5 +1,6 @@
 #include "core/geometry.hpp"
 
+#include <limits>
 #include <algorithm>
 
 namespace csl {
@@ -48,7 +49,7 @@ double polygon_twice_signed_area(const Polygon& poly) {
 }
 
 double point_polygon_boundary_distance(const Vec2& p, const Polygon& poly) {
-  double best = INFINITY;
+  double best = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0, n = poly.size(); i < n; ++i)
     best = std::min(best, point_segment_squared_distance(p, poly[i], poly[(i + 1) % n]));
   return std::sqrt(best);
@@ -81,7 +82,7 @@ double point_polygon_signed_distance(const Vec2& p, const Polygon& poly) {
 
 double segment_polygon_distance(const Vec2& a, const Vec2& b, const Polygon& poly) {
   if (point_in_polygon(a, poly) || point_in_polygon(b, poly)) return 0.0;
-  double best = INFINITY;
+  double best = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0, n = poly.size(); i < n; ++i) {
     best = std::min(best, segment_segment_distance(a, b, poly[i], poly[(i + 1) % n]));
     if (best == 0.0) return 0.0;
@@ -93,7 +94,7 @@ double polygon_polygon_distance(const Polygon& p, const Polygon& q) {
   // Containment: a vertex of one inside the other (if neither holds and no edges cross,
   // the polygons are disjoint and the distance is between boundaries).
   if (point_in_polygon(p.front(), q) || point_in_polygon(q.front(), p)) return 0.0;
-  double best = INFINITY;
+  double best = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0, n = p.size(); i < n; ++i)
     for (std::size_t j = 0, m = q.size(); j < m; ++j) {
       best = std::min(best, segment_segment_distance(p[i], p[(i + 1) % n], q[j], q[(j + 1) % m]));
@@ -114,7 +115,6 @@ const char* polygon_problem(const Polygon& poly) {
     if (!std::isfinite(v.x()) || !std::isfinite(v.y())) return "vertices must be finite numbers";
   for (std::size_t i = 0; i < n; ++i)
     if (poly[i] == poly[(i + 1) % n]) return "two consecutive vertices coincide";
-  if (polygon_twice_signed_area(poly) == 0.0) return "the polygon has zero area";
   for (std::size_t i = 0; i < n; ++i) {
     const Vec2& a = poly[i];
     const Vec2& b = poly[(i + 1) % n];
@@ -135,6 +135,8 @@ const char* polygon_problem(const Polygon& poly) {
       if (segments_intersect(a, b, c, d)) return "the polygon's edges cross (it is self-intersecting)";
     }
   }
+  // After the crossing tests, so that a symmetric bow-tie is called self-intersecting.
+  if (polygon_twice_signed_area(poly) == 0.0) return "the polygon has zero area";
   return "";
 }
 

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "core/angles.hpp"
+
 namespace csl {
 namespace {
 
@@ -12,16 +14,28 @@ using json = nlohmann::json;
   throw SceneError(path + ": " + what);
 }
 
+std::string join(const std::string& path, const char* key) { return path.empty() ? key : path + "." + key; }
+
 const json& field(const json& obj, const char* key, const std::string& path) {
   auto it = obj.find(key);
-  if (it == obj.end()) fail(path.empty() ? key : path + "." + key, "missing");
+  if (it == obj.end()) fail(join(path, key), "missing");
   return *it;
+}
+
+void expect_object(const json& j, const std::string& path, std::initializer_list<const char*> keys) {
+  if (!j.is_object()) fail(path.empty() ? "scene" : path, "must be a JSON object");
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    bool known = false;
+    for (const char* k : keys) known = known || it.key() == k;
+    if (!known) fail(join(path, it.key().c_str()), "unknown field");
+  }
 }
 
 double number(const json& j, const std::string& path) {
   if (!j.is_number()) fail(path, "must be a number");
-  double v = j.get<double>();
+  const double v = j.get<double>();
   if (!std::isfinite(v)) fail(path, "must be finite");
+  if (std::fabs(v) > kMaxCoordinate) fail(path, "must be within +-1e6");
   return v;
 }
 
@@ -30,48 +44,150 @@ Vec2 point(const json& j, const std::string& path) {
   return {number(j[0], path + "[0]"), number(j[1], path + "[1]")};
 }
 
+Polygon polygon(const json& j, const std::string& path, std::size_t max_vertices) {
+  if (!j.is_array()) fail(path, "must be an array of [x, y] points");
+  if (j.size() > max_vertices) fail(path, "has more than " + std::to_string(max_vertices) + " vertices");
+  Polygon p;
+  for (std::size_t i = 0; i < j.size(); ++i) p.push_back(point(j[i], path + "[" + std::to_string(i) + "]"));
+  if (const char* problem = polygon_problem(p); *problem) fail(path, problem);
+  return p;
+}
+
 json point_json(const Vec2& p) { return json::array({p.x(), p.y()}); }
 
-Disk disk(const json& j, const std::string& path) {
-  Disk d;
-  d.center = point(field(j, "center", path), path + ".center");
-  d.radius = number(field(j, "radius", path), path + ".radius");
-  if (d.radius < 0.0) fail(path + ".radius", "must be >= 0");
-  return d;
+json polygon_json(const Polygon& poly) {
+  json out = json::array();
+  for (const Vec2& v : poly) out.push_back(point_json(v));
+  return out;
+}
+
+Obstacle obstacle(const json& o, const std::string& path) {
+  if (!o.is_object()) fail(path, "must be an object");
+  const json& type = field(o, "type", path);
+  if (type == "disk") {
+    expect_object(o, path, {"type", "center", "radius"});
+    Disk d{point(field(o, "center", path), path + ".center"), number(field(o, "radius", path), path + ".radius")};
+    if (d.radius < 0.0) fail(path + ".radius", "must be >= 0");
+    return d;
+  }
+  if (type == "polygon") {
+    expect_object(o, path, {"type", "vertices"});
+    return PolygonObstacle{polygon(field(o, "vertices", path), path + ".vertices", kMaxPolygonVertices)};
+  }
+  if (type == "segment") {
+    expect_object(o, path, {"type", "a", "b"});
+    return Wall{point(field(o, "a", path), path + ".a"), point(field(o, "b", path), path + ".b")};
+  }
+  fail(path + ".type", "unknown obstacle type " + type.dump() + " (disk, polygon or segment)");
+}
+
+Robot robot(const json& r) {
+  if (!r.is_object()) fail("robot", "must be an object");
+  const json& type = field(r, "type", "robot");
+  if (type == "point") {
+    expect_object(r, "robot", {"type"});
+    return PointRobot{};
+  }
+  if (type == "arm2") {
+    expect_object(r, "robot", {"type", "base", "lengths"});
+    ArmRobot arm;
+    arm.base = point(field(r, "base", "robot"), "robot.base");
+    const Vec2 l = point(field(r, "lengths", "robot"), "robot.lengths");
+    if (!(l.x() > 0.0 && l.y() > 0.0)) fail("robot.lengths", "link lengths must be > 0");
+    arm.length1 = l.x();
+    arm.length2 = l.y();
+    return arm;
+  }
+  if (type == "polygon") {
+    expect_object(r, "robot", {"type", "vertices"});
+    return make_polygon_robot(polygon(field(r, "vertices", "robot"), "robot.vertices", kMaxRobotVertices));
+  }
+  fail("robot.type", "unknown robot type " + type.dump() + " (point, arm2 or polygon)");
+}
+
+Config configuration(const json& j, const char* name, const Robot& r, const Vec2& lo, const Vec2& hi) {
+  const int dof = robot_dof(r);
+  const std::string path = name;
+  if (!j.is_array() || static_cast<int>(j.size()) != dof)
+    fail(path, std::string("must be an array of ") + std::to_string(dof) + " numbers for robot type '" +
+                   robot_type_name(r) + "'");
+  Config q(dof);
+  for (int i = 0; i < dof; ++i) q[i] = number(j[static_cast<std::size_t>(i)], path + "[" + std::to_string(i) + "]");
+  if (std::holds_alternative<ArmRobot>(r)) {
+    q[0] = wrap_angle(q[0]);
+    q[1] = wrap_angle(q[1]);
+  } else {
+    if (q[0] < lo.x() || q[0] > hi.x() || q[1] < lo.y() || q[1] > hi.y())
+      fail(path, "must lie inside the workspace");
+    if (dof == 3) q[2] = wrap_angle(q[2]);
+  }
+  return q;
 }
 
 }  // namespace
 
+std::string obstacle_problem(const Obstacle& o, const std::string& path) {
+  try {
+    (void)obstacle(obstacle_to_json(o), path);
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+json config_to_json(const Config& q) {
+  json out = json::array();
+  for (Eigen::Index i = 0; i < q.size(); ++i) out.push_back(q[i]);
+  return out;
+}
+
+json obstacle_to_json(const Obstacle& o) {
+  if (const auto* d = std::get_if<Disk>(&o))
+    return {{"type", "disk"}, {"center", point_json(d->center)}, {"radius", d->radius}};
+  if (const auto* p = std::get_if<PolygonObstacle>(&o))
+    return {{"type", "polygon"}, {"vertices", polygon_json(p->vertices)}};
+  const Wall& w = std::get<Wall>(o);
+  return {{"type", "segment"}, {"a", point_json(w.a)}, {"b", point_json(w.b)}};
+}
+
 Scene scene_from_json(const json& j) {
-  if (!j.is_object()) fail("scene", "must be a JSON object");
+  expect_object(j, "", {"version", "name", "workspace", "robot", "obstacles", "start", "goal"});
   const json& version = field(j, "version", "");
-  if (!version.is_number_integer() || version.get<int>() != 1) fail("version", "must be 1");
+  if (!version.is_number_integer() || version.get<long long>() != 1) fail("version", "must be 1");
 
   Scene s;
-  if (auto robot = j.find("robot"); robot != j.end()) {
-    if (!robot->is_object()) fail("robot", "must be an object");
-    const json& type = field(*robot, "type", "robot");
-    if (type != "point") fail("robot.type", "unknown robot type " + type.dump());
+  if (auto n = j.find("name"); n != j.end()) {
+    if (!n->is_string()) fail("name", "must be a string");
+    s.name = n->get<std::string>();
+    if (s.name.size() > kMaxNameLength) fail("name", "is longer than 200 characters");
   }
   if (auto ws = j.find("workspace"); ws != j.end()) {
+    expect_object(*ws, "workspace", {"min", "max"});
     s.workspace_min = point(field(*ws, "min", "workspace"), "workspace.min");
     s.workspace_max = point(field(*ws, "max", "workspace"), "workspace.max");
-    if (!(s.workspace_min.array() < s.workspace_max.array()).all())
+    if (!(s.workspace_min.x() < s.workspace_max.x() && s.workspace_min.y() < s.workspace_max.y()))
       fail("workspace", "min must be below max in both coordinates");
   }
+  if (auto r = j.find("robot"); r != j.end()) s.robot = robot(*r);
   if (auto obs = j.find("obstacles"); obs != j.end()) {
     if (!obs->is_array()) fail("obstacles", "must be an array");
-    for (std::size_t i = 0; i < obs->size(); ++i) {
-      const std::string path = "obstacles[" + std::to_string(i) + "]";
-      const json& o = (*obs)[i];
-      if (!o.is_object()) fail(path, "must be an object");
-      const json& type = field(o, "type", path);
-      if (type != "disk") fail(path + ".type", "unknown obstacle type " + type.dump());
-      s.disks.push_back(disk(o, path));
-    }
+    if (obs->size() > kMaxObstacles) fail("obstacles", "more than " + std::to_string(kMaxObstacles) + " obstacles");
+    for (std::size_t i = 0; i < obs->size(); ++i)
+      s.obstacles.push_back(obstacle((*obs)[i], "obstacles[" + std::to_string(i) + "]"));
   }
-  if (auto st = j.find("start"); st != j.end()) s.start = point(*st, "start");
-  if (auto g = j.find("goal"); g != j.end()) s.goal = point(*g, "goal");
+  if (std::holds_alternative<ArmRobot>(s.robot)) {
+    s.start = config({0.0, 0.0});
+    s.goal = config({kPi / 2, 0.0});
+  } else {
+    s.start = robot_dof(s.robot) == 3 ? config({s.workspace_min.x(), s.workspace_min.y(), 0.0})
+                                      : config({s.workspace_min.x(), s.workspace_min.y()});
+    s.goal = robot_dof(s.robot) == 3 ? config({s.workspace_max.x(), s.workspace_max.y(), 0.0})
+                                     : config({s.workspace_max.x(), s.workspace_max.y()});
+  }
+  if (auto st = j.find("start"); st != j.end())
+    s.start = configuration(*st, "start", s.robot, s.workspace_min, s.workspace_max);
+  if (auto g = j.find("goal"); g != j.end())
+    s.goal = configuration(*g, "goal", s.robot, s.workspace_min, s.workspace_max);
   return s;
 }
 
@@ -83,14 +199,22 @@ Scene scene_from_string(const std::string& text) {
 
 json scene_to_json(const Scene& s) {
   json obstacles = json::array();
-  for (const Disk& d : s.disks)
-    obstacles.push_back({{"type", "disk"}, {"center", point_json(d.center)}, {"radius", d.radius}});
-  return {{"version", 1},
-          {"workspace", {{"min", point_json(s.workspace_min)}, {"max", point_json(s.workspace_max)}}},
-          {"robot", {{"type", "point"}}},
-          {"obstacles", obstacles},
-          {"start", point_json(s.start)},
-          {"goal", point_json(s.goal)}};
+  for (const Obstacle& o : s.obstacles) obstacles.push_back(obstacle_to_json(o));
+  json robot_json{{"type", robot_type_name(s.robot)}};
+  if (const auto* arm = std::get_if<ArmRobot>(&s.robot)) {
+    robot_json["base"] = point_json(arm->base);
+    robot_json["lengths"] = json::array({arm->length1, arm->length2});
+  } else if (const auto* poly = std::get_if<PolygonRobot>(&s.robot)) {
+    robot_json["vertices"] = polygon_json(poly->body);
+  }
+  json out{{"version", 1},
+           {"workspace", {{"min", point_json(s.workspace_min)}, {"max", point_json(s.workspace_max)}}},
+           {"robot", robot_json},
+           {"obstacles", obstacles},
+           {"start", config_to_json(s.start)},
+           {"goal", config_to_json(s.goal)}};
+  if (!s.name.empty()) out["name"] = s.name;
+  return out;
 }
 
 }  // namespace csl

@@ -1,28 +1,49 @@
 #pragma once
-// The scene: workspace bounds, obstacles, start and goal, and its JSON form (schema version 1).
+// The scene: workspace bounds, the robot, obstacles, start and goal; and its JSON form
+// (schema version 1):
+//
+//   { "version": 1,
+//     "name": "optional title",
+//     "workspace": { "min": [0, 0], "max": [1, 1] },
+//     "robot": { "type": "point" }
+//            | { "type": "arm2", "base": [x, y], "lengths": [l1, l2] }
+//            | { "type": "polygon", "vertices": [[x, y], ...] }        (robot frame)
+//     "obstacles": [ { "type": "disk", "center": [x, y], "radius": r },
+//                    { "type": "polygon", "vertices": [[x, y], ...] },
+//                    { "type": "segment", "a": [x, y], "b": [x, y] } ],
+//     "start": q, "goal": q }
+//
+// q is [x, y] for the point robot, [theta1, theta2] (radians, theta2 relative to link 1) for
+// the arm, [x, y, theta] for the polygon robot. Angles are stored wrapped into [-pi, pi).
+// Defaults: workspace [0,1]^2, point robot, no obstacles, start = workspace min corner,
+// goal = max corner (arm: 0,0 and pi/2,0).
 #include <nlohmann/json_fwd.hpp>
 
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "core/vec2.hpp"
+#include "core/config.hpp"
+#include "core/obstacles.hpp"
+#include "core/robot.hpp"
 
 namespace csl {
 
-/// A closed disk obstacle.
-struct Disk {
-  Vec2 center{0.0, 0.0};
-  double radius = 0.0;
-};
+/// Limits that keep a scene something a browser tab can hold and draw.
+inline constexpr std::size_t kMaxObstacles = 1000;
+inline constexpr std::size_t kMaxPolygonVertices = 256;
+inline constexpr std::size_t kMaxRobotVertices = 32;
+inline constexpr double kMaxCoordinate = 1e6;  ///< |any coordinate or length| in a scene
+inline constexpr std::size_t kMaxNameLength = 200;
 
-/// Everything the lab needs to reproduce a planning problem.
 struct Scene {
+  std::string name;
   Vec2 workspace_min{0.0, 0.0};
   Vec2 workspace_max{1.0, 1.0};
-  std::vector<Disk> disks;
-  Vec2 start{0.0, 0.0};
-  Vec2 goal{1.0, 1.0};
+  Robot robot = PointRobot{};
+  std::vector<Obstacle> obstacles;
+  Config start = config({0.0, 0.0});
+  Config goal = config({1.0, 1.0});
 };
 
 /// Thrown for invalid scene JSON; what() names the offending field, e.g. "obstacles[2].radius: ...".
@@ -35,7 +56,15 @@ class SceneError : public std::runtime_error {
 Scene scene_from_json(const nlohmann::json& j);
 /// Parses scene text (JSON). Throws SceneError, also for malformed JSON.
 Scene scene_from_string(const std::string& text);
-/// The scene as schema-version-1 JSON; scene_from_json(scene_to_json(s)) == s.
+/// The scene as schema-version-1 JSON; scene_from_json(scene_to_json(s)) reproduces s exactly.
 nlohmann::json scene_to_json(const Scene& s);
+
+/// Checks an obstacle on its own (used by the parser and by editors before they commit a
+/// change); returns what is wrong, or "" if it is valid. `path` prefixes the message.
+std::string obstacle_problem(const Obstacle& o, const std::string& path);
+
+/// JSON of one configuration / obstacle, as in the scene format.
+nlohmann::json config_to_json(const Config& q);
+nlohmann::json obstacle_to_json(const Obstacle& o);
 
 }  // namespace csl

@@ -1,8 +1,10 @@
-// Scenes: parsing, validation messages that name the field, and the JSON round trip.
+// Scenes: parsing every robot and obstacle type, validation messages that name the field,
+// limits, and the exact JSON round trip.
 #include <doctest/doctest.h>
 
 #include <nlohmann/json.hpp>
 
+#include "core/angles.hpp"
 #include "core/scene.hpp"
 
 using csl::Scene;
@@ -10,7 +12,7 @@ using csl::SceneError;
 using nlohmann::json;
 
 namespace {
-json minimal() {
+json p12() {
   return json::parse(R"({"version": 1,
     "workspace": {"min": [0, 0], "max": [1, 1]},
     "robot": {"type": "point"},
@@ -28,50 +30,117 @@ std::string error_of(const json& j) {
 }
 }  // namespace
 
-TEST_CASE("a valid scene parses with its values") {
-  Scene s = csl::scene_from_json(minimal());
-  REQUIRE(s.disks.size() == 1);
-  CHECK(s.disks[0].center.x() == 0.2);
-  CHECK(s.disks[0].center.y() == 0.05);
-  CHECK(s.disks[0].radius == 0.1);
-  CHECK(s.goal.x() == 1.0);
-  CHECK(s.goal.y() == 0.0);
+TEST_CASE("the homework's P12 scene parses with its values") {
+  Scene s = csl::scene_from_json(p12());
+  REQUIRE(s.obstacles.size() == 1);
+  const auto& d = std::get<csl::Disk>(s.obstacles[0]);
+  CHECK(d.center.x() == 0.2);
+  CHECK(d.center.y() == 0.05);
+  CHECK(d.radius == 0.1);
+  CHECK(s.start == csl::config({0, 0}));
+  CHECK(s.goal == csl::config({1, 0}));
+  CHECK(std::holds_alternative<csl::PointRobot>(s.robot));
 }
 
-TEST_CASE("scene JSON round-trips exactly") {
-  Scene s = csl::scene_from_json(minimal());
-  Scene t = csl::scene_from_json(csl::scene_to_json(s));
+TEST_CASE("every obstacle and robot type round-trips exactly") {
+  const json j = json::parse(R"({"version": 1, "name": "all kinds",
+    "workspace": {"min": [-1, -1], "max": [2, 2]},
+    "robot": {"type": "polygon", "vertices": [[-0.1, -0.05], [0.1, -0.05], [0.1, 0.05], [-0.1, 0.05]]},
+    "obstacles": [{"type": "disk", "center": [0.5, 0.5], "radius": 0.25},
+                  {"type": "polygon", "vertices": [[0, 0], [1, 0], [1, 1], [0.5, 0.2], [0, 1]]},
+                  {"type": "segment", "a": [0.5, -1], "b": [0.5, 0.3]}],
+    "start": [0, 0, 0.5], "goal": [1.5, 1.5, -3]})");
+  const Scene s = csl::scene_from_json(j);
+  CHECK(s.name == "all kinds");
+  CHECK(std::get<csl::PolygonRobot>(s.robot).radius == doctest::Approx(std::sqrt(0.0125)));
+  CHECK(csl::scene_to_json(s) == j);
+  const Scene t = csl::scene_from_json(csl::scene_to_json(s));
   CHECK(csl::scene_to_json(t) == csl::scene_to_json(s));
-  CHECK(csl::scene_to_json(s)["obstacles"][0]["radius"] == 0.1);
+
+  const json arm = json::parse(R"({"version": 1, "robot": {"type": "arm2", "base": [0.5, 0.5], "lengths": [0.3, 0.2]},
+    "start": [0.25, 7.0]})");
+  const Scene a = csl::scene_from_json(arm);
+  CHECK(a.start[1] == doctest::Approx(7.0 - csl::kTwoPi));  // angles are stored wrapped
+  CHECK(a.goal == csl::config({csl::kPi / 2, 0.0}));        // the arm's default goal
+  CHECK(csl::scene_to_json(csl::scene_from_json(csl::scene_to_json(a))) == csl::scene_to_json(a));
 }
 
 TEST_CASE("invalid scenes are refused with the offending field named") {
-  json j = minimal();
+  json j = p12();
   j["obstacles"][0]["radius"] = -0.5;
   CHECK(error_of(j) == "obstacles[0].radius: must be >= 0");
 
-  j = minimal();
+  j = p12();
   j["obstacles"][0]["center"] = json::array({0.1});
   CHECK(error_of(j) == "obstacles[0].center: must be an array of 2 numbers");
 
-  j = minimal();
+  j = p12();
+  j["obstacles"][0]["type"] = "blob";
+  CHECK(error_of(j) == "obstacles[0].type: unknown obstacle type \"blob\" (disk, polygon or segment)");
+
+  j = p12();
+  j["obstacles"][0] = json::parse(R"({"type": "polygon", "vertices": [[0, 0], [1, 0]]})");
+  CHECK(error_of(j) == "obstacles[0].vertices: a polygon needs at least 3 vertices");
+
+  j = p12();
+  j["obstacles"][0] = json::parse(R"({"type": "polygon", "vertices": [[0, 0], [1, 1], [1, 0], [0, 1]]})");
+  CHECK(error_of(j) == "obstacles[0].vertices: the polygon's edges cross (it is self-intersecting)");
+
+  j = p12();
   j["version"] = 2;
   CHECK(error_of(j) == "version: must be 1");
 
-  j = minimal();
+  j = p12();
   j.erase("version");
   CHECK(error_of(j) == "version: missing");
 
-  j = minimal();
+  j = p12();
   j["start"] = json::array({"a", 0});
   CHECK(error_of(j) == "start[0]: must be a number");
 
-  j = minimal();
+  j = p12();
+  j["start"] = json::array({0, 0, 0});
+  CHECK(error_of(j) == "start: must be an array of 2 numbers for robot type 'point'");
+
+  j = p12();
+  j["goal"] = json::array({2, 0});
+  CHECK(error_of(j) == "goal: must lie inside the workspace");
+
+  j = p12();
   j["workspace"]["max"] = json::array({0, 1});
   CHECK(error_of(j) == "workspace: min must be below max in both coordinates");
+
+  j = p12();
+  j["robot"] = json::parse(R"({"type": "arm2", "base": [0, 0], "lengths": [0.5, -1]})");
+  CHECK(error_of(j) == "robot.lengths: link lengths must be > 0");
+
+  j = p12();
+  j["colour"] = "red";
+  CHECK(error_of(j) == "colour: unknown field");
+
+  j = p12();
+  j["obstacles"][0]["center"][0] = 1e300;
+  CHECK(error_of(j) == "obstacles[0].center[0]: must be within +-1e6");
+}
+
+TEST_CASE("scene limits are enforced") {
+  json j = p12();
+  j["obstacles"] = json::array();
+  for (std::size_t i = 0; i <= csl::kMaxObstacles; ++i)
+    j["obstacles"].push_back({{"type", "disk"}, {"center", {0.5, 0.5}}, {"radius", 0.01}});
+  CHECK(error_of(j) == "obstacles: more than 1000 obstacles");
 }
 
 TEST_CASE("malformed JSON text is a SceneError, not a crash") {
   CHECK_THROWS_AS(csl::scene_from_string("{\"version\": 1, "), SceneError);
   CHECK_THROWS_WITH(csl::scene_from_string("[1, 2"), "scene: not valid JSON");
+  CHECK_THROWS_WITH(csl::scene_from_string("[1, 2]"), "scene: must be a JSON object");
+  CHECK_THROWS_WITH(csl::scene_from_string("{\"version\": 1, \"start\": [NaN, 0]}"), "scene: not valid JSON");
+}
+
+TEST_CASE("obstacle_problem checks one obstacle for editors") {
+  CHECK(csl::obstacle_problem(csl::Disk{{0, 0}, 0.1}, "new") == "");
+  CHECK(csl::obstacle_problem(csl::Disk{{0, 0}, -1}, "new") == "new.radius: must be >= 0");
+  CHECK(csl::obstacle_problem(csl::PolygonObstacle{{{0, 0}, {1, 1}, {1, 0}, {0, 1}}}, "new") ==
+        "new.vertices: the polygon's edges cross (it is self-intersecting)");
 }

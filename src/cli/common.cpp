@@ -1,0 +1,54 @@
+// Helpers shared by the CLI's commands: files, scenes, configurations, output.
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "cli/commands.hpp"
+#include "core/angles.hpp"
+
+namespace csl::cli {
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw UsageError(path + ": cannot read file");
+  std::ostringstream s;
+  s << in.rdbuf();
+  if (in.bad()) throw UsageError(path + ": read error");
+  return s.str();
+}
+
+Scene load_scene(const std::string& path) {
+  try {
+    return scene_from_string(read_file(path));
+  } catch (const SceneError& e) {
+    throw UsageError(path + ": " + e.what());
+  }
+}
+
+Config parse_config(const std::string& text, const Scene& scene, const std::string& what) {
+  const std::vector<double> v = parse_numbers(text, what);
+  const int dof = robot_dof(scene.robot);
+  if (static_cast<int>(v.size()) != dof)
+    throw UsageError(what + ": expected " + std::to_string(dof) + " comma-separated numbers for robot type '" +
+                     robot_type_name(scene.robot) + "', got " + std::to_string(v.size()));
+  Config q(dof);
+  for (int i = 0; i < dof; ++i) q[i] = v[static_cast<std::size_t>(i)];
+  if (std::holds_alternative<ArmRobot>(scene.robot)) return robot_space(scene.robot, {0, 0}, {1, 1}).wrap(q);
+  if (q[0] < scene.workspace_min.x() || q[0] > scene.workspace_max.x() || q[1] < scene.workspace_min.y() ||
+      q[1] > scene.workspace_max.y())
+    throw UsageError(what + ": (" + text + ") lies outside the workspace");
+  if (dof == 3) q[2] = wrap_angle(q[2]);
+  return q;
+}
+
+Vec2 parse_point(const std::string& text, const std::string& what) {
+  const std::vector<double> v = parse_numbers(text, what);
+  if (v.size() != 2) throw UsageError(what + ": expected x,y");
+  return {v[0], v[1]};
+}
+
+void print_json(const nlohmann::json& j) {
+  std::cout << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+}
+
+}  // namespace csl::cli

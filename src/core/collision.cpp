@@ -1,0 +1,129 @@
+#include "core/collision.hpp"
+
+#include <limits>
+#include <cmath>
+
+#include "core/scene.hpp"
+
+namespace csl {
+namespace {
+
+// Squared distance between two boxes: a lower bound on the distance between their contents.
+double box_gap2(const Box& a, const Box& b) {
+  const double dx = std::fmax(std::fmax(a.min.x() - b.max.x(), b.min.x() - a.max.x()), 0.0);
+  const double dy = std::fmax(std::fmax(a.min.y() - b.max.y(), b.min.y() - a.max.y()), 0.0);
+  return dx * dx + dy * dy;
+}
+
+// Pruning by squared distances must never change a result: compare against bounds inflated
+// by far more than the rounding of the squares (relative 1e-12 against ~1e-16).
+constexpr double kSafe = 1.0 + 1e-12;
+
+// Whether something at squared distance >= d2 from a shape of reach r cannot beat `best`.
+bool cannot_beat(double d2, double r, double best) {
+  const double reach = best + r;
+  return reach <= 0.0 || d2 > reach * reach * kSafe;
+}
+
+}  // namespace
+
+CollisionWorld::CollisionWorld(Robot robot, std::vector<Obstacle> obstacles, const Vec2& workspace_min,
+                               const Vec2& workspace_max)
+    : robot_(std::move(robot)),
+      obstacles_(std::move(obstacles)),
+      is_polygon_(std::holds_alternative<PolygonRobot>(robot_)),
+      space_(robot_space(robot_, workspace_min, workspace_max)) {
+  for (std::size_t i = 0; i < obstacles_.size(); ++i) {
+    const Box box = obstacle_bounds(obstacles_[i]);
+    if (const auto* d = std::get_if<Disk>(&obstacles_[i])) {
+      const double far = d->radius * kSafe;
+      disks_.push_back({d->center.x(), d->center.y(), d->radius, far * far * kSafe, box, static_cast<int>(i)});
+    } else {
+      shapes_.push_back({box, static_cast<int>(i)});
+    }
+  }
+}
+
+CollisionWorld::CollisionWorld(const Scene& scene)
+    : CollisionWorld(scene.robot, scene.obstacles, scene.workspace_min, scene.workspace_max) {}
+
+void CollisionWorld::pose(const Config& q) const {
+  switch (robot_.index()) {
+    case 0:
+      point_ = Vec2(q[0], q[1]);
+      robot_box_ = Box{point_, point_};
+      break;
+    case 1: {
+      const ArmPose p = arm_pose(std::get<ArmRobot>(robot_), q);
+      joints_[0] = p.base;
+      joints_[1] = p.elbow;
+      joints_[2] = p.tip;
+      robot_box_ = Box{p.base.cwiseMin(p.elbow).cwiseMin(p.tip), p.base.cwiseMax(p.elbow).cwiseMax(p.tip)};
+      break;
+    }
+    default:
+      polygon_pose(std::get<PolygonRobot>(robot_), q, polygon_);
+      robot_box_ = bounding_box(polygon_);
+  }
+}
+
+double CollisionWorld::skeleton_squared_distance(const Vec2& c) const {
+  if (robot_.index() == 0) return squared_length(point_ - c);
+  return std::fmin(point_segment_squared_distance(c, joints_[0], joints_[1]),
+                   point_segment_squared_distance(c, joints_[1], joints_[2]));
+}
+
+// The same formulas as point_clearance / segment_clearance / polygon_clearance for a disk
+// (sqrt of the least squared distance, minus r), so both paths give identical bits.
+double CollisionWorld::disk_clearance(const DiskData& d) const {
+  const Vec2 c(d.x, d.y);
+  if (is_polygon_) return polygon_disk_distance(polygon_, c, d.r);
+  return std::sqrt(skeleton_squared_distance(c)) - d.r;
+}
+
+double CollisionWorld::clearance_to(const Obstacle& o) const {
+  switch (robot_.index()) {
+    case 0:
+      return point_clearance(o, point_);
+    case 1:
+      return std::fmin(segment_clearance(o, joints_[0], joints_[1]), segment_clearance(o, joints_[1], joints_[2]));
+    default:
+      return polygon_clearance(o, polygon_);
+  }
+}
+
+CollisionWorld::Nearest CollisionWorld::nearest(const Config& q) const {
+  pose(q);
+  Nearest best{std::numeric_limits<double>::infinity(), -1};
+  auto consider = [&best](double d, int index) {
+    // Ties go to the lower scene index, whatever order the loops visit obstacles in.
+    if (d < best.clearance || (d == best.clearance && index < best.obstacle)) best = {d, index};
+  };
+  for (const DiskData& d : disks_) {
+    const double d2 = is_polygon_ ? box_gap2(robot_box_, d.box) : skeleton_squared_distance(Vec2(d.x, d.y));
+    if (cannot_beat(d2, is_polygon_ ? 0.0 : d.r, best.clearance)) continue;
+    consider(disk_clearance(d), d.index);
+  }
+  for (const ShapeData& s : shapes_) {
+    // Walls reach kWallTolerance beyond their box.
+    if (cannot_beat(box_gap2(robot_box_, s.box), kWallTolerance, best.clearance)) continue;
+    consider(clearance_to(obstacles_[static_cast<std::size_t>(s.index)]), s.index);
+  }
+  return best;
+}
+
+bool CollisionWorld::is_free(const Config& q) const {
+  pose(q);
+  for (const DiskData& d : disks_) {
+    if (is_polygon_ ? box_gap2(robot_box_, d.box) > 0.0 : skeleton_squared_distance(Vec2(d.x, d.y)) > d.far2)
+      continue;
+    if (disk_clearance(d) <= 0.0) return false;
+  }
+  for (const ShapeData& s : shapes_) {
+    if (box_gap2(robot_box_, s.box) > kWallTolerance * kWallTolerance * kSafe) continue;
+    if (clearance_to(obstacles_[static_cast<std::size_t>(s.index)]) <= 0.0) return false;
+  }
+  return true;
+}
+
+}  // namespace csl

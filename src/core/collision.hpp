@@ -1,0 +1,74 @@
+#pragma once
+// Collision queries of one robot among a scene's obstacles: the clearance eta(q), whether q is
+// free, which obstacle is nearest, and the motion bound lambda(p, q).
+#include <vector>
+
+#include "core/obstacles.hpp"
+#include "core/robot.hpp"
+#include "core/space.hpp"
+
+namespace csl {
+
+struct Scene;
+
+class CollisionWorld {
+ public:
+  CollisionWorld(Robot robot, std::vector<Obstacle> obstacles, const Vec2& workspace_min,
+                 const Vec2& workspace_max);
+  explicit CollisionWorld(const Scene& scene);
+
+  const Space& space() const { return space_; }
+  const Robot& robot() const { return robot_; }
+  const std::vector<Obstacle>& obstacles() const { return obstacles_; }
+
+  /// The clearance and the obstacle (scene index) that attains it; -1 when there are none.
+  struct Nearest {
+    double clearance;
+    int obstacle;
+  };
+  Nearest nearest(const Config& q) const;
+
+  /// eta(q): the least distance from the robot at q to any obstacle (+infinity with none).
+  /// <= 0 means collision; negative values, where cheap to know, tell how deep.
+  double clearance(const Config& q) const { return nearest(q).clearance; }
+
+  /// Whether q is collision-free: exactly clearance(q) > 0, but faster (it stops at the first
+  /// hit and mostly compares squared distances).
+  bool is_free(const Config& q) const;
+
+  /// lambda(p, q) for this robot (see motion_bound in robot.hpp).
+  double motion_bound(const Config& p, const Config& q) const { return csl::motion_bound(robot_, p, q); }
+
+ private:
+  // Disks get a fast path (most scenes are mostly disks): centre, radius, and the squared
+  // distance beyond which the robot certainly clears the disk without taking a square root.
+  struct DiskData {
+    double x, y, r, far2;
+    Box box;
+    int index;
+  };
+  // Polygons and walls: the general path, behind a bounding-box test.
+  struct ShapeData {
+    Box box;
+    int index;
+  };
+  // The robot's shape at q, in scratch storage (the world is not for concurrent use).
+  void pose(const Config& q) const;
+  // Point robot and arm: squared distance from c to the robot (its point or its links).
+  double skeleton_squared_distance(const Vec2& c) const;
+  double disk_clearance(const DiskData& d) const;
+  double clearance_to(const Obstacle& o) const;
+
+  Robot robot_;
+  std::vector<Obstacle> obstacles_;
+  std::vector<DiskData> disks_;
+  std::vector<ShapeData> shapes_;
+  bool is_polygon_ = false;
+  Space space_;
+  mutable Vec2 point_;           // point robot
+  mutable Vec2 joints_[3];       // arm: base, elbow, tip
+  mutable Polygon polygon_;      // polygon robot
+  mutable Box robot_box_;
+};
+
+}  // namespace csl

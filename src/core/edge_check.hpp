@@ -1,0 +1,130 @@
+#pragma once
+// Checking the straight-line path from p to q, q(t) = interpolate(p, q, t), t in [0, 1], in two
+// ways (homework P12), each a stepper: step() does one unit of work and returns what it did, so
+// the app can animate exactly what the tests assert; check_edge() just runs it to the end.
+//
+// - Grid ("grid:N"): the N >= 2 configurations t_i = i / (N - 1), both endpoints included, in
+//   order of i; stops at the first one in collision. Approximate: it can miss a collision
+//   between two of them.
+// - Step ("step:D"): the grid with N = max(2, ceil(|pq| / D) + 1) for each edge, i.e. tested
+//   configurations at most D apart in the space's metric (what OMPL's DiscreteMotionValidator
+//   does with its resolution), so long and short edges get the same density.
+// - Bisection: exact, after Schwarzer, Saha and Latombe (2005). A piece [t0, t1] of the path is
+//   free if lambda(q(t0), q(t1)) <= eta(q(t0)) + eta(q(t1)); otherwise its midpoint m is
+//   evaluated: in collision ends the check, free splits the piece into [t0, m] and [m, t1].
+//   Order: the endpoints (t = 0, then t = 1), then pieces first-in first-out, left before right,
+//   i.e. breadth first: all pieces of one depth before the next, coarse before fine. A piece
+//   shorter than kMinBisectionPiece that still cannot be certified (the path grazes an
+//   obstacle) is reported as a collision: the checker never accepts what it has not proven.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/collision.hpp"
+
+namespace csl {
+
+inline constexpr double kMinBisectionPiece = 1e-12;
+
+/// What one step of an edge checker did. t, q, eta and free describe the configuration of an
+/// Evaluate step only; the piece fields describe bisection steps.
+struct EdgeEvent {
+  enum class Kind {
+    Evaluate,    ///< a configuration q(t) was tested: t, q, eta, free
+    Certify,     ///< bisection: piece [t0, t1] proven free, lambda <= eta0 + eta1
+    Unresolved,  ///< bisection: piece too short to split further, taken as a collision
+  };
+  Kind kind = Kind::Evaluate;
+  double t = 0.0;      ///< Evaluate: parameter along the edge
+  Config q;            ///< Evaluate: the configuration tested
+  double eta = 0.0;    ///< Evaluate: its clearance (grid without report_clearance: 1 or 0)
+  bool free = true;    ///< Evaluate: eta > 0
+  // Bisection pieces (for the endpoint evaluations: t0 = t1 = t, lambda = 0).
+  double t0 = 0.0, t1 = 0.0;
+  double lambda = 0.0;           ///< motion bound of the piece
+  double eta0 = 0.0, eta1 = 0.0; ///< clearances at its ends
+  int depth = 0;                 ///< 0 for [0, 1], 1 for its halves, ...
+};
+
+enum class Verdict { Pending, Free, Collision };
+
+/// Which checker: "bisection", "grid:N" or "step:D".
+struct EdgeCheckerSpec {
+  enum class Kind { Grid, Step, Bisection } kind = Kind::Bisection;
+  int resolution = 0;  ///< N for the grid checker
+  double step = 0.0;   ///< D for the step checker
+  /// Parses "bisection", "grid:N" (2 <= N <= kMaxGridResolution) or "step:D" (D > 0, at most
+  /// kMaxGridResolution configurations per edge); throws std::invalid_argument.
+  static EdgeCheckerSpec parse(const std::string& text);
+  std::string name() const;
+};
+inline constexpr int kMaxGridResolution = 1000000;
+
+/// A reusable checker of either kind: reset() for each edge, then step() until done().
+/// Reusing one object avoids allocating per edge (the bisection queue keeps its capacity).
+class EdgeChecker {
+ public:
+  /// `report_clearance`: the grid checker computes eta at each configuration (for traces and
+  /// the lesson); without it, only whether each is free (faster, for roadmaps). Bisection
+  /// always needs eta.
+  EdgeChecker(const CollisionWorld& world, EdgeCheckerSpec spec, bool report_clearance = true)
+      : world_(&world), spec_(spec), report_clearance_(report_clearance) {}
+  EdgeChecker(CollisionWorld&&, EdgeCheckerSpec, bool = true) = delete;  // the world must outlive it
+
+  /// Starts checking p -> q. With `endpoints_known_free`, the caller vouches that p and q are
+  /// free with clearances eta_p and eta_q (a roadmap's vertices): they are not evaluated again.
+  void reset(const Config& p, const Config& q, bool endpoints_known_free = false, double eta_p = 0.0,
+             double eta_q = 0.0);
+  bool done() const { return verdict_ != Verdict::Pending; }
+  /// One unit of work (see the file comment); call only while !done(). The event stays valid
+  /// until the next step() or reset() (no copy per step: roadmaps check millions of edges).
+  const EdgeEvent& step();
+
+  Verdict verdict() const { return verdict_; }
+  /// Configurations evaluated so far (clearance or freeness computations).
+  int evaluations() const { return evaluations_; }
+  /// Where the collision was found (t of the configuration), once verdict() == Collision.
+  std::optional<double> collision_t() const { return collision_t_; }
+  const EdgeCheckerSpec& spec() const { return spec_; }
+
+ private:
+  struct Piece {
+    double t0, eta0, t1, eta1;
+    int depth;
+  };
+  // Tests q(t) and writes the Evaluate fields of event_.
+  void evaluate(double t, bool need_clearance);
+  void step_grid();
+  void step_bisection();
+
+  const CollisionWorld* world_;
+  EdgeCheckerSpec spec_;
+  bool report_clearance_;
+  Config p_, q_, delta_;  // delta_ = q - p the short way round
+  Verdict verdict_ = Verdict::Free;
+  int evaluations_ = 0;
+  std::optional<double> collision_t_;
+  bool known_free_ = false;
+  int n_ = 0;                 // grid/step: configurations on this edge
+  double eta_p_ = 0.0, eta_q_ = 0.0;
+  int next_ = 0;              // grid: next index; bisection: 0/1 = endpoints, 2 = pieces
+  std::vector<Piece> queue_;  // bisection FIFO: queue_[head_..]
+  std::size_t head_ = 0;
+  EdgeEvent event_;
+};
+
+/// The outcome of a whole check, with its events if asked for.
+struct EdgeCheckResult {
+  bool collision = false;
+  int evaluations = 0;
+  std::optional<double> collision_t;
+  std::vector<EdgeEvent> trace;
+};
+/// Runs a checker on p -> q to the end (p and q are evaluated like any configuration).
+EdgeCheckResult check_edge(const CollisionWorld& world, const EdgeCheckerSpec& spec, const Config& p,
+                           const Config& q, bool want_trace = false);
+
+/// The smallest N in [2, max_n] for which the grid checker finds a collision on p -> q, if any.
+std::optional<int> min_grid_resolution(const CollisionWorld& world, const Config& p, const Config& q, int max_n);
+
+}  // namespace csl

@@ -1,0 +1,174 @@
+// The two edge checkers: the homework's P12 numbers, their traces, and properties over
+// thousands of random edges against the analytic answer for the point robot.
+#include <limits>
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "core/edge_check.hpp"
+#include "core/scene.hpp"
+
+using csl::config;
+using csl::EdgeCheckerSpec;
+using csl::EdgeEvent;
+
+namespace {
+csl::CollisionWorld p12_world() {
+  return csl::CollisionWorld(csl::PointRobot{}, {csl::Disk{{0.2, 0.05}, 0.1}}, {-0.5, -0.5}, {1.5, 0.5});
+}
+const EdgeCheckerSpec kBisection = EdgeCheckerSpec::parse("bisection");
+}  // namespace
+
+TEST_CASE("P12: the grid check needs N = 5 to see the disk") {
+  const auto world = p12_world();
+  const auto p = config({0, 0}), q = config({1, 0});
+  for (int n = 2; n <= 4; ++n)
+    CHECK_FALSE(csl::check_edge(world, EdgeCheckerSpec::parse("grid:" + std::to_string(n)), p, q).collision);
+  const auto five = csl::check_edge(world, EdgeCheckerSpec::parse("grid:5"), p, q, true);
+  CHECK(five.collision);
+  CHECK(five.collision_t == 0.25);
+  CHECK(five.evaluations == 2);  // t = 0 (free), t = 0.25 (inside the disk)
+  REQUIRE(five.trace.size() == 2);
+  CHECK(five.trace[1].t == 0.25);
+  CHECK(five.trace[1].q == config({0.25, 0.0}));
+  CHECK(five.trace[1].eta == doctest::Approx(std::sqrt(0.05 * 0.05 + 0.05 * 0.05) - 0.1));
+  CHECK(csl::min_grid_resolution(world, p, q, 1000) == 5);
+  // Every N >= 7 samples more finely than the chord (length 0.173) and catches it too.
+  for (int n = 5; n <= 60; ++n)
+    CHECK(csl::check_edge(world, EdgeCheckerSpec::parse("grid:" + std::to_string(n)), p, q).collision);
+}
+
+TEST_CASE("P12: the bisection check, step by step") {
+  const auto world = p12_world();
+  const auto r = csl::check_edge(world, kBisection, config({0, 0}), config({1, 0}), true);
+  CHECK(r.collision);
+  CHECK(r.evaluations == 4);
+  CHECK(r.collision_t == 0.25);
+  REQUIRE(r.trace.size() == 4);
+  const double eta_p = std::sqrt(0.2 * 0.2 + 0.05 * 0.05) - 0.1;
+  const double eta_q = std::sqrt(0.8 * 0.8 + 0.05 * 0.05) - 0.1;
+  const double eta_mid = std::sqrt(0.3 * 0.3 + 0.05 * 0.05) - 0.1;
+  // The endpoints first.
+  CHECK(r.trace[0].t == 0.0);
+  CHECK(r.trace[0].eta == doctest::Approx(eta_p));
+  CHECK(r.trace[1].t == 1.0);
+  CHECK(r.trace[1].eta == doctest::Approx(eta_q));
+  // [0, 1]: lambda = 1 > eta(p) + eta(q) = 0.808, so its midpoint is tested: free.
+  CHECK(r.trace[2].kind == EdgeEvent::Kind::Evaluate);
+  CHECK(r.trace[2].t0 == 0.0);
+  CHECK(r.trace[2].t1 == 1.0);
+  CHECK(r.trace[2].lambda == 1.0);
+  CHECK(r.trace[2].t == 0.5);
+  CHECK(r.trace[2].eta == doctest::Approx(eta_mid));
+  CHECK(r.trace[2].free);
+  // [0, 0.5]: lambda = 0.5 > 0.106 + 0.204; its midpoint 0.25 is inside the disk.
+  CHECK(r.trace[3].t0 == 0.0);
+  CHECK(r.trace[3].t1 == 0.5);
+  CHECK(r.trace[3].lambda == 0.5);
+  CHECK(r.trace[3].depth == 1);
+  CHECK(r.trace[3].t == 0.25);
+  CHECK_FALSE(r.trace[3].free);
+}
+
+TEST_CASE("a free edge is certified piece by piece, and the pieces cover [0, 1]") {
+  const auto world = p12_world();
+  const auto r = csl::check_edge(world, kBisection, config({0, 0.3}), config({1, 0.3}), true);
+  CHECK_FALSE(r.collision);
+  double covered = 0.0;
+  for (const EdgeEvent& e : r.trace) {
+    if (e.kind != EdgeEvent::Kind::Certify) continue;
+    CHECK(e.lambda <= e.eta0 + e.eta1);
+    covered += e.t1 - e.t0;
+  }
+  CHECK(covered == doctest::Approx(1.0));
+}
+
+TEST_CASE("endpoints in collision are found first") {
+  const auto world = p12_world();
+  auto r = csl::check_edge(world, kBisection, config({0.2, 0.05}), config({1, 0}));
+  CHECK(r.collision);
+  CHECK(r.collision_t == 0.0);
+  CHECK(r.evaluations == 1);
+  r = csl::check_edge(world, EdgeCheckerSpec::parse("grid:3"), config({1, 0}), config({0.2, 0.05}));
+  CHECK(r.collision_t == 1.0);
+}
+
+TEST_CASE("a path that only grazes an obstacle is not accepted") {
+  // The line y = 0.15 touches the disk's top at (0.2, 0.15): closed obstacles, so a collision;
+  // x = 0.2 is at t = 2/3, never a dyadic midpoint: bisection must not certify around it.
+  const auto world = p12_world();
+  const auto r = csl::check_edge(world, kBisection, config({0, 0.15}), config({0.3, 0.15}), true);
+  CHECK(r.collision);
+  CHECK(r.trace.back().kind != EdgeEvent::Kind::Certify);
+}
+
+TEST_CASE("checker specs parse strictly") {
+  CHECK(EdgeCheckerSpec::parse("grid:17").resolution == 17);
+  CHECK(EdgeCheckerSpec::parse("grid:17").name() == "grid:17");
+  CHECK(EdgeCheckerSpec::parse("bisection").name() == "bisection");
+  CHECK_THROWS_AS(EdgeCheckerSpec::parse("grid:1"), std::invalid_argument);
+  CHECK_THROWS_AS(EdgeCheckerSpec::parse("grid:x"), std::invalid_argument);
+  CHECK_THROWS_AS(EdgeCheckerSpec::parse("grid:"), std::invalid_argument);
+  CHECK_THROWS_AS(EdgeCheckerSpec::parse("grid:5x"), std::invalid_argument);
+  CHECK_THROWS_AS(EdgeCheckerSpec::parse("exact"), std::invalid_argument);
+  CHECK(EdgeCheckerSpec::parse("step:0.01").step == 0.01);
+  CHECK(EdgeCheckerSpec::parse("step:0.25").name() == "step:0.25");
+  CHECK_THROWS_AS(EdgeCheckerSpec::parse("step:0"), std::invalid_argument);
+  CHECK_THROWS_AS(EdgeCheckerSpec::parse("step:-1"), std::invalid_argument);
+  CHECK_THROWS_AS(EdgeCheckerSpec::parse("step:nan"), std::invalid_argument);
+}
+
+TEST_CASE("the step checker spaces its configurations at most D apart") {
+  const auto world = p12_world();
+  // |pq| = 1, D = 0.3: ceil(1 / 0.3) = 4 pieces, 5 configurations t = 0, 0.25, ... (hits at 0.25).
+  auto r = csl::check_edge(world, EdgeCheckerSpec::parse("step:0.3"), config({0, 0}), config({1, 0}), true);
+  CHECK(r.collision_t == 0.25);
+  // D = 0.4: 3 pieces, t = 0, 1/3, 2/3, 1: misses it (P12's N = 4).
+  r = csl::check_edge(world, EdgeCheckerSpec::parse("step:0.4"), config({0, 0}), config({1, 0}), true);
+  CHECK_FALSE(r.collision);
+  CHECK(r.evaluations == 4);
+  // Known-free endpoints (roadmap vertices) are not evaluated again.
+  csl::EdgeChecker checker(world, EdgeCheckerSpec::parse("step:0.4"), false);
+  checker.reset(config({0, 0}), config({1, 0}), true, 0.1, 0.7);
+  while (!checker.done()) checker.step();
+  CHECK(checker.verdict() == csl::Verdict::Free);
+  CHECK(checker.evaluations() == 2);
+}
+
+TEST_CASE("point robot, random disk worlds: bisection agrees with the analytic answer") {
+  csl::Rng rng(1234);
+  int collisions = 0, frees = 0, grid_misses = 0;
+  for (int world_i = 0; world_i < 200; ++world_i) {
+    std::vector<csl::Obstacle> disks;
+    for (int k = 0; k < 8; ++k)
+      disks.push_back(csl::Disk{{rng.uniform01(), rng.uniform01()}, rng.uniform(0.01, 0.12)});
+    const csl::CollisionWorld world(csl::PointRobot{}, disks, {0, 0}, {1, 1});
+    for (int edge_i = 0; edge_i < 25; ++edge_i) {
+      const auto p = world.space().sample(rng), q = world.space().sample(rng);
+      // Exact: the least signed distance from the segment pq to any disk.
+      double exact = std::numeric_limits<double>::infinity();
+      for (const auto& o : disks) {
+        const auto& d = std::get<csl::Disk>(o);
+        exact = std::fmin(exact, csl::segment_disk_signed_distance({p[0], p[1]}, {q[0], q[1]}, d.center, d.radius));
+      }
+      const auto r = csl::check_edge(world, kBisection, p, q);
+      if (exact < -1e-9) {
+        ++collisions;
+        REQUIRE(r.collision);  // never accepts an edge in collision
+        REQUIRE(r.collision_t.has_value());
+        // The reported place is a witness: that configuration is in collision.
+        const auto at = world.space().interpolate(p, q, *r.collision_t);
+        REQUIRE(world.clearance(at) <= 0.0);
+        grid_misses += !csl::check_edge(world, EdgeCheckerSpec::parse("grid:10"), p, q).collision;
+      } else if (exact > 1e-9) {
+        ++frees;
+        REQUIRE_FALSE(r.collision);  // never reports a collision on a free edge
+      }
+    }
+  }
+  CHECK(collisions > 1000);
+  CHECK(frees > 500);
+  // The fixed-resolution check is only approximate: it misses some of those collisions.
+  CHECK(grid_misses > 50);
+  MESSAGE("grid:10 missed " << grid_misses << " of " << collisions << " colliding edges");
+}
