@@ -14,6 +14,7 @@ struct Command {
 };
 
 extern const Command kValidateCommand;
+extern const Command kCspaceOfCommand;
 
 /// Reads a whole file; UsageError naming the path if it cannot be read.
 std::string read_file(const std::string& path);

@@ -25,7 +25,7 @@ std::string read_file(const std::string& path) {
 
 namespace {
 
-const Command* const kCommands[] = {&kValidateCommand};
+const Command* const kCommands[] = {&kValidateCommand, &kCspaceOfCommand};
 
 const Command* find_command(const std::string& name) {
   for (const Command* c : kCommands)
