@@ -19,6 +19,7 @@ struct Command {
 extern const Command kValidateCommand;
 extern const Command kCheckCommand;
 extern const Command kDistanceCommand;
+extern const Command kCspaceOfCommand;
 
 /// Reads a whole file; UsageError naming the path if it cannot be read.
 std::string read_file(const std::string& path);

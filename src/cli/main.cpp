@@ -14,7 +14,7 @@ namespace csl::cli {
 
 namespace {
 
-const Command* const kCommands[] = {&kValidateCommand, &kCheckCommand, &kDistanceCommand};
+const Command* const kCommands[] = {&kValidateCommand, &kCheckCommand, &kDistanceCommand, &kCspaceOfCommand};
 
 const Command* find_command(const std::string& name) {
   for (const Command* c : kCommands)
