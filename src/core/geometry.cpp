@@ -17,6 +17,12 @@ bool on_collinear_segment(const Vec2& a, const Vec2& b, const Vec2& p) {
 }  // namespace
 
 bool segments_intersect(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+  // Disjoint bounding boxes: apart. Exact, and needed: for nearly collinear points the signs
+  // of orient below are rounding noise and would join segments lying one after the other on
+  // their common line, however far apart (e.g. (2.6,0.2)-(2.2,0.5) and (1.8,0.8)-(1.4,1.1)).
+  if (std::max(a.x(), b.x()) < std::min(c.x(), d.x()) || std::max(c.x(), d.x()) < std::min(a.x(), b.x()) ||
+      std::max(a.y(), b.y()) < std::min(c.y(), d.y()) || std::max(c.y(), d.y()) < std::min(a.y(), b.y()))
+    return false;
   const int o1 = sign(orient(a, b, c)), o2 = sign(orient(a, b, d));
   const int o3 = sign(orient(c, d, a)), o4 = sign(orient(c, d, b));
   // Each segment's endpoints on different sides of (or one on) the other's line: they meet.
@@ -181,13 +187,17 @@ std::vector<Triangle> triangulate(const Polygon& poly) {
       cut = true;
     }
     if (!cut) {
-      // Only collinear runs are left (zero-area slivers): drop a flat vertex.
-      for (std::size_t i = 0; i < n && !cut; ++i)
-        if (orient(at(idx[(i + n - 1) % n]), at(idx[i]), at(idx[(i + 1) % n])) == 0.0) {
-          idx.erase(idx.begin() + static_cast<std::ptrdiff_t>(i));
-          cut = true;
-        }
-      if (!cut) break;  // not a simple polygon; return what was found
+      // No ear: rounding made (nearly) collinear vertices look flat, reflex or inside, and what
+      // is left is a sliver of rounding-sized area. Cut its most convex vertex all the same,
+      // so that there are still n - 2 triangles (dropping a vertex would leave n - 3).
+      auto turn = [&](std::size_t i) {
+        return orientation * orient(at(idx[(i + n - 1) % n]), at(idx[i]), at(idx[(i + 1) % n]));
+      };
+      std::size_t best = 0;
+      for (std::size_t i = 1; i < n; ++i)
+        if (turn(i) > turn(best)) best = i;
+      out.push_back({idx[(best + n - 1) % n], idx[best], idx[(best + 1) % n]});
+      idx.erase(idx.begin() + static_cast<std::ptrdiff_t>(best));
     }
   }
   if (idx.size() == 3) out.push_back({idx[0], idx[1], idx[2]});

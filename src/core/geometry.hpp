@@ -35,12 +35,17 @@ inline double closest_parameter(const Vec2& p, const Vec2& a, const Vec2& b) {
   return s < 0.0 ? 0.0 : (s > 1.0 ? 1.0 : s);  // projection outside -> nearest endpoint
 }
 
-/// Squared distance from p to segment ab (P11's dot-product construction).
+/// Squared distance from p to segment ab (P11): the dot product decides whether the nearest
+/// point is an endpoint (then it is that endpoint itself, not a + 1 * (b - a), which rounds) or
+/// inside, where the distance to the line is |(b - a) x (p - a)|^2 / |b - a|^2: exactly 0 when
+/// orient(a, b, p) is, as segments_intersect and point_in_polygon decide, and rounded relative
+/// to |p - a| instead of to the size of the coordinates.
 inline double point_segment_squared_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
   const double s = closest_parameter(p, a, b);
-  const double cx = a.x() + s * (b.x() - a.x()) - p.x();
-  const double cy = a.y() + s * (b.y() - a.y()) - p.y();
-  return cx * cx + cy * cy;
+  if (s == 0.0) return squared_length(p - a);
+  if (s == 1.0) return squared_length(p - b);
+  const double c = orient(a, b, p);
+  return c * c / squared_length(b - a);
 }
 
 /// Distance from point p to segment ab; a == b is allowed.
@@ -48,9 +53,10 @@ inline double point_segment_distance(const Vec2& p, const Vec2& a, const Vec2& b
   return std::sqrt(point_segment_squared_distance(p, a, b));
 }
 
-/// The point of segment ab closest to p.
+/// The point of segment ab closest to p (an endpoint exactly when it is one).
 inline Vec2 closest_point_on_segment(const Vec2& p, const Vec2& a, const Vec2& b) {
   const double s = closest_parameter(p, a, b);
+  if (s == 1.0) return b;
   return {a.x() + s * (b.x() - a.x()), a.y() + s * (b.y() - a.y())};
 }
 
