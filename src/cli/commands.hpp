@@ -5,6 +5,7 @@
 
 #include "cli/args.hpp"
 #include "core/collision.hpp"
+#include "core/prm.hpp"
 #include "core/scene.hpp"
 
 namespace csl::cli {
@@ -20,6 +21,10 @@ extern const Command kValidateCommand;
 extern const Command kCheckCommand;
 extern const Command kDistanceCommand;
 extern const Command kCspaceOfCommand;
+extern const Command kPlanCommand;
+extern const Command kBoundCommand;
+extern const Command kVisibilityCommand;
+extern const Command kExperimentCommand;
 
 /// Reads a whole file; UsageError naming the path if it cannot be read.
 std::string read_file(const std::string& path);
@@ -30,6 +35,16 @@ Scene load_scene(const std::string& path);
 Config parse_config(const std::string& text, const Scene& scene, const std::string& what);
 /// A point "x,y"; UsageError naming `what` otherwise.
 Vec2 parse_point(const std::string& text, const std::string& what);
+/// The planner options shared by plan and experiment: [--k K | --radius R | --prm-star]
+/// [--checker bisection|grid:N|step:D] [--seed S]; defaults k = 10, bisection, seed 1.
+struct PlannerOptions {
+  NeighborRule neighbors;
+  EdgeCheckerSpec checker;
+  std::uint64_t seed = 1;
+};
+PlannerOptions take_planner_options(Args& args);
+/// UsageError if q is not free in the scene ("where it matters": planning from it).
+void require_free(const CollisionWorld& world, const Config& q, const std::string& what);
 /// Prints JSON on stdout (one line).
 void print_json(const nlohmann::json& j);
 

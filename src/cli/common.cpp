@@ -1,5 +1,6 @@
 // Helpers shared by the CLI's commands: files, scenes, configurations, output.
 #include <fstream>
+#include <stdexcept>
 #include <iostream>
 #include <sstream>
 
@@ -45,6 +46,37 @@ Vec2 parse_point(const std::string& text, const std::string& what) {
   const std::vector<double> v = parse_numbers(text, what);
   if (v.size() != 2) throw UsageError(what + ": expected x,y");
   return {v[0], v[1]};
+}
+
+PlannerOptions take_planner_options(Args& args) {
+  PlannerOptions o;
+  const auto k = args.take("k"), radius = args.take("radius");
+  const bool star = args.take_flag("prm-star");
+  if ((k ? 1 : 0) + (radius ? 1 : 0) + (star ? 1 : 0) > 1)
+    throw UsageError("choose one neighbour rule: --k, --radius or --prm-star");
+  try {
+    if (k) o.neighbors = NeighborRule::parse("k:" + *k);
+    if (radius) o.neighbors = NeighborRule::parse("radius:" + *radius);
+    if (star) o.neighbors = NeighborRule::parse("prm*");
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string(k ? "--k: " : "--radius: ") + e.what());
+  }
+  try {
+    o.checker = EdgeCheckerSpec::parse(args.take("checker").value_or("bisection"));
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--checker: ") + e.what());
+  }
+  if (const auto seed = args.take("seed"))
+    o.seed = static_cast<std::uint64_t>(parse_count(*seed, "--seed", 9007199254740991LL));  // 2^53 - 1: exact in JSON
+  return o;
+}
+
+void require_free(const CollisionWorld& world, const Config& q, const std::string& what) {
+  const auto n = world.nearest(q);
+  if (n.clearance > 0.0) return;
+  const Obstacle& o = world.obstacles()[static_cast<std::size_t>(n.obstacle)];
+  throw UsageError(what + " is in collision with obstacles[" + std::to_string(n.obstacle) + "] (a " +
+                   obstacle_type_name(o) + ")");
 }
 
 void print_json(const nlohmann::json& j) {

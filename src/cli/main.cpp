@@ -14,7 +14,8 @@ namespace csl::cli {
 
 namespace {
 
-const Command* const kCommands[] = {&kValidateCommand, &kCheckCommand, &kDistanceCommand, &kCspaceOfCommand};
+const Command* const kCommands[] = {&kValidateCommand, &kCheckCommand,      &kDistanceCommand,   &kCspaceOfCommand,
+                                    &kPlanCommand,     &kBoundCommand,      &kVisibilityCommand, &kExperimentCommand};
 
 const Command* find_command(const std::string& name) {
   for (const Command* c : kCommands)

@@ -10,8 +10,9 @@ namespace {
 
 // Squared distance between two boxes: a lower bound on the distance between their contents.
 double box_gap2(const Box& a, const Box& b) {
-  const double dx = std::fmax(std::fmax(a.min.x() - b.max.x(), b.min.x() - a.max.x()), 0.0);
-  const double dy = std::fmax(std::fmax(a.min.y() - b.max.y(), b.min.y() - a.max.y()), 0.0);
+  const double gx = a.min.x() - b.max.x() > b.min.x() - a.max.x() ? a.min.x() - b.max.x() : b.min.x() - a.max.x();
+  const double gy = a.min.y() - b.max.y() > b.min.y() - a.max.y() ? a.min.y() - b.max.y() : b.min.y() - a.max.y();
+  const double dx = gx > 0.0 ? gx : 0.0, dy = gy > 0.0 ? gy : 0.0;
   return dx * dx + dy * dy;
 }
 
@@ -68,9 +69,13 @@ void CollisionWorld::pose(const Config& q) const {
 }
 
 double CollisionWorld::skeleton_squared_distance(const Vec2& c) const {
-  if (robot_.index() == 0) return squared_length(point_ - c);
-  return std::fmin(point_segment_squared_distance(c, joints_[0], joints_[1]),
-                   point_segment_squared_distance(c, joints_[1], joints_[2]));
+  if (robot_.index() == 0) {
+    const double dx = point_.x() - c.x(), dy = point_.y() - c.y();
+    return dx * dx + dy * dy;
+  }
+  const double a = point_segment_squared_distance(c, joints_[0], joints_[1]);
+  const double b = point_segment_squared_distance(c, joints_[1], joints_[2]);
+  return b < a ? b : a;
 }
 
 // The same formulas as point_clearance / segment_clearance / polygon_clearance for a disk
@@ -114,10 +119,34 @@ CollisionWorld::Nearest CollisionWorld::nearest(const Config& q) const {
 
 bool CollisionWorld::is_free(const Config& q) const {
   pose(q);
-  for (const DiskData& d : disks_) {
-    if (is_polygon_ ? box_gap2(robot_box_, d.box) > 0.0 : skeleton_squared_distance(Vec2(d.x, d.y)) > d.far2)
-      continue;
-    if (disk_clearance(d) <= 0.0) return false;
+  // Disks, one loop per robot kind (this is the innermost loop of every planner). Each computes
+  // exactly what disk_clearance() computes, so is_free(q) == (clearance(q) > 0) bit for bit.
+  switch (robot_.index()) {
+    case 0: {
+      const double x = point_.x(), y = point_.y();
+      for (const DiskData& d : disks_) {
+        const double dx = x - d.x, dy = y - d.y;
+        const double d2 = dx * dx + dy * dy;
+        if (d2 > d.far2) continue;
+        if (std::sqrt(d2) - d.r <= 0.0) return false;
+      }
+      break;
+    }
+    case 1:
+      for (const DiskData& d : disks_) {
+        const Vec2 c(d.x, d.y);
+        const double a = point_segment_squared_distance(c, joints_[0], joints_[1]);
+        const double b = point_segment_squared_distance(c, joints_[1], joints_[2]);
+        const double d2 = b < a ? b : a;
+        if (d2 > d.far2) continue;
+        if (std::sqrt(d2) - d.r <= 0.0) return false;
+      }
+      break;
+    default:
+      for (const DiskData& d : disks_) {
+        if (box_gap2(robot_box_, d.box) > 0.0) continue;
+        if (disk_clearance(d) <= 0.0) return false;
+      }
   }
   for (const ShapeData& s : shapes_) {
     if (box_gap2(robot_box_, s.box) > kWallTolerance * kWallTolerance * kSafe) continue;

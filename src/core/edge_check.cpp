@@ -53,7 +53,7 @@ void EdgeChecker::reset(const Config& p, const Config& q, bool endpoints_known_f
   const bool bisection = spec_.kind == EdgeCheckerSpec::Kind::Bisection;
   if (spec_.kind == EdgeCheckerSpec::Kind::Grid) n_ = spec_.resolution;
   if (spec_.kind == EdgeCheckerSpec::Kind::Step) {
-    const double segments = std::ceil(world_->space().distance(p, q) / spec_.step);
+    const double segments = std::ceil(world_->space().norm(delta_) / spec_.step);
     n_ = segments >= kMaxGridResolution ? kMaxGridResolution : std::max(2, static_cast<int>(segments) + 1);
   }
   // Known-free endpoints need no evaluation: start after them.

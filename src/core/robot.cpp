@@ -61,4 +61,12 @@ double motion_bound(const Robot& r, const Config& p, const Config& q) {
   return translation;
 }
 
+double motion_lipschitz(const Robot& r) {
+  if (const auto* arm = std::get_if<ArmRobot>(&r)) {
+    const double a = arm->length1 + arm->length2, b = arm->length2;
+    return std::sqrt(a * a + b * b);
+  }
+  return std::holds_alternative<PolygonRobot>(r) ? std::sqrt(2.0) : 1.0;
+}
+
 }  // namespace csl

@@ -62,5 +62,11 @@ void polygon_pose(const PolygonRobot& robot, const Config& q, Polygon& out);
 ///   polygon: |(dx, dy)| + R |dtheta|, R = the body's radius.
 double motion_bound(const Robot& r, const Config& p, const Config& q);
 
+/// K = sup lambda(p, q) / d(p, q) in the robot's C-space metric: no point of the robot moves
+/// more than K times the C-space distance. A workspace clearance eta thus frees a C-space ball
+/// of radius eta / K. Point: 1. Arm: lambda = l1|d1| + l2|d1 + d2| = a . (|d1|, ...) is at most
+/// sqrt((l1 + l2)^2 + l2^2) |d| (Cauchy-Schwarz on the worst sign pattern). Polygon (angle
+/// weighted by R): |dxy| + R|dtheta| <= sqrt 2 * sqrt(|dxy|^2 + R^2 dtheta^2).
+double motion_lipschitz(const Robot& r);
 
 }  // namespace csl

@@ -6,6 +6,7 @@
 // angles is the shortest way round: d(p, q)^2 = sum_i (w_i * delta_i)^2. On T^n this is the flat
 // torus metric; on SE(2) the weight of the angle converts radians into a length (the polygon
 // robot uses its radius, so that a turn costs what its farthest point travels).
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -64,6 +65,15 @@ class Space {
     return sum;
   }
   double distance(const Config& p, const Config& q) const;
+  /// The length of a difference vector (from difference()): distance(p, q) == norm(difference(p, q)).
+  double norm(const Config& delta) const {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < coords_.size(); ++i) {
+      const double d = delta[static_cast<Eigen::Index>(i)] * coords_[i].weight;
+      sum += d * d;
+    }
+    return std::sqrt(sum);
+  }
   /// The point a fraction t of the way from p to q along the shortest path; angles wrapped.
   Config interpolate(const Config& p, const Config& q, double t) const { return along(p, difference(p, q), t); }
   /// p + t * delta, angles wrapped: interpolate() with the difference computed once, for many t.

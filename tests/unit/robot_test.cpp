@@ -115,3 +115,21 @@ TEST_CASE("the arm's lambda uses the wrapped joint differences") {
   // Link 2 keeps its absolute direction when d1 + d2 = 0: only the elbow's motion counts.
   CHECK(csl::motion_bound(arm, config({0.0, 0.0}), config({0.5, -0.5})) == doctest::Approx(0.5));
 }
+
+TEST_CASE("lambda <= K d(p, q): the robots' Lipschitz constants bound their motion") {
+  csl::Rng rng(31);
+  const csl::Robot robots[] = {csl::PointRobot{}, csl::ArmRobot{{0, 0}, 0.7, 0.4},
+                               csl::make_polygon_robot({{-0.2, -0.1}, {0.3, -0.1}, {0.1, 0.2}})};
+  for (const auto& robot : robots) {
+    const auto space = csl::robot_space(robot, {0, 0}, {1, 1});
+    const double k = csl::motion_lipschitz(robot);
+    double worst = 0.0;
+    for (int i = 0; i < 20000; ++i) {
+      const auto p = space.sample(rng), q = space.sample(rng);
+      const double ratio = csl::motion_bound(robot, p, q) / space.distance(p, q);
+      REQUIRE(ratio <= k * (1 + 1e-12));
+      worst = std::max(worst, ratio);
+    }
+    CHECK(worst > 0.97 * k);  // and K is (nearly) attained: not a loose constant
+  }
+}

@@ -1,0 +1,167 @@
+#include "core/analysis.hpp"
+
+#include <cmath>
+#include <initializer_list>
+#include <stdexcept>
+
+#include "core/angles.hpp"
+
+namespace csl {
+
+double unit_ball_volume(int d) {
+  if (d < 1) throw std::invalid_argument("unit_ball_volume: d >= 1");
+  // V_d = 2 pi / d * V_{d-2}, with V_0 = 1 and V_1 = 2: exact recurrences, no Gamma function.
+  double v = d % 2 == 0 ? 1.0 : 2.0;
+  for (int k = d % 2 == 0 ? 2 : 3; k <= d; k += 2) v *= kTwoPi / k;
+  return v;
+}
+
+namespace {
+void require(bool ok, const char* what) {
+  if (!ok) throw std::invalid_argument(what);
+}
+}  // namespace
+
+FailureBound path_tiling_bound(double length, double clearance, int d, double free_volume, double samples) {
+  require(std::isfinite(length) && length > 0, "path length must be a finite number > 0");
+  require(std::isfinite(clearance) && clearance > 0, "clearance must be a finite number > 0");
+  require(d >= 1 && d <= 64, "dimension must be in 1..64");
+  require(std::isfinite(free_volume) && free_volume > 0, "free volume must be a finite number > 0");
+  require(std::isfinite(samples) && samples >= 0, "samples must be a finite number >= 0");
+  FailureBound b;
+  // Section 2.1: m = ceil(L / (r/2)) balls along the path, sigma = mu(B_1) / (2^d mu(F)).
+  b.balls = std::ceil(length / (clearance / 2));
+  b.sigma = unit_ball_volume(d) / (std::pow(2.0, d) * free_volume);
+  b.rate = b.sigma * std::pow(clearance, d);
+  b.exponent = b.rate * samples;
+  b.bound = b.balls * std::exp(-b.exponent);
+  b.vacuous = b.bound >= 1.0;
+  return b;
+}
+
+// P8, derived. Take F = [0,1]^d. The path argument needs balls of radius r/2 inside F whose
+// centres are at most r/2 apart along the path, so that samples in neighbouring balls are
+// joined by a free straight line; F is convex here, so any straight line in it is free and
+// only the tiling matters. Tiling the whole cube the same way, a grid with spacing r/2 along
+// every axis, takes ceil(1 / (r/2)) = ceil(2/r) centres per axis:
+//   m = ceil(2/r)^d,  Prob(failure) <= ceil(2/r)^d exp(-sigma r^d n),  sigma = mu(B_1) / 2^d.
+// (Balls of radius r/2 on that grid cover the cube only while their radius reaches a cell's
+// far corner, (r/2) sqrt(d)/2 <= r/2, i.e. d <= 4; a true covering needs spacing r/sqrt(d),
+// ceil(sqrt(d)/r)^d balls. Both are reported.)
+// Against the path bound ceil(2L/r) exp(-sigma r^d n): the exponential decay in n is the same,
+// but the factor in front grows like (2/r)^d instead of 2L/r, so reaching the same failure
+// probability costs about (d-1) ln(2/r) / (sigma r^d) more samples: much worse, and the more
+// so in high dimension and with small clearance, because it pays for every region of the
+// space rather than for one corridor.
+TilingBound whole_space_tiling_bound(double clearance, int d, double samples) {
+  require(std::isfinite(clearance) && clearance > 0, "clearance must be a finite number > 0");
+  require(d >= 1 && d <= 64, "dimension must be in 1..64");
+  require(std::isfinite(samples) && samples >= 0, "samples must be a finite number >= 0");
+  TilingBound t;
+  t.balls = std::pow(std::ceil(2.0 / clearance), d);
+  t.covering_balls = std::pow(std::ceil(std::sqrt(static_cast<double>(d)) / clearance), d);
+  t.sigma = unit_ball_volume(d) / std::pow(2.0, d);
+  t.rate = t.sigma * std::pow(clearance, d);
+  t.bound = t.balls * std::exp(-t.rate * samples);
+  t.vacuous = t.bound >= 1.0;
+  return t;
+}
+
+double FailureBound::samples_to_reach(double balls, double rate, double target) {
+  // balls * exp(-rate n) = target  <=>  n = ln(balls / target) / rate (0 if already below).
+  require(target > 0.0 && target < 1.0, "target probability must be in (0, 1)");
+  return std::fmax(0.0, std::log(balls / target) / rate);
+}
+
+namespace {
+
+// Integral over t in [0, T] of clamp(a + s t, 0, 1): a linear function clipped to the square's
+// height. Exact: split [0, T] where a + s t crosses 0 and 1, integrate each linear piece.
+double clamped_linear_integral(double a, double s, double T) {
+  double cuts[4] = {0.0, T, T, T};
+  int n = 1;
+  if (s != 0.0) {
+    for (double level : {0.0, 1.0}) {
+      const double t = (level - a) / s;
+      if (t > 0.0 && t < T) cuts[n++] = t;
+    }
+  }
+  cuts[n++] = T;
+  if (n == 4 && cuts[1] > cuts[2]) std::swap(cuts[1], cuts[2]);
+  double total = 0.0;
+  for (int i = 0; i + 1 < n; ++i) {
+    const double t0 = cuts[i], t1 = cuts[i + 1];
+    if (t1 <= t0) continue;
+    // On a piece the clamp is one of 0, 1 or the line itself: decide at its middle.
+    const double mid = a + s * 0.5 * (t0 + t1);
+    if (mid <= 0.0) continue;
+    if (mid >= 1.0) {
+      total += t1 - t0;
+    } else {
+      total += (t1 - t0) * (a + s * 0.5 * (t0 + t1));  // trapezoid = exact for a line
+    }
+  }
+  return total;
+}
+
+void require_p9(double x1, double y1, double gap) {
+  require(std::isfinite(x1) && x1 >= 0.0 && x1 < 0.5, "x1 must be in [0, 1/2)");
+  require(std::isfinite(y1) && y1 >= 0.0 && y1 <= 1.0, "y1 must be in [0, 1]");
+  require(std::isfinite(gap) && gap >= 0.0 && gap <= 1.0, "the gap must be in [0, 1]");
+}
+
+}  // namespace
+
+double visibility_probability(double x1, double y1, double gap) {
+  require_p9(x1, y1, gap);
+  // The cone from (x1, y1) through the opening's ends (1/2, 1/2 -+ gap/2): over the right half,
+  // at x = 1/2 + t (t in [0, 1/2]) it spans from lo + s_lo t to hi + s_hi t.
+  const double lo = 0.5 - 0.5 * gap, hi = 0.5 + 0.5 * gap;
+  const double run = 0.5 - x1;
+  const double s_lo = (lo - y1) / run, s_hi = (hi - y1) / run;
+  // Its part inside the square: the area under the clipped upper ray minus under the lower.
+  // Every case of the cone leaving through the right edge, the top, the bottom, or both
+  // falls out of the clipping.
+  const double right = clamped_linear_integral(hi, s_hi, 0.5) - clamped_linear_integral(lo, s_lo, 0.5);
+  return 0.5 + right;  // the left half [0, 1/2] x [0, 1] is convex: all of it is visible
+}
+
+bool visible_in_p9(double x1, double y1, double gap, double x2, double y2) {
+  if (x2 <= 0.5) return true;
+  // Where the segment crosses the wall's line x = 1/2, it must pass through the opening.
+  const double y = y1 + (y2 - y1) * (0.5 - x1) / (x2 - x1);
+  return std::fabs(y - 0.5) <= 0.5 * gap;
+}
+
+Proportion wilson_interval(long long successes, long long trials) {
+  Proportion p;
+  p.successes = successes;
+  p.trials = trials;
+  if (trials <= 0) {
+    p.low = 0.0;
+    p.high = 1.0;
+    return p;
+  }
+  constexpr double z = 1.959963984540054;
+  const double n = static_cast<double>(trials);
+  const double phat = static_cast<double>(successes) / n;
+  const double denom = 1.0 + z * z / n;
+  const double centre = (phat + z * z / (2 * n)) / denom;
+  const double half = z * std::sqrt(phat * (1 - phat) / n + z * z / (4 * n * n)) / denom;
+  p.estimate = phat;
+  p.low = std::fmax(0.0, centre - half);
+  p.high = std::fmin(1.0, centre + half);
+  return p;
+}
+
+Proportion visibility_monte_carlo(double x1, double y1, double gap, long long trials, Rng& rng) {
+  require_p9(x1, y1, gap);
+  long long seen = 0;
+  for (long long i = 0; i < trials; ++i) {
+    const double x2 = rng.uniform01(), y2 = rng.uniform01();
+    seen += visible_in_p9(x1, y1, gap, x2, y2);
+  }
+  return wilson_interval(seen, trials);
+}
+
+}  // namespace csl

@@ -1,0 +1,66 @@
+#pragma once
+// Why PRM works, in numbers (homework section 2.1, P8, P9): the failure bound of the path
+// tiling argument, the whole-space tiling bound, the visibility probability of the
+// wall-with-a-gap square, and confidence intervals for measured failure rates.
+#include <cstdint>
+
+#include "core/rng.hpp"
+
+namespace csl {
+
+/// mu(B_1): volume of the unit ball in R^d, pi^(d/2) / Gamma(d/2 + 1) (d >= 1).
+double unit_ball_volume(int d);
+
+/// The path-tiling bound of section 2.1. A free path of length L with clearance r is tiled by
+/// m = ceil(L / (r/2)) balls of radius r/2; PRM fails only if some ball gets no sample, so
+///   Prob(failure) <= m * exp(-sigma r^d n),  sigma = mu(B_1) / (2^d mu(F)).
+struct FailureBound {
+  double balls = 0;      ///< m (a double: it can exceed the range of integers)
+  double sigma = 0;      ///< sigma
+  double rate = 0;       ///< sigma r^d: the bound falls by e^-rate per sample
+  double exponent = 0;   ///< sigma r^d n
+  double bound = 0;      ///< m exp(-sigma r^d n), not clamped
+  bool vacuous = false;  ///< bound >= 1: it says nothing
+  /// Samples for the bound to reach `target` in (0, 1): n = ln(m / target) / (sigma r^d).
+  double samples_for(double target) const { return samples_to_reach(balls, rate, target); }
+  static double samples_to_reach(double balls, double rate, double target);
+};
+/// The bound for path length L > 0, clearance r > 0, dimension d >= 1, free volume mu(F) > 0,
+/// n >= 0 samples. Throws std::invalid_argument for values outside those ranges.
+FailureBound path_tiling_bound(double length, double clearance, int d, double free_volume, double samples);
+
+/// P8: tile all of F = [0,1]^d instead of one path (see the derivation in analysis.cpp).
+struct TilingBound {
+  double balls = 0;           ///< m = ceil(2/r)^d: the homework's spacing, r/2 between neighbours
+  double covering_balls = 0;  ///< ceil(sqrt(d)/r)^d: enough for the balls to cover every point
+  double sigma = 0;           ///< mu(B_1) / 2^d (mu(F) = 1)
+  double rate = 0;            ///< sigma r^d
+  double bound = 0;           ///< balls * exp(-sigma r^d n)
+  bool vacuous = false;
+  /// Samples for the bound to reach `target` in (0, 1).
+  double samples_for(double target) const { return FailureBound::samples_to_reach(balls, rate, target); }
+};
+TilingBound whole_space_tiling_bound(double clearance, int d, double samples);
+
+/// P9: Q = [0,1]^2, a wall of zero thickness at x = 1/2 with an opening of height `gap`
+/// centred at y = 1/2. The probability that a uniform random configuration is visible from
+/// (x1, y1), x1 < 1/2: the whole left half (convex, so all of it is seen) plus the part of the
+/// right half inside the cone through the opening, clipped to the square.
+double visibility_probability(double x1, double y1, double gap);
+
+/// Whether (x2, y2) is visible from (x1, y1) in the P9 square (x1 < 1/2).
+bool visible_in_p9(double x1, double y1, double gap, double x2, double y2);
+
+/// A proportion measured from trials, with its 95% Wilson score interval.
+struct Proportion {
+  double estimate = 0;
+  double low = 0, high = 0;
+  long long successes = 0, trials = 0;
+};
+/// The Wilson score interval (Wilson 1927) at z = 1.959964 (95%); sensible also near 0 and 1.
+Proportion wilson_interval(long long successes, long long trials);
+
+/// P9 by Monte Carlo: the fraction of `trials` uniform samples visible from (x1, y1).
+Proportion visibility_monte_carlo(double x1, double y1, double gap, long long trials, Rng& rng);
+
+}  // namespace csl

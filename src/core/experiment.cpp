@@ -1,0 +1,118 @@
+#include "core/experiment.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace csl {
+
+double path_clearance(const CollisionWorld& world, const std::vector<Config>& path, double spacing) {
+  double least = std::numeric_limits<double>::infinity();
+  if (path.empty()) return least;
+  least = world.clearance(path.front());
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+    const Config delta = world.space().difference(path[i], path[i + 1]);
+    const double length = world.space().distance(path[i], path[i + 1]);
+    const int pieces = std::max(1, static_cast<int>(std::ceil(length / spacing)));
+    for (int k = 1; k <= pieces; ++k)
+      least = std::fmin(least, world.clearance(world.space().along(path[i], delta, double(k) / pieces)));
+  }
+  return least;
+}
+
+double free_fraction(const CollisionWorld& world, long samples, Rng& rng) {
+  long free = 0;
+  for (long i = 0; i < samples; ++i) free += world.is_free(world.space().sample(rng));
+  return samples > 0 ? static_cast<double>(free) / static_cast<double>(samples) : 0.0;
+}
+
+Experiment::Experiment(const CollisionWorld& world, Config start, Config goal, ExperimentParams params)
+    : world_(&world), start_(std::move(start)), goal_(std::move(goal)), params_(std::move(params)) {
+  if (params_.sample_counts.empty()) throw std::invalid_argument("the list of sample counts is empty");
+  for (int n : params_.sample_counts)
+    if (n < 0 || n > kMaxPrmSamples) throw std::invalid_argument("sample counts must be in [0, 1000000]");
+  if (params_.trials < 1 || params_.trials > 100000) throw std::invalid_argument("trials must be in [1, 100000]");
+  if (params_.reference_samples == 0)
+    params_.reference_samples =
+        std::max(2000, 4 * *std::max_element(params_.sample_counts.begin(), params_.sample_counts.end()));
+  params_.reference_samples = std::min(params_.reference_samples, kMaxPrmSamples);
+  for (int n : params_.sample_counts) {
+    ExperimentRow row;
+    row.samples = n;
+    rows_.push_back(row);
+  }
+}
+
+std::uint64_t Experiment::trial_seed(std::size_t row, int trial) const {
+  Rng mixer(params_.seed ^ (static_cast<std::uint64_t>(row) << 32) ^ static_cast<std::uint64_t>(trial));
+  return mixer.next_u64();
+}
+
+void Experiment::run_reference() {
+  PrmParams p;
+  p.samples = params_.reference_samples;
+  p.neighbors = params_.neighbors;
+  p.checker = params_.checker;
+  p.seed = params_.seed ^ 0x5eed5eed5eed5eedull;
+  Prm prm(*world_, start_, goal_, p);
+  prm.run();
+  const Space& space = world_->space();
+  reference_.samples = p.samples;
+  reference_.dimension = space.dim();
+  Rng rng(params_.seed ^ 0xf4eef4eef4eef4eeull);
+  reference_.free_fraction = free_fraction(*world_, params_.volume_samples, rng);
+  reference_.free_volume = reference_.free_fraction * space.volume();
+  reference_.path_exists = prm.solved();
+  if (prm.solved()) {
+    std::vector<Config> path;
+    for (int v : prm.path()) path.push_back(prm.roadmap().vertices[static_cast<std::size_t>(v)]);
+    reference_.path_length = prm.path_length();
+    // Sample the path finely: a thousandth of its length, or closer.
+    reference_.workspace_clearance = path_clearance(*world_, path, std::max(prm.path_length() / 1000, 1e-9));
+    reference_.clearance = reference_.workspace_clearance / motion_lipschitz(world_->robot());
+  }
+  const bool bound = reference_.path_exists && reference_.clearance > 0 && reference_.path_length > 0 &&
+                     reference_.free_volume > 0;
+  for (ExperimentRow& row : rows_) {
+    row.has_bound = bound;
+    if (bound)
+      row.bound = path_tiling_bound(reference_.path_length, reference_.clearance, reference_.dimension,
+                                    reference_.free_volume, row.samples);
+  }
+  reference_done_ = true;
+}
+
+void Experiment::step() {
+  if (done()) return;
+  if (!reference_done_) {
+    run_reference();
+    return;
+  }
+  ExperimentRow& row = rows_[next_row_];
+  PrmParams p;
+  p.samples = row.samples;
+  p.neighbors = params_.neighbors;
+  p.checker = params_.checker;
+  p.seed = trial_seed(next_row_, next_trial_);
+  Prm prm(*world_, start_, goal_, p);
+  prm.run();
+  ++row.trials;
+  row.failures += !prm.solved();
+  row.failure_rate = wilson_interval(row.failures, row.trials);
+  if (++next_trial_ == params_.trials) {
+    next_trial_ = 0;
+    ++next_row_;
+  }
+}
+
+void Experiment::run() {
+  while (!done()) step();
+}
+
+double Experiment::progress() const {
+  const double total = 1.0 + static_cast<double>(rows_.size()) * params_.trials;
+  const double finished = (reference_done_ ? 1.0 : 0.0) + static_cast<double>(next_row_) * params_.trials + next_trial_;
+  return finished / total;
+}
+
+}  // namespace csl

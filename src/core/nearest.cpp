@@ -1,0 +1,233 @@
+#include "core/nearest.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace csl {
+namespace {
+
+constexpr int kLeafSize = 8;
+// Lower bounds are scaled up a hair before pruning, so rounding never prunes a true neighbour.
+constexpr double kPruneSafety = 1.0 + 1e-12;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Nearer first; equal distances by smaller index: the order brute force gives.
+inline bool closer(double d2, int index, const Neighbor& than) {
+  return d2 < than.squared_distance || (d2 == than.squared_distance && index < than.index);
+}
+
+}  // namespace
+
+void NeighborIndex::build(const std::vector<Config>& points) {
+  dim_ = static_cast<std::size_t>(space_.dim());
+  count_ = points.size();
+  plain_ = true;
+  for (int a = 0; a < space_.dim(); ++a)
+    plain_ = plain_ && !space_.coordinate(a).angular && space_.coordinate(a).weight == 1.0;
+  ids_.resize(count_);
+  std::iota(ids_.begin(), ids_.end(), 0);
+  // Coordinates in input order while building; reordered into leaf order at the end.
+  pts_.resize(count_ * dim_);
+  for (std::size_t i = 0; i < count_; ++i)
+    for (std::size_t a = 0; a < dim_; ++a) pts_[i * dim_ + a] = points[i][static_cast<Eigen::Index>(a)];
+  nodes_.clear();
+  box_.clear();
+  nodes_.reserve(2 * count_ / kLeafSize + 2);
+  box_.reserve(nodes_.capacity() * 2 * dim_);
+  if (count_ > 0) {
+    std::vector<double> cell(2 * dim_);
+    for (std::size_t a = 0; a < dim_; ++a) {
+      const Coordinate& c = space_.coordinate(static_cast<int>(a));
+      cell[a] = c.lo;
+      cell[dim_ + a] = c.hi;
+    }
+    build_node(0, static_cast<int>(count_), cell);
+  }
+  std::vector<double> ordered(count_ * dim_);
+  for (std::size_t i = 0; i < count_; ++i)
+    std::copy_n(&pts_[static_cast<std::size_t>(ids_[i]) * dim_], dim_, &ordered[i * dim_]);
+  pts_.swap(ordered);
+}
+
+int NeighborIndex::build_node(int begin, int end, std::vector<double>& cell) {
+  // `cell` holds the region this node splits (dim_ lows, dim_ highs): its widest side, in
+  // metric units, is the split axis. The node's tight bounding box, used for pruning, is built
+  // bottom up from its children's, so building costs O(n log n).
+  const int id = static_cast<int>(nodes_.size());
+  nodes_.emplace_back();
+  box_.resize(box_.size() + 2 * dim_);
+  Node node;
+  node.begin = begin;
+  node.end = end;
+  if (end - begin > kLeafSize) {
+    std::size_t axis = 0;
+    double widest = -1.0;
+    for (std::size_t a = 0; a < dim_; ++a) {
+      const double w = (cell[dim_ + a] - cell[a]) * space_.coordinate(static_cast<int>(a)).weight;
+      if (w > widest) {
+        widest = w;
+        axis = a;
+      }
+    }
+    const int mid = begin + (end - begin) / 2;
+    const auto key = [&](int idx) { return pts_[static_cast<std::size_t>(idx) * dim_ + axis]; };
+    std::nth_element(ids_.begin() + begin, ids_.begin() + mid, ids_.begin() + end,
+                     [&](int x, int y) { return key(x) < key(y) || (key(x) == key(y) && x < y); });
+    const double split = key(ids_[static_cast<std::size_t>(mid)]);
+    node.axis = static_cast<int>(axis);
+    node.split = split;
+    const double saved_hi = cell[dim_ + axis], saved_lo = cell[axis];
+    cell[dim_ + axis] = split;
+    node.left = build_node(begin, mid, cell);
+    cell[dim_ + axis] = saved_hi;
+    cell[axis] = split;
+    node.right = build_node(mid, end, cell);
+    cell[axis] = saved_lo;
+    double* box = &box_[static_cast<std::size_t>(id) * 2 * dim_];
+    const double* l = &box_[static_cast<std::size_t>(node.left) * 2 * dim_];
+    const double* r = &box_[static_cast<std::size_t>(node.right) * 2 * dim_];
+    for (std::size_t a = 0; a < dim_; ++a) {
+      box[a] = std::min(l[a], r[a]);
+      box[dim_ + a] = std::max(l[dim_ + a], r[dim_ + a]);
+    }
+  } else {
+    double* lo = &box_[static_cast<std::size_t>(id) * 2 * dim_];
+    double* hi = lo + dim_;
+    std::fill(lo, lo + dim_, kInf);
+    std::fill(hi, hi + dim_, -kInf);
+    for (int i = begin; i < end; ++i) {
+      const double* p = &pts_[static_cast<std::size_t>(ids_[static_cast<std::size_t>(i)]) * dim_];
+      for (std::size_t a = 0; a < dim_; ++a) {
+        lo[a] = std::min(lo[a], p[a]);
+        hi[a] = std::max(hi[a], p[a]);
+      }
+    }
+  }
+  nodes_[static_cast<std::size_t>(id)] = node;
+  return id;
+}
+
+// On an angular axis the box is an arc [lo, hi] of the chart; outside it, the arc's nearest
+// point is one of its ends, the shorter way round.
+double NeighborIndex::box_lower_bound(int n, const double* q) const {
+  const double* lo = &box_[static_cast<std::size_t>(n) * 2 * dim_];
+  const double* hi = lo + dim_;
+  double sum = 0.0;
+  for (std::size_t a = 0; a < dim_; ++a) {
+    if (q[a] >= lo[a] && q[a] <= hi[a]) continue;
+    const Coordinate& c = space_.coordinate(static_cast<int>(a));
+    double gap;
+    if (c.angular) {
+      const double to_lo = std::fabs(angle_difference(q[a], lo[a])), to_hi = std::fabs(angle_difference(q[a], hi[a]));
+      gap = to_lo < to_hi ? to_lo : to_hi;
+    } else {
+      gap = q[a] < lo[a] ? lo[a] - q[a] : q[a] - hi[a];
+    }
+    gap *= c.weight;
+    sum += gap * gap;
+  }
+  return sum;
+}
+
+// Depth first, the child on q's side of the split first; the other child only if its box's
+// lower bound does not exceed visit.bound() (equal bounds are searched: exact ties matter).
+// kPlain: plain Euclidean coordinates, whose squared distance dx^2 + dy^2 + ... is exactly what
+// Space::squared_distance computes for them (weights 1, summed in the same order); kDim: their
+// number when known at compile time (2: the point robot), 0 otherwise.
+template <bool kPlain, int kDim, class Visit>
+void NeighborIndex::search(int node, const double* q, Visit& visit) const {
+  const Node& n = nodes_[static_cast<std::size_t>(node)];
+  if (n.axis < 0) {
+    for (int i = n.begin; i < n.end; ++i) {
+      const double* p = point(i);
+      double d2;
+      if constexpr (kPlain) {
+        d2 = 0.0;
+        const std::size_t dim = kDim > 0 ? static_cast<std::size_t>(kDim) : dim_;
+        for (std::size_t a = 0; a < dim; ++a) {
+          const double d = p[a] - q[a];
+          d2 += d * d;
+        }
+      } else {
+        d2 = space_.squared_distance(q, p);
+      }
+      visit(ids_[static_cast<std::size_t>(i)], d2);
+    }
+    return;
+  }
+  const bool left_first = q[n.axis] <= n.split;
+  const int near = left_first ? n.left : n.right, far = left_first ? n.right : n.left;
+  search<kPlain, kDim>(near, q, visit);
+  if (box_lower_bound(far, q) <= visit.bound() * kPruneSafety) search<kPlain, kDim>(far, q, visit);
+}
+
+template <class Visit>
+void NeighborIndex::search(const double* q, Visit& visit) const {
+  if (nodes_.empty()) return;
+  if (plain_ && dim_ == 2)
+    search<true, 2>(0, q, visit);
+  else if (plain_)
+    search<true, 0>(0, q, visit);
+  else
+    search<false, 0>(0, q, visit);
+}
+
+void NeighborIndex::k_nearest(const Config& q, int k, int exclude, std::vector<Neighbor>& out) const {
+  out.clear();
+  if (k <= 0 || nodes_.empty()) return;
+  // `out` stays sorted, nearest first, at most k long: insertion beats a heap for small k.
+  struct Visitor {
+    std::vector<Neighbor>& best;
+    std::size_t k;
+    int exclude;
+    double bound() const { return best.size() < k ? kInf : best.back().squared_distance; }
+    void operator()(int idx, double d2) {
+      if (idx == exclude) return;
+      if (best.size() == k) {
+        if (!closer(d2, idx, best.back())) return;
+        best.pop_back();
+      }
+      std::size_t at = best.size();
+      best.push_back({idx, d2});
+      while (at > 0 && closer(d2, idx, best[at - 1])) {
+        best[at] = best[at - 1];
+        --at;
+      }
+      best[at] = {idx, d2};
+    }
+  } visitor{out, static_cast<std::size_t>(k), exclude};
+  search(q.data(), visitor);
+}
+
+void NeighborIndex::within(const Config& q, double r, int exclude, std::vector<Neighbor>& out) const {
+  out.clear();
+  if (nodes_.empty()) return;
+  struct Visitor {
+    std::vector<Neighbor>& found;
+    double r2;
+    int exclude;
+    double bound() const { return r2; }
+    void operator()(int idx, double d2) {
+      if (idx != exclude && d2 <= r2) found.push_back({idx, d2});
+    }
+  } visitor{out, r * r, exclude};
+  search(q.data(), visitor);
+  std::sort(out.begin(), out.end(), [](const Neighbor& a, const Neighbor& b) {
+    return closer(a.squared_distance, a.index, b);
+  });
+}
+
+std::vector<Neighbor> brute_force_k_nearest(const Space& space, const std::vector<Config>& points, const Config& q,
+                                            int k, int exclude) {
+  std::vector<Neighbor> all;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (static_cast<int>(i) != exclude) all.push_back({static_cast<int>(i), space.squared_distance(q, points[i])});
+  std::sort(all.begin(), all.end(),
+            [](const Neighbor& a, const Neighbor& b) { return closer(a.squared_distance, a.index, b); });
+  if (static_cast<int>(all.size()) > k) all.resize(static_cast<std::size_t>(std::max(k, 0)));
+  return all;
+}
+
+}  // namespace csl

@@ -1,0 +1,321 @@
+#include "core/prm.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <stdexcept>
+
+namespace csl {
+
+int NeighborRule::prm_star_k(int n, int d) {
+  if (n < 2) return 1;
+  const double e = 2.718281828459045;
+  return static_cast<int>(std::ceil(e * (1.0 + 1.0 / d) * std::log(static_cast<double>(n))));
+}
+
+NeighborRule NeighborRule::parse(const std::string& text) {
+  NeighborRule r;
+  const auto number_after = [&](std::size_t prefix) {
+    const std::string rest = text.substr(prefix);
+    char* end = nullptr;
+    const double v = rest.empty() ? 0.0 : std::strtod(rest.c_str(), &end);
+    if (rest.empty() || end != rest.c_str() + rest.size() || !std::isfinite(v))
+      throw std::invalid_argument("neighbour rule '" + text + "': not a number after ':'");
+    return v;
+  };
+  if (text == "prm*") {
+    r.kind = Kind::PrmStar;
+  } else if (text.rfind("k:", 0) == 0) {
+    const double k = number_after(2);
+    if (k < 1 || k > 1000 || k != std::floor(k)) throw std::invalid_argument("k must be an integer in [1, 1000]");
+    r.kind = Kind::Nearest;
+    r.k = static_cast<int>(k);
+  } else if (text.rfind("radius:", 0) == 0) {
+    r.kind = Kind::Radius;
+    r.radius = number_after(7);
+    if (!(r.radius > 0)) throw std::invalid_argument("the radius must be > 0");
+  } else {
+    throw std::invalid_argument("unknown neighbour rule '" + text + "' (k:K, radius:R or prm*)");
+  }
+  return r;
+}
+
+std::string NeighborRule::name() const {
+  if (kind == Kind::PrmStar) return "prm*";
+  if (kind == Kind::Nearest) return "k:" + std::to_string(k);
+  char text[48];
+  std::snprintf(text, sizeof text, "radius:%.17g", radius);
+  return text;
+}
+
+const char* phase_name(PrmPhase p) {
+  static const char* const kNames[] = {"endpoints", "sampling", "connecting", "query", "done"};
+  return kNames[static_cast<int>(p)];
+}
+
+const char* event_kind_name(PrmEvent::Kind k) {
+  static const char* const kNames[] = {"add_endpoint", "endpoint_in_collision", "sample_accepted", "sample_rejected",
+                                       "neighbors",    "edge_added",            "edge_rejected",   "path_edge_removed",
+                                       "path_found",   "no_path"};
+  return kNames[static_cast<int>(k)];
+}
+
+std::uint64_t roadmap_hash(const Roadmap& r) {
+  std::uint64_t h = 0xcbf29ce484222325ull;  // FNV-1a, 64 bit
+  const auto mix = [&h](std::uint64_t word) {
+    for (int i = 0; i < 8; ++i) {
+      h ^= (word >> (8 * i)) & 0xffu;
+      h *= 0x100000001b3ull;
+    }
+  };
+  mix(r.vertices.size());
+  for (const Config& q : r.vertices)
+    for (Eigen::Index i = 0; i < q.size(); ++i) {
+      std::uint64_t bits;
+      std::memcpy(&bits, &q[i], sizeof bits);
+      mix(bits);
+    }
+  mix(r.edges.size());
+  for (const RoadmapEdge& e : r.edges) {
+    mix(static_cast<std::uint64_t>(e.a));
+    mix(static_cast<std::uint64_t>(e.b));
+    mix(e.alive ? 1u : 0u);
+  }
+  return h;
+}
+
+Prm::Prm(const CollisionWorld& world, Config start, Config goal, PrmParams params)
+    : world_(&world),
+      start_(world.space().wrap(start)),
+      goal_(world.space().wrap(goal)),
+      params_(params),
+      checker_(world, params.checker, /*report_clearance=*/false),
+      exact_(world, EdgeCheckerSpec::parse("bisection")),
+      index_(world.space()) {
+  if (start.size() != world.space().dim() || goal.size() != world.space().dim())
+    throw std::invalid_argument("start and goal must have " + std::to_string(world.space().dim()) + " coordinates");
+  if (params.samples < 0 || params.samples > kMaxPrmSamples)
+    throw std::invalid_argument("the number of samples must be in [0, " + std::to_string(kMaxPrmSamples) + "]");
+  reset();
+}
+
+void Prm::reset() {
+  rng_.reseed(params_.seed);
+  phase_ = PrmPhase::Endpoints;
+  event_ = PrmEvent{};
+  steps_ = 0;
+  roadmap_ = Roadmap{};
+  components_.reset(0);
+  samples_drawn_ = 0;
+  k_ = 0;
+  knn_.clear();
+  p_ = -1;
+  candidates_.clear();
+  next_candidate_ = 0;
+  path_.clear();
+  path_length_ = 0.0;
+  edge_checks_ = evaluations_ = edges_alive_ = 0;
+}
+
+void Prm::run() {
+  while (!done()) step();
+}
+
+void Prm::run_to(long steps) {
+  if (steps < steps_) reset();
+  while (steps_ < steps && !done()) step();
+}
+
+const PrmEvent& Prm::step() {
+  if (done()) throw std::logic_error("Prm::step() after done()");
+  const bool bisection = params_.checker.kind == EdgeCheckerSpec::Kind::Bisection;
+  PrmEvent& e = event_;
+  e = PrmEvent{};
+  e.step = ++steps_;
+  switch (phase_) {
+    case PrmPhase::Endpoints: {
+      const Config& q = roadmap_.vertices.empty() ? start_ : goal_;
+      const auto nearest = world_->nearest(q);
+      e.q = q;
+      e.vertex = static_cast<int>(roadmap_.vertices.size());
+      if (nearest.clearance <= 0.0) {
+        e.kind = PrmEvent::Kind::EndpointInCollision;
+        e.obstacle = nearest.obstacle;
+        phase_ = PrmPhase::Done;
+        break;
+      }
+      e.kind = PrmEvent::Kind::AddEndpoint;
+      roadmap_.vertices.push_back(q);
+      roadmap_.clearance.push_back(nearest.clearance);
+      components_.add();
+      if (roadmap_.vertices.size() == 2) phase_ = params_.samples > 0 ? PrmPhase::Sampling : PrmPhase::Connecting;
+      if (phase_ == PrmPhase::Connecting) begin_connecting();
+      break;
+    }
+    case PrmPhase::Sampling: {
+      e.q = world_->space().sample(rng_);
+      e.sample = ++samples_drawn_;
+      if (world_->is_free(e.q)) {
+        e.kind = PrmEvent::Kind::SampleAccepted;
+        e.vertex = static_cast<int>(roadmap_.vertices.size());
+        roadmap_.vertices.push_back(e.q);
+        // Bisection needs every vertex's clearance; the grid checkers do not.
+        roadmap_.clearance.push_back(bisection ? world_->clearance(e.q) : std::numeric_limits<double>::quiet_NaN());
+        components_.add();
+      } else {
+        e.kind = PrmEvent::Kind::SampleRejected;
+        e.obstacle = world_->nearest(e.q).obstacle;
+      }
+      if (samples_drawn_ == params_.samples) {
+        phase_ = PrmPhase::Connecting;
+        begin_connecting();
+      }
+      break;
+    }
+    case PrmPhase::Connecting:
+      if (next_candidate_ < candidates_.size()) {
+        check_candidate();
+      } else {
+        ++p_;
+        find_candidates();
+      }
+      // The last vertex's last candidate done: the search is the next step.
+      if (next_candidate_ == candidates_.size() && p_ + 1 == static_cast<int>(roadmap_.vertices.size()))
+        phase_ = PrmPhase::Query;
+      break;
+    case PrmPhase::Query:
+      query();
+      break;
+    case PrmPhase::Done:
+      break;
+  }
+  return e;
+}
+
+void Prm::begin_connecting() {
+  index_.build(roadmap_.vertices);
+  const int n = static_cast<int>(roadmap_.vertices.size());
+  const NeighborRule& rule = params_.neighbors;
+  k_ = rule.kind == NeighborRule::Kind::Nearest  ? rule.k
+       : rule.kind == NeighborRule::Kind::PrmStar ? NeighborRule::prm_star_k(n, world_->space().dim())
+                                                  : 0;
+  // The k nearest of all vertices at once, queried in the tree's leaf order (cache-friendly);
+  // the answers do not depend on the order, so the roadmap is the same as asking one by one.
+  knn_.assign(static_cast<std::size_t>(n) * static_cast<std::size_t>(k_), Neighbor{-1, 0.0});
+  for (int v : index_.leaf_order()) {
+    index_.k_nearest(roadmap_.vertices[static_cast<std::size_t>(v)], k_, v, scratch_);
+    std::copy(scratch_.begin(), scratch_.end(), knn_.begin() + static_cast<std::ptrdiff_t>(v) * k_);
+  }
+  p_ = -1;
+  candidates_.clear();
+  next_candidate_ = 0;
+}
+
+void Prm::find_candidates() {
+  const Config& q = roadmap_.vertices[static_cast<std::size_t>(p_)];
+  candidates_.clear();
+  next_candidate_ = 0;
+  if (params_.neighbors.kind == NeighborRule::Kind::Radius) {
+    index_.within(q, params_.neighbors.radius, p_, scratch_);
+    // Being close is symmetric: the pair was a candidate of the smaller vertex already.
+    for (const Neighbor& nb : scratch_)
+      if (nb.index > p_) candidates_.push_back(nb);
+  } else {
+    // Being among the k nearest is not symmetric: skip (p, q) only if q < p already had p among
+    // its own k nearest, i.e. if the pair was checked from q's side.
+    const Neighbor* mine = &knn_[static_cast<std::size_t>(p_) * static_cast<std::size_t>(k_)];
+    for (int i = 0; i < k_ && mine[i].index >= 0; ++i) {
+      const Neighbor& nb = mine[i];
+      bool seen = false;
+      if (nb.index < p_) {
+        const Neighbor* theirs = &knn_[static_cast<std::size_t>(nb.index) * static_cast<std::size_t>(k_)];
+        for (int j = 0; j < k_ && !seen; ++j) seen = theirs[j].index == p_;
+      }
+      if (!seen) candidates_.push_back(nb);
+    }
+  }
+  event_.kind = PrmEvent::Kind::Neighbors;
+  event_.vertex = p_;
+  event_.q = q;
+  event_.candidates = static_cast<int>(candidates_.size());
+}
+
+void Prm::check_candidate() {
+  const Neighbor candidate = candidates_[next_candidate_++];
+  const int q = candidate.index;
+  const auto up = static_cast<std::size_t>(p_), uq = static_cast<std::size_t>(q);
+  checker_.reset(roadmap_.vertices[up], roadmap_.vertices[uq], true, roadmap_.clearance[up], roadmap_.clearance[uq]);
+  while (!checker_.done()) checker_.step();
+  ++edge_checks_;
+  evaluations_ += checker_.evaluations();
+  PrmEvent& e = event_;
+  e.vertex = p_;
+  e.other = q;
+  e.evaluations = checker_.evaluations();
+  if (checker_.verdict() == Verdict::Free) {
+    e.kind = PrmEvent::Kind::EdgeAdded;
+    // The index measured the same distance (same formula): its square root is the length.
+    roadmap_.edges.push_back({std::min(p_, q), std::max(p_, q), std::sqrt(candidate.squared_distance), true});
+    ++edges_alive_;
+    components_.unite(p_, q);
+  } else {
+    e.kind = PrmEvent::Kind::EdgeRejected;
+    e.collision_t = *checker_.collision_t();
+  }
+}
+
+void Prm::query() {
+  std::vector<GraphEdge> graph;
+  graph.reserve(roadmap_.edges.size());
+  for (const RoadmapEdge& r : roadmap_.edges) graph.push_back({r.a, r.b, r.length});
+  const auto& vertices = roadmap_.vertices;
+  const Config& goal = vertices[1];
+  std::vector<int> via;
+  const std::vector<int> path = shortest_path(
+      static_cast<int>(vertices.size()), graph,
+      [&](int i) { return roadmap_.edges[static_cast<std::size_t>(i)].alive; }, 0, 1,
+      [&](int v) { return world_->space().distance(vertices[static_cast<std::size_t>(v)], goal); }, &via);
+  PrmEvent& e = event_;
+  if (path.empty()) {
+    e.kind = PrmEvent::Kind::NoPath;
+    phase_ = PrmPhase::Done;
+    return;
+  }
+  // Re-verify every edge of the path with the exact check (a grid checker may have let an edge
+  // through a thin obstacle). A failed edge is removed and the search runs again next step.
+  for (int edge : via) {
+    RoadmapEdge& r = roadmap_.edges[static_cast<std::size_t>(edge)];
+    exact_.reset(vertices[static_cast<std::size_t>(r.a)], vertices[static_cast<std::size_t>(r.b)]);
+    while (!exact_.done()) exact_.step();
+    if (exact_.verdict() == Verdict::Free) continue;
+    r.alive = false;
+    --edges_alive_;
+    components_.reset(static_cast<int>(vertices.size()));
+    for (const RoadmapEdge& k : roadmap_.edges)
+      if (k.alive) components_.unite(k.a, k.b);
+    e.kind = PrmEvent::Kind::PathEdgeRemoved;
+    e.vertex = r.a;
+    e.other = r.b;
+    e.collision_t = *exact_.collision_t();
+    return;
+  }
+  path_ = path;
+  path_length_ = 0.0;
+  for (int edge : via) path_length_ += roadmap_.edges[static_cast<std::size_t>(edge)].length;
+  e.kind = PrmEvent::Kind::PathFound;
+  e.path_length = path_length_;
+  phase_ = PrmPhase::Done;
+}
+
+std::vector<int> Prm::component_labels() {
+  std::vector<int> label(roadmap_.vertices.size(), -1), by_root(roadmap_.vertices.size(), -1);
+  int next = 0;
+  for (std::size_t v = 0; v < label.size(); ++v) {
+    const auto root = static_cast<std::size_t>(components_.find(static_cast<int>(v)));
+    if (by_root[root] < 0) by_root[root] = next++;
+    label[v] = by_root[root];
+  }
+  return label;
+}
+
+}  // namespace csl

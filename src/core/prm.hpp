@@ -1,0 +1,159 @@
+#pragma once
+// The probabilistic roadmap method as the homework states it (section 2), as a stepper:
+//   1. add q_init and q_final to V;
+//   2. n times: sample q uniformly in Q, add it to V if it is free;
+//   3. for each p in V, for each q != p close to p: add (p, q) to E if the straight line is free;
+//   4. if q_init and q_final are connected, that sequence of edges is the path; else no path.
+// step() does one unit of work and returns what it did: add one endpoint, draw one sample,
+// find one vertex's neighbours, check one candidate edge (with the chosen edge checker, run to
+// its end), or search the graph once. Budgets are counts, never time; nothing runs in threads.
+// Steps are deterministic from (world, start, goal, params), so going back to step k is a
+// replay of k steps from the start and gives the identical state.
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "core/edge_check.hpp"
+#include "core/graph.hpp"
+#include "core/nearest.hpp"
+
+namespace csl {
+
+/// Which vertices are "close": the k nearest, all within a radius, or PRM*'s k(n).
+struct NeighborRule {
+  enum class Kind { Nearest, Radius, PrmStar } kind = Kind::Nearest;
+  int k = 10;
+  double radius = 0.1;
+  /// PRM* (Karaman and Frazzoli 2011): k(n) = ceil(e (1 + 1/d) ln n) for n vertices in d dims.
+  static int prm_star_k(int n, int d);
+  /// "k:10", "radius:0.1" or "prm*"; throws std::invalid_argument.
+  static NeighborRule parse(const std::string& text);
+  std::string name() const;
+};
+
+struct PrmParams {
+  int samples = 200;  ///< n, the number of samples drawn (kept only if free)
+  NeighborRule neighbors;
+  EdgeCheckerSpec checker;  ///< default: exact bisection
+  std::uint64_t seed = 1;
+};
+inline constexpr int kMaxPrmSamples = 1000000;
+
+enum class PrmPhase { Endpoints, Sampling, Connecting, Query, Done };
+const char* phase_name(PrmPhase p);
+
+/// What one step did.
+struct PrmEvent {
+  enum class Kind {
+    AddEndpoint,          ///< vertex (0 = q_init, 1 = q_final) added
+    EndpointInCollision,  ///< q_init or q_final is not free: no path; obstacle = which
+    SampleAccepted,       ///< sample (1..n) q is free: became `vertex`
+    SampleRejected,       ///< sample q is in collision with `obstacle`
+    Neighbors,            ///< `vertex` is being connected: `candidates` new pairs to check
+    EdgeAdded,            ///< (vertex, other) proven free and added to E
+    EdgeRejected,         ///< (vertex, other) in collision at collision_t
+    PathEdgeRemoved,      ///< an edge of the found path failed the exact re-check: removed
+    PathFound,            ///< q_init and q_final connected: path_length
+    NoPath,               ///< not connected: PRM declares no path
+  };
+  Kind kind = Kind::AddEndpoint;
+  long step = 0;      ///< 1-based number of this step
+  int sample = -1;    ///< 1..n for sample events
+  int vertex = -1;
+  int other = -1;
+  Config q;           ///< the sample or endpoint
+  int obstacle = -1;  ///< the obstacle hit (rejected sample, endpoint in collision)
+  int candidates = 0;
+  int evaluations = 0;  ///< configurations the edge check evaluated
+  double collision_t = std::numeric_limits<double>::quiet_NaN();
+  double path_length = 0.0;
+};
+const char* event_kind_name(PrmEvent::Kind k);
+
+struct RoadmapEdge {
+  int a, b;  ///< vertex indices, a < b
+  double length;
+  bool alive = true;  ///< false once removed by the path re-check
+};
+
+struct Roadmap {
+  std::vector<Config> vertices;  ///< V: 0 = q_init, 1 = q_final, then accepted samples in order
+  std::vector<double> clearance; ///< eta per vertex (bisection only; NaN otherwise)
+  std::vector<RoadmapEdge> edges;  ///< E in the order they were added
+};
+
+/// FNV-1a hash of the roadmap: vertex coordinates (bits), then edges (a, b, alive).
+std::uint64_t roadmap_hash(const Roadmap& r);
+
+class Prm {
+ public:
+  /// The world must outlive the planner (it is referenced, not copied).
+  Prm(const CollisionWorld& world, Config start, Config goal, PrmParams params);
+  Prm(CollisionWorld&&, Config, Config, PrmParams) = delete;
+
+  bool done() const { return phase_ == PrmPhase::Done; }
+  /// One step (see the file comment); the event stays valid until the next step.
+  const PrmEvent& step();
+  /// Steps to the end.
+  void run();
+  /// Back to the state before step 1.
+  void reset();
+  /// To the state after `steps` steps (replaying from the start if that is behind us).
+  void run_to(long steps);
+
+  long steps() const { return steps_; }
+  PrmPhase phase() const { return phase_; }
+  const PrmParams& params() const { return params_; }
+  const CollisionWorld& world() const { return *world_; }
+  const Roadmap& roadmap() const { return roadmap_; }
+  const PrmEvent& last_event() const { return event_; }
+
+  bool solved() const { return !path_.empty(); }
+  /// Vertex indices from q_init to q_final (empty unless solved()).
+  const std::vector<int>& path() const { return path_; }
+  double path_length() const { return path_length_; }
+  /// Number of connected components of (V, E).
+  int components() { return components_.sets(); }
+  /// A dense component number per vertex, ordered by each component's smallest vertex.
+  std::vector<int> component_labels();
+  long edge_checks() const { return edge_checks_; }
+  long evaluations() const { return evaluations_; }
+  long edges_alive() const { return edges_alive_; }
+  /// Samples drawn so far (accepted + rejected).
+  int samples_drawn() const { return samples_drawn_; }
+  /// The vertex being connected and its candidate neighbours (Connecting phase).
+  int connecting_vertex() const { return p_; }
+  const std::vector<Neighbor>& candidates() const { return candidates_; }
+
+ private:
+  void begin_connecting();
+  void find_candidates();
+  void check_candidate();
+  void query();
+
+  const CollisionWorld* world_;
+  Config start_, goal_;
+  PrmParams params_;
+  Rng rng_;
+  EdgeChecker checker_;
+  EdgeChecker exact_;  // re-verifies paths
+  NeighborIndex index_;
+  PrmPhase phase_ = PrmPhase::Endpoints;
+  PrmEvent event_;
+  long steps_ = 0;
+  Roadmap roadmap_;
+  UnionFind components_;
+  int samples_drawn_ = 0;
+  int k_ = 0;                     // neighbours per vertex for the k rules
+  std::vector<Neighbor> knn_;     // the k_ nearest of every vertex (flat; index -1 pads short rows)
+  int p_ = -1;                    // vertex being connected
+  std::vector<Neighbor> candidates_;
+  std::size_t next_candidate_ = 0;
+  std::vector<Neighbor> scratch_;
+  std::vector<int> path_;
+  double path_length_ = 0.0;
+  long edge_checks_ = 0, evaluations_ = 0, edges_alive_ = 0;
+};
+
+}  // namespace csl

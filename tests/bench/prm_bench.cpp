@@ -1,0 +1,185 @@
+// Roadmap construction time per milestone: our PRM and OMPL's PRM in the same run.
+//
+//   cspacelab_bench_prm [--quick] [--json]
+//
+// Scenes: the point robot among 20 disks in [0,1]^2, and the 2-link arm on T^2 among 6 disks.
+// Both planners use k = 10 nearest neighbours, the same validity function (our
+// CollisionWorld::is_free) and the same edge-check resolution: OMPL's DiscreteMotionValidator
+// at its default 1% of the space's extent, our step:D checker with that very D (it tests the
+// same configurations along an edge). OMPL's PRM is driven by a milestone-count termination
+// condition, never by time. Reported: microseconds per milestone and the ratio OMPL / ours.
+// Built for wasm (without OMPL) it reports our figures alone, for the wasm/native ratio
+// (tests/bench/compare_wasm.mjs runs both).
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+#include "bench_common.hpp"
+#include "core/prm.hpp"
+
+#ifdef CSPACELAB_WITH_OMPL
+#include <ompl/base/DiscreteMotionValidator.h>
+#include <ompl/base/SpaceInformation.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/base/spaces/SO2StateSpace.h>
+#include <ompl/geometric/planners/prm/PRM.h>
+#include <ompl/util/Console.h>
+#endif
+
+namespace {
+
+struct Result {
+  double seconds = 0;
+  long milestones = 0;
+  long edges = 0;
+  double us_per_milestone() const { return 1e6 * seconds / static_cast<double>(milestones); }
+};
+
+// Our PRM up to the end of the connect phase (the roadmap), as the homework builds it.
+Result ours(const csl::CollisionWorld& world, const csl::Config& start, const csl::Config& goal, int samples,
+            double step, int repeats) {
+  csl::PrmParams p;
+  p.samples = samples;
+  p.neighbors = csl::NeighborRule::parse("k:10");
+  char spec[64];
+  std::snprintf(spec, sizeof spec, "step:%.17g", step);
+  p.checker = csl::EdgeCheckerSpec::parse(spec);
+  p.seed = 1;
+  Result r;
+  r.seconds = bench::best_of(repeats, [&] {
+    csl::Prm prm(world, start, goal, p);
+    while (prm.phase() != csl::PrmPhase::Query && !prm.done()) prm.step();
+    r.milestones = static_cast<long>(prm.roadmap().vertices.size());
+    r.edges = prm.edges_alive();
+  });
+  return r;
+}
+
+#ifdef CSPACELAB_WITH_OMPL
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+
+// OMPL's PRM grown until it has `milestones` milestones.
+Result ompl_prm(const ob::SpaceInformationPtr& si, long milestones, int repeats) {
+  Result r;
+  r.seconds = bench::best_of(repeats, [&] {
+    auto pdef = std::make_shared<ob::ProblemDefinition>(si);
+    ob::ScopedState<> s(si->getStateSpace()), g(si->getStateSpace());
+    si->getStateSpace()->copyState(s.get(), si->allocState());
+    og::PRM prm(si);
+    prm.setMaxNearestNeighbors(10);
+    pdef->setStartAndGoalStates(s, g);  // unused by growRoadmap, required by setup()
+    prm.setProblemDefinition(pdef);
+    prm.setup();
+    prm.growRoadmap(ob::PlannerTerminationCondition(
+        [&] { return static_cast<long>(prm.milestoneCount()) >= milestones; }));
+    r.milestones = static_cast<long>(prm.milestoneCount());
+    r.edges = static_cast<long>(prm.edgeCount());
+  });
+  return r;
+}
+#endif
+
+// The first free configuration a seeded sampler finds.
+csl::Config first_free(const csl::CollisionWorld& world, std::uint64_t seed) {
+  csl::Rng rng(seed);
+  for (;;) {
+    const csl::Config q = world.space().sample(rng);
+    if (world.is_free(q)) return q;
+  }
+}
+
+struct Row {
+  std::string scene;
+  int samples;
+  Result ours, ompl;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const bool quick = bench::quick(argc, argv);
+  bool as_json = false;
+  for (int i = 1; i < argc; ++i) as_json = as_json || std::strcmp(argv[i], "--json") == 0;
+  const std::vector<int> sizes = quick ? std::vector<int>{300} : std::vector<int>{1000, 5000, 20000};
+  const int repeats = quick ? 1 : 3;
+#ifdef CSPACELAB_WITH_OMPL
+  ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+#endif
+
+  const csl::CollisionWorld disks(csl::PointRobot{}, bench::random_disks(7, 20), {0, 0}, {1, 1});
+  std::vector<csl::Obstacle> arm_obstacles = bench::random_disks(11, 6, 0.03, 0.06);
+  const csl::CollisionWorld arm(csl::ArmRobot{{0.5, 0.5}, 0.3, 0.2}, arm_obstacles, {0, 0}, {1, 1});
+  // A free start and goal for each (they only seed our roadmap; OMPL's grows on its own).
+  const csl::Config point_start = first_free(disks, 1), point_goal = first_free(disks, 2);
+  const csl::Config arm_start = first_free(arm, 1), arm_goal = first_free(arm, 2);
+
+  std::vector<Row> rows;
+  for (int n : sizes) {
+    Row row{"point, 20 disks, R^2", n, {}, {}};
+    double step = 0.01 * std::sqrt(2.0);
+#ifdef CSPACELAB_WITH_OMPL
+    auto space = std::make_shared<ob::RealVectorStateSpace>(2);
+    space->setBounds(0.0, 1.0);
+    auto si = std::make_shared<ob::SpaceInformation>(space);
+    si->setStateValidityChecker([&](const ob::State* s) {
+      const auto* v = s->as<ob::RealVectorStateSpace::StateType>();
+      return disks.is_free(csl::config({v->values[0], v->values[1]}));
+    });
+    si->setup();
+    step = si->getStateValidityCheckingResolution() * space->getMaximumExtent();
+#endif
+    row.ours = ours(disks, point_start, point_goal, n, step, repeats);
+#ifdef CSPACELAB_WITH_OMPL
+    row.ompl = ompl_prm(si, row.ours.milestones, repeats);
+#endif
+    rows.push_back(row);
+  }
+  for (int n : sizes) {
+    Row row{"2-link arm, 6 disks, T^2", n, {}, {}};
+    double step = 0.01 * std::sqrt(2.0) * csl::kPi;  // OMPL: 1% of SO(2) x SO(2)'s extent, sqrt(2) pi
+#ifdef CSPACELAB_WITH_OMPL
+    auto space = std::make_shared<ob::CompoundStateSpace>();
+    space->addSubspace(std::make_shared<ob::SO2StateSpace>(), 1.0);
+    space->addSubspace(std::make_shared<ob::SO2StateSpace>(), 1.0);
+    auto si = std::make_shared<ob::SpaceInformation>(space);
+    si->setStateValidityChecker([&](const ob::State* s) {
+      const auto* c = s->as<ob::CompoundStateSpace::StateType>();
+      return arm.is_free(csl::config({c->as<ob::SO2StateSpace::StateType>(0)->value,
+                                      c->as<ob::SO2StateSpace::StateType>(1)->value}));
+    });
+    si->setup();
+    step = si->getStateValidityCheckingResolution() * space->getMaximumExtent();
+#endif
+    row.ours = ours(arm, arm_start, arm_goal, n, step, repeats);
+#ifdef CSPACELAB_WITH_OMPL
+    row.ompl = ompl_prm(si, row.ours.milestones, repeats);
+#endif
+    rows.push_back(row);
+  }
+
+  if (as_json) {
+    std::printf("[");
+    for (std::size_t i = 0; i < rows.size(); ++i)
+      std::printf("%s{\"scene\": \"%s\", \"samples\": %d, \"milestones\": %ld, \"ours_us\": %.4f, \"ompl_us\": %s}",
+                  i ? ", " : "", rows[i].scene.c_str(), rows[i].samples, rows[i].ours.milestones,
+                  rows[i].ours.us_per_milestone(),
+                  rows[i].ompl.milestones ? std::to_string(rows[i].ompl.us_per_milestone()).c_str() : "null");
+    std::printf("]\n");
+    return 0;
+  }
+  std::printf("Roadmap construction, k = 10, matching edge-check resolution, best of %d\n", repeats);
+  std::printf("%-26s %7s %10s %11s %11s %10s %10s %7s\n", "scene", "samples", "milestones", "ours us/ms",
+              "OMPL us/ms", "ours edges", "OMPL edges", "ratio");
+  for (const Row& r : rows) {
+    std::printf("%-26s %7d %10ld %11.3f ", r.scene.c_str(), r.samples, r.ours.milestones, r.ours.us_per_milestone());
+    if (r.ompl.milestones)
+      std::printf("%11.3f %10ld %10ld %6.1fx\n", r.ompl.us_per_milestone(), r.ours.edges, r.ompl.edges,
+                  r.ompl.us_per_milestone() / r.ours.us_per_milestone());
+    else
+      std::printf("%11s %10ld %10s %7s\n", "-", r.ours.edges, "-", "-");
+  }
+  std::printf("(us/ms: microseconds per milestone; ratio: OMPL's time per milestone / ours)\n");
+  return 0;
+}

@@ -1,0 +1,105 @@
+// cspacelab plan, bound, visibility and experiment: their contracts, determinism, bad input.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { json, fails, scene, tempScene } from './lib/cli.mjs';
+
+const GAP = scene('wall-gap.json');
+
+test('plan finds a path through the gap, with every field of the contract', () => {
+  const r = json('plan', GAP, '--samples', '300', '--k', '10', '--seed', '3');
+  for (const k of ['solved', 'path', 'path_length', 'nodes', 'edges', 'components', 'edge_checks', 'evaluations',
+                   'build_seconds', 'query_seconds'])
+    assert.ok(k in r, k);
+  assert.equal(r.solved, true);
+  assert.deepEqual(r.path[0], [0.15, 0.8]);
+  assert.deepEqual(r.path.at(-1), [0.85, 0.2]);
+  // The path crosses x = 1/2 inside the opening.
+  for (let i = 0; i + 1 < r.path.length; ++i) {
+    const [a, b] = [r.path[i], r.path[i + 1]];
+    if ((a[0] - 0.5) * (b[0] - 0.5) < 0) {
+      const y = a[1] + (b[1] - a[1]) * (0.5 - a[0]) / (b[0] - a[0]);
+      assert.ok(y > 0.45 && y < 0.55, `crosses the wall at y = ${y}`);
+    }
+  }
+  let length = 0;
+  for (let i = 0; i + 1 < r.path.length; ++i) length += Math.hypot(r.path[i + 1][0] - r.path[i][0], r.path[i + 1][1] - r.path[i][1]);
+  assert.ok(Math.abs(length - r.path_length) < 1e-12);
+  assert.ok(r.nodes <= 302 && r.edges > 0 && r.components >= 1);
+});
+
+test('plan is deterministic: the same seed gives the same roadmap, another seed another', () => {
+  const a = json('plan', GAP, '--samples', '200', '--seed', '5', '--roadmap');
+  const b = json('plan', GAP, '--samples', '200', '--seed', '5', '--roadmap');
+  const c = json('plan', GAP, '--samples', '200', '--seed', '6');
+  assert.equal(a.roadmap_hash, b.roadmap_hash);
+  assert.deepEqual(a.vertices, b.vertices);
+  assert.deepEqual(a.edge_list, b.edge_list);
+  assert.notEqual(a.roadmap_hash, c.roadmap_hash);
+  assert.equal(a.edge_list.length, a.edges);
+  assert.equal(a.vertices.length, a.nodes);
+});
+
+test('plan with each neighbour rule and checker', () => {
+  for (const opts of [['--radius', '0.15'], ['--prm-star'], ['--checker', 'grid:20'], ['--checker', 'step:0.01']]) {
+    const r = json('plan', GAP, '--samples', '300', ...opts);
+    assert.equal(r.solved, true, opts.join(' '));
+  }
+  assert.equal(json('plan', GAP, '--prm-star').neighbors, 'prm*');
+});
+
+test('a closed wall: no path', () => {
+  const closed = tempScene({ version: 1, obstacles: [{ type: 'segment', a: [0.5, 0], b: [0.5, 1] }],
+                             start: [0.2, 0.5], goal: [0.8, 0.5] });
+  const r = json('plan', closed, '--samples', '200');
+  assert.equal(r.solved, false);
+  assert.deepEqual(r.path, []);
+  assert.equal(r.path_length, null);
+});
+
+test('bound and bound --tiling', () => {
+  const b = json('bound', '--length', '1', '--clearance', '0.1', '--dim', '2', '--free-volume', '0.9', '--samples', '1000');
+  assert.equal(b.balls, 20);
+  assert.ok(Math.abs(b.sigma - Math.PI / 3.6) < 1e-15);
+  assert.ok(Math.abs(b.failure_bound - 20 * Math.exp(-Math.PI / 3.6 * 10)) < 1e-15);
+  assert.equal(b.vacuous, false);
+  assert.equal(json('bound', '--length', '1', '--clearance', '0.1', '--dim', '2', '--free-volume', '1', '--samples', '5').vacuous, true);
+  const t = json('bound', '--tiling', '--clearance', '0.1', '--dim', '3', '--samples', '1000');
+  assert.equal(t.balls, 8000);
+  assert.ok(Math.abs(t.sigma - 4 / 3 * Math.PI / 8) < 1e-15);
+});
+
+test('visibility: exact and Monte Carlo agree', () => {
+  const v = json('visibility', '--x', '0.3', '--y', '0.2', '--gap', '0.1', '--trials', '200000', '--seed', '4');
+  assert.ok(v.exact > 0.5 && v.exact < 1);
+  assert.ok(Math.abs(v.exact - v.monte_carlo) < 0.006);
+  assert.equal(v.trials, 200000);
+  assert.equal(json('visibility', '--x', '0.1', '--y', '0.5', '--gap', '0').exact, 0.5);
+});
+
+test('experiment: rows with failure rates, intervals and the bound', () => {
+  const r = json('experiment', GAP, '--samples-list', '10,300', '--trials', '12', '--seed', '2', '--k', '5');
+  assert.equal(r.reference.path_exists, true);
+  assert.equal(r.rows.length, 2);
+  for (const row of r.rows) {
+    assert.equal(row.trials, 12);
+    assert.ok(row.ci_low <= row.failure_rate && row.failure_rate <= row.ci_high);
+    assert.equal(typeof row.bound, 'number');
+  }
+  assert.ok(r.rows[0].failures >= r.rows[1].failures);
+});
+
+test('bad input for plan, bound, visibility, experiment', () => {
+  const inside = tempScene({ version: 1, obstacles: [{ type: 'disk', center: [0, 0], radius: 0.2 }] });
+  fails(/the start is in collision with obstacles\[0\] \(a disk\)/, 'plan', inside);
+  fails(/--samples: '1e9' is not an integer/, 'plan', GAP, '--samples', '1e9');
+  fails(/--samples: '2000000' is not an integer in \[0, 1000000\]/, 'plan', GAP, '--samples', '2000000');
+  fails(/choose one neighbour rule/, 'plan', GAP, '--k', '5', '--prm-star');
+  fails(/--k: k must be an integer/, 'plan', GAP, '--k', '0');
+  fails(/--radius: the radius must be > 0/, 'plan', GAP, '--radius', '-1');
+  fails(/clearance must be a finite number > 0/, 'bound', '--length', '1', '--clearance', '0', '--dim', '2', '--free-volume', '1', '--samples', '10');
+  fails(/missing --free-volume/, 'bound', '--length', '1', '--clearance', '0.1', '--dim', '2', '--samples', '10');
+  fails(/x1 must be in \[0, 1\/2\)/, 'visibility', '--x', '0.7', '--y', '0.5', '--gap', '0.1');
+  fails(/--gap: 'nan' is not a finite number/, 'visibility', '--x', '0.2', '--y', '0.5', '--gap', 'nan');
+  fails(/missing --samples-list/, 'experiment', GAP);
+  fails(/--trials: at least 1/, 'experiment', GAP, '--samples-list', '10', '--trials', '0');
+});

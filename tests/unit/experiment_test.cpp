@@ -1,0 +1,80 @@
+// Experiments: PRM's measured failure rate falls with n, stays under the bound of section 2.1,
+// and the runner is reproducible and reports its progress step by step.
+#include <doctest/doctest.h>
+
+#include "core/experiment.hpp"
+
+using csl::config;
+
+namespace {
+csl::CollisionWorld narrow_gap() {
+  return csl::CollisionWorld(csl::PointRobot{},
+                             {csl::Wall{{0.5, 0.0}, {0.5, 0.48}}, csl::Wall{{0.5, 0.52}, {0.5, 1.0}}}, {0, 0}, {1, 1});
+}
+csl::ExperimentParams params(std::vector<int> ns, int trials) {
+  csl::ExperimentParams p;
+  p.sample_counts = std::move(ns);
+  p.trials = trials;
+  p.seed = 11;
+  p.neighbors = csl::NeighborRule::parse("k:5");
+  p.volume_samples = 20000;
+  return p;
+}
+}  // namespace
+
+TEST_CASE("the failure rate falls with n and respects the bound") {
+  const auto world = narrow_gap();
+  csl::Experiment ex(world, config({0.15, 0.85}), config({0.85, 0.75}), params({15, 150, 1500}, 40));
+  CHECK(ex.progress() == 0.0);
+  ex.step();  // the reference run
+  const auto& ref = ex.reference();
+  REQUIRE(ref.path_exists);
+  CHECK(ref.dimension == 2);
+  CHECK(ref.free_fraction == doctest::Approx(1.0).epsilon(0.01));  // walls have no area
+  CHECK(ref.path_length >= 0.6);
+  // The path must squeeze through the 0.04 gap: its clearance is at most 0.02.
+  CHECK(ref.clearance > 0.0);
+  CHECK(ref.clearance <= 0.02);
+  ex.run();
+  CHECK(ex.progress() == 1.0);
+  const auto& rows = ex.rows();
+  REQUIRE(rows.size() == 3);
+  for (const auto& row : rows) {
+    CHECK(row.trials == 40);
+    REQUIRE(row.has_bound);
+    // The bound holds for the true failure probability; the measured rate's interval must
+    // reach below it (or the bound says nothing at all).
+    CHECK((row.bound.vacuous || row.failure_rate.low <= row.bound.bound));
+    MESSAGE("n = " << row.samples << ": " << row.failures << "/" << row.trials << " failures, bound "
+                   << row.bound.bound);
+  }
+  CHECK(rows[0].failures > rows[2].failures);
+  CHECK(rows[0].failures > 0);
+  CHECK(rows[2].failure_rate.estimate < 0.2);
+}
+
+TEST_CASE("experiments are reproducible from their seed") {
+  const auto world = narrow_gap();
+  csl::Experiment a(world, config({0.15, 0.85}), config({0.85, 0.75}), params({30}, 15));
+  csl::Experiment b(world, config({0.15, 0.85}), config({0.85, 0.75}), params({30}, 15));
+  a.run();
+  b.run();
+  CHECK(a.rows()[0].failures == b.rows()[0].failures);
+  CHECK(a.reference().path_length == b.reference().path_length);
+}
+
+TEST_CASE("no path: the reference says so and no bound is given") {
+  const csl::CollisionWorld closed(csl::PointRobot{}, {csl::Wall{{0.5, 0.0}, {0.5, 1.0}}}, {0, 0}, {1, 1});
+  csl::Experiment ex(closed, config({0.15, 0.85}), config({0.85, 0.75}), params({20}, 3));
+  ex.run();
+  CHECK_FALSE(ex.reference().path_exists);
+  CHECK_FALSE(ex.rows()[0].has_bound);
+  CHECK(ex.rows()[0].failures == 3);
+}
+
+TEST_CASE("bad experiment parameters are refused") {
+  const auto world = narrow_gap();
+  CHECK_THROWS_AS(csl::Experiment(world, config({0.15, 0.85}), config({0.85, 0.75}), params({}, 3)), std::invalid_argument);
+  CHECK_THROWS_AS(csl::Experiment(world, config({0.15, 0.85}), config({0.85, 0.75}), params({-5}, 3)), std::invalid_argument);
+  CHECK_THROWS_AS(csl::Experiment(world, config({0.15, 0.85}), config({0.85, 0.75}), params({5}, 0)), std::invalid_argument);
+}

@@ -1,0 +1,227 @@
+// PRM: the homework's algorithm step by step, its neighbour rules, its graph, replay to any
+// step, and the same roadmap in every build (the pinned hash runs natively and in wasm).
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "core/angles.hpp"
+#include "core/prm.hpp"
+
+using csl::config;
+using csl::Prm;
+using csl::PrmEvent;
+using csl::PrmParams;
+
+namespace {
+// P9's square: a wall at x = 1/2 with an opening of height 0.2 in the middle.
+csl::CollisionWorld wall_with_gap() {
+  return csl::CollisionWorld(csl::PointRobot{},
+                             {csl::Wall{{0.5, 0.0}, {0.5, 0.4}}, csl::Wall{{0.5, 0.6}, {0.5, 1.0}}}, {0, 0}, {1, 1});
+}
+
+PrmParams params(int n, const char* rule = "k:10", const char* checker = "bisection", std::uint64_t seed = 7) {
+  PrmParams p;
+  p.samples = n;
+  p.neighbors = csl::NeighborRule::parse(rule);
+  p.checker = csl::EdgeCheckerSpec::parse(checker);
+  p.seed = seed;
+  return p;
+}
+
+// Every edge of a found path is free by the exact check, and the path joins start to goal.
+void require_valid_path(const Prm& prm) {
+  REQUIRE(prm.solved());
+  const auto& v = prm.roadmap().vertices;
+  REQUIRE(prm.path().front() == 0);
+  REQUIRE(prm.path().back() == 1);
+  double length = 0;
+  for (std::size_t i = 0; i + 1 < prm.path().size(); ++i) {
+    const auto& a = v[static_cast<std::size_t>(prm.path()[i])];
+    const auto& b = v[static_cast<std::size_t>(prm.path()[i + 1])];
+    REQUIRE_FALSE(csl::check_edge(prm.world(), csl::EdgeCheckerSpec::parse("bisection"), a, b).collision);
+    length += prm.world().space().distance(a, b);
+  }
+  CHECK(prm.path_length() == doctest::Approx(length));
+}
+}  // namespace
+
+TEST_CASE("the steps follow the homework's order") {
+  const auto world = wall_with_gap();
+  Prm prm(world, config({0.1, 0.5}), config({0.9, 0.5}), params(50));
+  CHECK(prm.step().kind == PrmEvent::Kind::AddEndpoint);
+  CHECK(prm.roadmap().vertices.size() == 1);
+  CHECK(prm.step().kind == PrmEvent::Kind::AddEndpoint);
+  int accepted = 0, rejected = 0;
+  for (int i = 1; i <= 50; ++i) {
+    const PrmEvent& e = prm.step();
+    REQUIRE(e.sample == i);
+    REQUIRE((e.kind == PrmEvent::Kind::SampleAccepted || e.kind == PrmEvent::Kind::SampleRejected));
+    (e.kind == PrmEvent::Kind::SampleAccepted ? accepted : rejected)++;
+  }
+  CHECK(prm.roadmap().vertices.size() == static_cast<std::size_t>(2 + accepted));
+  CHECK(prm.phase() == csl::PrmPhase::Connecting);
+  const PrmEvent& first = prm.step();
+  CHECK(first.kind == PrmEvent::Kind::Neighbors);
+  CHECK(first.vertex == 0);
+  prm.run();
+  CHECK(prm.done());
+  CHECK((prm.last_event().kind == PrmEvent::Kind::PathFound || prm.last_event().kind == PrmEvent::Kind::NoPath));
+}
+
+TEST_CASE("PRM finds a path through the gap, and every edge it reports is free") {
+  const auto world = wall_with_gap();
+  Prm prm(world, config({0.1, 0.5}), config({0.9, 0.5}), params(400));
+  prm.run();
+  require_valid_path(prm);
+  // The path must pass through the opening: some path vertex on each side.
+  for (const auto& e : prm.roadmap().edges) {
+    if (!e.alive) continue;
+    const auto& a = prm.roadmap().vertices[static_cast<std::size_t>(e.a)];
+    const auto& b = prm.roadmap().vertices[static_cast<std::size_t>(e.b)];
+    REQUIRE_FALSE(csl::check_edge(world, csl::EdgeCheckerSpec::parse("bisection"), a, b).collision);
+  }
+}
+
+TEST_CASE("no samples: only the straight line from start to goal is tried") {
+  const csl::CollisionWorld empty(csl::PointRobot{}, {}, {0, 0}, {1, 1});
+  Prm prm(empty, config({0.1, 0.1}), config({0.9, 0.5}), params(0));
+  prm.run();
+  require_valid_path(prm);
+  CHECK(prm.path() == std::vector<int>{0, 1});
+  CHECK(prm.edge_checks() == 1);
+  const auto walls = wall_with_gap();
+  Prm blocked(walls, config({0.1, 0.1}), config({0.9, 0.1}), params(0));
+  blocked.run();
+  CHECK_FALSE(blocked.solved());
+  CHECK(blocked.last_event().kind == PrmEvent::Kind::NoPath);
+}
+
+TEST_CASE("a closed wall: PRM declares that no path exists") {
+  const csl::CollisionWorld world(csl::PointRobot{}, {csl::Wall{{0.5, 0.0}, {0.5, 1.0}}}, {0, 0}, {1, 1});
+  Prm prm(world, config({0.1, 0.5}), config({0.9, 0.5}), params(300));
+  prm.run();
+  CHECK_FALSE(prm.solved());
+  CHECK(prm.components() >= 2);
+  const auto labels = prm.component_labels();
+  CHECK(labels[0] != labels[1]);
+}
+
+TEST_CASE("an endpoint in collision ends the run at once") {
+  const csl::CollisionWorld world(csl::PointRobot{}, {csl::Disk{{0.5, 0.5}, 0.2}}, {0, 0}, {1, 1});
+  Prm prm(world, config({0.1, 0.1}), config({0.5, 0.5}), params(100));
+  prm.step();
+  const PrmEvent& e = prm.step();
+  CHECK(e.kind == PrmEvent::Kind::EndpointInCollision);
+  CHECK(e.obstacle == 0);
+  CHECK(prm.done());
+  CHECK_FALSE(prm.solved());
+}
+
+TEST_CASE("each close pair is checked once, and only close pairs") {
+  const csl::CollisionWorld world(csl::PointRobot{}, {csl::Disk{{0.5, 0.5}, 0.15}}, {0, 0}, {1, 1});
+  for (const char* rule : {"k:6", "radius:0.12", "prm*"}) {
+    Prm prm(world, config({0.05, 0.05}), config({0.95, 0.95}), params(300, rule));
+    std::set<std::pair<int, int>> checked;
+    while (!prm.done()) {
+      const PrmEvent& e = prm.step();
+      if (e.kind == PrmEvent::Kind::EdgeAdded || e.kind == PrmEvent::Kind::EdgeRejected)
+        REQUIRE(checked.insert({std::min(e.vertex, e.other), std::max(e.vertex, e.other)}).second);
+    }
+    // The expected pairs, by brute force.
+    const auto& v = prm.roadmap().vertices;
+    const auto n = static_cast<int>(v.size());
+    const auto rule_parsed = csl::NeighborRule::parse(rule);
+    std::set<std::pair<int, int>> expected;
+    for (int p = 0; p < n; ++p) {
+      if (rule_parsed.kind == csl::NeighborRule::Kind::Radius) {
+        for (int q = 0; q < n; ++q)
+          if (q != p && world.space().distance(v[static_cast<std::size_t>(p)], v[static_cast<std::size_t>(q)]) <= 0.12)
+            expected.insert({std::min(p, q), std::max(p, q)});
+      } else {
+        const int k = rule_parsed.kind == csl::NeighborRule::Kind::PrmStar ? csl::NeighborRule::prm_star_k(n, 2) : 6;
+        for (const auto& nb : csl::brute_force_k_nearest(world.space(), v, v[static_cast<std::size_t>(p)], k, p))
+          expected.insert({std::min(p, nb.index), std::max(p, nb.index)});
+      }
+    }
+    CHECK(checked == expected);
+    CHECK(prm.edge_checks() == static_cast<long>(expected.size()));
+  }
+}
+
+TEST_CASE("PRM*'s k(n) = ceil(e (1 + 1/d) ln n)") {
+  CHECK(csl::NeighborRule::prm_star_k(20000, 2) == 41);
+  CHECK(csl::NeighborRule::prm_star_k(1000, 3) == 26);
+  CHECK(csl::NeighborRule::parse("k:7").k == 7);
+  CHECK(csl::NeighborRule::parse("radius:0.25").name() == "radius:0.25");
+  CHECK_THROWS_AS(csl::NeighborRule::parse("k:0"), std::invalid_argument);
+  CHECK_THROWS_AS(csl::NeighborRule::parse("k:2.5"), std::invalid_argument);
+  CHECK_THROWS_AS(csl::NeighborRule::parse("radius:-1"), std::invalid_argument);
+  CHECK_THROWS_AS(csl::NeighborRule::parse("nearest"), std::invalid_argument);
+}
+
+TEST_CASE("going back to step k gives the identical state") {
+  const auto world = wall_with_gap();
+  Prm prm(world, config({0.1, 0.5}), config({0.9, 0.5}), params(200));
+  std::vector<std::uint64_t> hash_at;
+  std::vector<long> edges_at;
+  while (!prm.done()) {
+    prm.step();
+    hash_at.push_back(csl::roadmap_hash(prm.roadmap()));
+    edges_at.push_back(prm.edges_alive());
+  }
+  for (long k : {1L, 2L, 57L, 203L, 250L, static_cast<long>(hash_at.size()) - 1, static_cast<long>(hash_at.size())}) {
+    prm.run_to(k);
+    REQUIRE(prm.steps() == k);
+    REQUIRE(csl::roadmap_hash(prm.roadmap()) == hash_at[static_cast<std::size_t>(k - 1)]);
+    REQUIRE(prm.edges_alive() == edges_at[static_cast<std::size_t>(k - 1)]);
+  }
+}
+
+TEST_CASE("the same inputs give the same roadmap in every build (pinned hash)") {
+  const csl::CollisionWorld world(csl::PointRobot{},
+                                  {csl::Disk{{0.3, 0.3}, 0.1}, csl::Disk{{0.7, 0.6}, 0.15},
+                                   csl::PolygonObstacle{{{0.4, 0.7}, {0.5, 0.9}, {0.3, 0.85}}}, csl::Wall{{0.6, 0.0}, {0.6, 0.3}}},
+                                  {0, 0}, {1, 1});
+  Prm prm(world, config({0.05, 0.05}), config({0.95, 0.95}), params(500, "k:10", "bisection", 42));
+  prm.run();
+  require_valid_path(prm);
+  CHECK(prm.roadmap().vertices.size() == 446);
+  CHECK(prm.edges_alive() == 2549);
+  CHECK(csl::roadmap_hash(prm.roadmap()) == 6501816432234514842ull);
+
+  // The arm on its torus, whose kinematics use the lab's own sine and cosine.
+  const csl::CollisionWorld arm(csl::ArmRobot{{0.5, 0.5}, 0.3, 0.2}, {csl::Disk{{0.8, 0.8}, 0.1}, csl::Disk{{0.2, 0.4}, 0.08}},
+                                {0, 0}, {1, 1});
+  Prm on_torus(arm, config({0.0, 0.0}), config({3.0, -1.0}), params(400, "k:8", "bisection", 3));
+  on_torus.run();
+  require_valid_path(on_torus);
+  CHECK(csl::roadmap_hash(on_torus.roadmap()) == 10815498988223929989ull);
+}
+
+TEST_CASE("on the torus, edges cross the seams") {
+  const csl::CollisionWorld arm(csl::ArmRobot{{0.5, 0.5}, 0.3, 0.2}, {csl::Disk{{0.85, 0.5}, 0.08}}, {0, 0}, {1, 1});
+  Prm prm(arm, config({2.5, 0.0}), config({-2.5, 0.0}), params(300, "k:10"));
+  prm.run();
+  require_valid_path(prm);
+  int across = 0;
+  for (const auto& e : prm.roadmap().edges) {
+    const auto& a = prm.roadmap().vertices[static_cast<std::size_t>(e.a)];
+    const auto& b = prm.roadmap().vertices[static_cast<std::size_t>(e.b)];
+    across += std::fabs(a[0] - b[0]) > csl::kPi || std::fabs(a[1] - b[1]) > csl::kPi;
+  }
+  CHECK(across > 10);
+  // From 2.5 to -2.5 the short way is through pi, 1.28 rad, not 5 rad through 0 (where the disk is).
+  CHECK(prm.path_length() < 2.0);
+}
+
+TEST_CASE("edges a coarse grid let through a wall are caught when the path is re-checked") {
+  const csl::CollisionWorld world(csl::PointRobot{}, {csl::Wall{{0.5, 0.0}, {0.5, 1.0}}}, {0, 0}, {1, 1});
+  // grid:2 tests only the endpoints: every edge across the wall gets in.
+  Prm prm(world, config({0.1, 0.5}), config({0.9, 0.5}), params(100, "k:10", "grid:2"));
+  int removed = 0;
+  while (!prm.done()) removed += prm.step().kind == PrmEvent::Kind::PathEdgeRemoved;
+  CHECK(removed > 0);
+  CHECK_FALSE(prm.solved());  // the wall is closed: once the bad edges are gone, no path is left
+}
