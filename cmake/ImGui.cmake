@@ -11,7 +11,9 @@ add_library(cspacelab_imgui STATIC
   "${_imgui_dir}/imgui_widgets.cpp"
   "${_imgui_dir}/backends/imgui_impl_sdl.cpp" "${_imgui_dir}/backends/imgui_impl_opengl3.cpp")
 target_include_directories(cspacelab_imgui SYSTEM PUBLIC "${_imgui_dir}" "${_imgui_dir}/backends")
-target_compile_definitions(cspacelab_imgui PUBLIC IMGUI_DISABLE_OBSOLETE_FUNCTIONS)
+# 32-bit indices: a 5000-node roadmap is well over 65536 vertices, and one mesh is simpler to
+# cache than several (WebGL2 and desktop GL both draw with 32-bit indices).
+target_compile_definitions(cspacelab_imgui PUBLIC IMGUI_DISABLE_OBSOLETE_FUNCTIONS "ImDrawIdx=unsigned int")
 
 if(EMSCRIPTEN)
   # SDL2 built from Debian's source with its own CMake by scripts/setup.sh (-sUSE_SDL=2 would

@@ -28,11 +28,26 @@ class CSpaceLabApi {
 
   /** The commands the app offers, with one line of help each. */
   help() { return this.call('help'); }
+  /** Frames drawn, frame times, version, pixel ratio, current lesson, current notice. */
   status() { return this.call('status'); }
+  lessons() { return this.call('lessons'); }
+  selectLesson(id) { return this.call('select_lesson', { id }); }
+  /** The current lesson's state; state({roadmap: true}) adds a PRM lesson's vertices and edges. */
+  state(args = {}) { return this.call('state', args); }
+  setParams(params) { return this.call('set_params', { params }); }
+  step(count = 1) { return this.call('step', { count }); }
+  stepBack(count = 1) { return this.call('step_back', { count }); }
+  runTo(steps) { return this.call('run_to', { steps }); }
+  run() { return this.call('run'); }
+  finishPhase() { return this.call('finish_phase'); }
+  reset() { return this.call('reset'); }
   getScene() { return this.call('get_scene'); }
   setScene(scene) { return this.call('set_scene', { scene }); }
-  /** Canvas-relative CSS pixel positions of world points: view([[x, y], ...]).points */
-  view(points = []) { return this.call('view', { points }); }
+  undo() { return this.call('undo'); }
+  redo() { return this.call('redo'); }
+  log() { return this.call('log'); }
+  /** Canvas-relative CSS pixel positions of world points in a view ('workspace' or 'cspace'). */
+  view(points = [], view = 'workspace') { return this.call('view', { points, view }); }
 }
 
 if (typeof window !== 'undefined') window.CSpaceLabApi = CSpaceLabApi;

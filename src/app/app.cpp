@@ -15,143 +15,233 @@ namespace csl::app {
 using json = nlohmann::json;
 
 namespace {
-// A drag shorter than this (logical pixels) is a click, not a disk.
-constexpr float kMinDragPixels = 3.0f;
-
 json vec_json(ImVec2 v) { return json::array({v.x, v.y}); }
+
+long count_arg(const json& args, const char* key, long fallback, long max) {
+  if (!args.contains(key)) return fallback;
+  const json& v = args[key];
+  if (!v.is_number_integer() || v.get<long long>() < 0 || v.get<long long>() > max)
+    throw ApiError(std::string(key) + ": an integer in [0, " + std::to_string(max) + "]");
+  return v.get<long>();
+}
 }  // namespace
 
 App::App(const Platform& platform) : platform_(platform) {
   theme::apply_style();
   register_api();
+  select_lesson(lessons().front().id);
+}
+
+bool App::select_lesson(const std::string& id) {
+  const LessonInfo* info = find_lesson(id);
+  if (!info) return false;
+  auto& slot = instances_[id];
+  if (!slot) slot = info->create();
+  lesson_ = slot.get();
+  lesson_id_ = id;
+  ctx_.playback.playing = false;
+  ctx_.views.clear();
+  ctx_.log.clear();
+  return true;
 }
 
 void App::register_api() {
   JsApi& api = js_api();
-  api.add("status", "frames drawn, version, pixel ratio", [this](const json&) {
+  api.add("status", "frames drawn, frame times, version, pixel ratio, lesson", [this](const json&) {
+    const FrameStats& f = platform_.frame_stats();
     return json{{"frames", platform_.frame_count()},
                 {"version", kVersion},
                 {"pixel_ratio", platform_.pixel_ratio()},
-                {"obstacles", scene_.obstacles.size()}};
+                {"lesson", lesson_id_},
+                {"frame_ms", {{"mean", f.mean_interval_ms}, {"p95", f.p95_interval_ms}, {"max", f.max_interval_ms}}},
+                {"cpu_ms", {{"mean", f.mean_cpu_ms}, {"p95", f.p95_cpu_ms}, {"max", f.max_cpu_ms}}},
+                {"ui_ms", {{"mean", f.mean_ui_ms}, {"p95", f.p95_ui_ms}, {"max", f.max_ui_ms}}},
+                {"vertices", f.vertices},
+                {"notice", ImGui::GetTime() < ctx_.notice_until ? ctx_.notice : ""}};
   });
-  api.add("get_scene", "the current scene (schema version 1)",
-          [this](const json&) { return scene_to_json(scene_); });
-  api.add("set_scene", "replace the scene: {scene: {...}}; refused with a message if invalid",
+  api.add("lessons", "the lessons: [{id, name, category}]", [](const json&) {
+    json out = json::array();
+    for (const LessonInfo& l : lessons()) out.push_back({{"id", l.id}, {"name", l.name}, {"category", l.category}});
+    return out;
+  });
+  api.add("select_lesson", "switch lesson: {id}", [this](const json& args) {
+    const std::string id = args.value("id", "");
+    if (!select_lesson(id)) throw ApiError("no lesson \"" + id + "\"");
+    return json(lesson_id_);
+  });
+  api.add("state", "the lesson's state ({roadmap: true} adds the roadmap)",
+          [this](const json& args) { return lesson_->state(args); });
+  api.add("set_params", "the lesson's parameters: {params: {...}}", [this](const json& args) {
+    lesson_->set_params(args.value("params", json::object()));
+    return lesson_->state(json::object());
+  });
+  api.add("step", "forward {count} steps (default 1)", [this](const json& args) {
+    const long n = count_arg(args, "count", 1, 10000000);
+    for (long i = 0; i < n && !lesson_->finished(); ++i) lesson_->step_forward();
+    return json(lesson_->steps());
+  });
+  api.add("step_back", "back {count} steps (default 1)", [this](const json& args) {
+    lesson_->run_to(std::max(0L, lesson_->steps() - count_arg(args, "count", 1, 10000000)));
+    return json(lesson_->steps());
+  });
+  api.add("run_to", "to step {steps}", [this](const json& args) {
+    lesson_->run_to(count_arg(args, "steps", 0, 100000000));
+    return json(lesson_->steps());
+  });
+  api.add("run", "to the end", [this](const json&) {
+    lesson_->run_all();
+    return json(lesson_->steps());
+  });
+  api.add("finish_phase", "to the end of the current phase", [this](const json&) {
+    lesson_->finish_phase();
+    return json(lesson_->steps());
+  });
+  api.add("reset", "back to step 0", [this](const json&) {
+    lesson_->reset();
+    return json(lesson_->steps());
+  });
+  api.add("get_scene", "the lesson's scene (schema version 1)", [this](const json&) {
+    if (!lesson_->scene()) throw ApiError("this lesson has no scene");
+    return scene_to_json(*lesson_->scene());
+  });
+  api.add("set_scene", "replace the lesson's scene: {scene}; refused with a message if invalid", [this](const json& args) {
+    if (!args.contains("scene")) throw ApiError("args.scene is missing");
+    const Scene s = scene_from_json(args["scene"]);  // throws before anything changes
+    std::string why;
+    if (!lesson_->accept_scene(s, why)) throw ApiError(why);
+    return scene_to_json(*lesson_->scene());
+  });
+  api.add("undo", "undo the last scene edit", [this](const json&) { return json(lesson_->undo()); });
+  api.add("redo", "redo the last undone edit", [this](const json&) { return json(lesson_->redo()); });
+  api.add("view", "CSS pixels of world points in a view: {view: 'workspace'|'cspace', points: [[x,y],...]}",
           [this](const json& args) {
-            if (!args.contains("scene")) throw ApiError("args.scene is missing");
-            scene_ = scene_from_json(args["scene"]);  // throws before touching scene_
-            return scene_to_json(scene_);
-          });
-  api.add("view", "the workspace canvas: CSS pixels of world points {points: [[x,y],...]}",
-          [this](const json& args) {
+            const std::string name = args.value("view", "workspace");
+            auto it = ctx_.views.find(name);
+            if (it == ctx_.views.end()) throw ApiError("this lesson has no view \"" + name + "\"");
+            const WorkspaceView& v = *it->second;
             json points = json::array();
             for (const json& p : args.value("points", json::array())) {
               if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number())
                 throw ApiError("points must be [[x, y], ...]");
-              points.push_back(vec_json(view_.to_screen(Vec2(p[0].get<double>(), p[1].get<double>()))));
+              points.push_back(vec_json(v.to_screen(Vec2(p[0].get<double>(), p[1].get<double>()))));
             }
-            return json{{"canvas_min", vec_json(view_.canvas_min())},
-                        {"canvas_max", vec_json(view_.canvas_max())},
-                        {"scale", view_.scale()},
+            return json{{"canvas_min", vec_json(v.canvas_min())},
+                        {"canvas_max", vec_json(v.canvas_max())},
+                        {"scale", v.scale()},
                         {"points", points}};
           });
+  api.add("log", "the event log's lines", [this](const json&) {
+    json out = json::array();
+    for (const auto& [step, text] : ctx_.log.lines()) out.push_back({{"step", step}, {"text", text}});
+    return out;
+  });
+}
+
+void App::top_bar() {
+  ImGui::PushFont(fonts().title);
+  ImGui::TextUnformatted("C-Space Lab");
+  ImGui::PopFont();
+  ImGui::SameLine(0, 24);
+  // One button per lesson, grouped by category.
+  std::string category;
+  for (const LessonInfo& l : lessons()) {
+    if (l.category != category) {
+      category = l.category;
+      ImGui::SameLine(0, 18);
+      ImGui::AlignTextToFramePadding();
+      ImGui::TextDisabled("%s:", category.c_str());
+    }
+    ImGui::SameLine();
+    const bool current = l.id == lesson_id_;
+    if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+    if (ImGui::Button(l.name.c_str())) select_lesson(l.id);
+    if (current) ImGui::PopStyleColor();
+  }
+  ImGui::SameLine(ImGui::GetWindowWidth() - 150);
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextDisabled("v%s", kVersion);
+}
+
+void App::playback_controls() {
+  if (!lesson_->steppable()) return;
+  Playback& pb = ctx_.playback;
+  ImGui::BeginDisabled(lesson_->steps() == 0);
+  if (ImGui::Button("\xE2\x97\x80 Back")) lesson_->step_back();  // ◀
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("step back (,)");
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::BeginDisabled(lesson_->finished());
+  if (ImGui::Button("Step \xE2\x96\xB6")) lesson_->step_forward();  // ▶
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("one step (.)");
+  ImGui::SameLine();
+  if (ImGui::Button("Finish phase")) lesson_->finish_phase();
+  ImGui::SameLine();
+  if (ImGui::Button("Run all")) lesson_->run_all();
+  ImGui::EndDisabled();
+  ImGui::BeginDisabled(lesson_->finished() && !pb.playing);
+  if (ImGui::Button(pb.playing ? "Pause " : "\xE2\x96\xB6 Play")) pb.playing = !pb.playing;
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("play or pause (Space)");
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  if (ImGui::Button("Reset")) {
+    lesson_->reset();
+    pb.playing = false;
+  }
+  ImGui::SameLine();
+  ImGui::PushItemWidth(-1);
+  ImGui::SliderFloat("##speed", &pb.steps_per_second, 1.0f, 5000.0f, "%.0f steps/s", ImGuiSliderFlags_Logarithmic);
+  ImGui::PopItemWidth();
+  ImGui::Spacing();
+}
+
+void App::shortcuts() {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (io.WantTextInput || !lesson_->steppable() || io.KeyCtrl || io.KeyAlt) return;
+  for (ImWchar c : io.InputQueueCharacters) {
+    if (c == ' ') ctx_.playback.playing = !ctx_.playback.playing && !lesson_->finished();
+    if (c == '.') lesson_->step_forward();
+    if (c == ',') lesson_->step_back();
+  }
+}
+
+void App::notice() {
+  if (ctx_.notice.empty() || ImGui::GetTime() > ctx_.notice_until) return;
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x + vp->WorkSize.x * 0.5f, vp->WorkPos.y + vp->WorkSize.y - 24),
+                          ImGuiCond_Always, ImVec2(0.5f, 1.0f));
+  ImGui::SetNextWindowBgAlpha(0.92f);
+  ImGui::Begin("##notice", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoFocusOnAppearing |
+                   ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs);
+  ImGui::TextColored(ImVec4(0.6f, 0.2f, 0.0f, 1.0f), "%s", ctx_.notice.c_str());
+  ImGui::End();
 }
 
 void App::frame() {
+  shortcuts();
+  lesson_->update(ctx_);
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(vp->WorkPos);
   ImGui::SetNextWindowSize(vp->WorkSize);
   ImGui::Begin("C-Space Lab", nullptr,
-               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
-                   ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoSavedSettings);
-  const float panel_w = std::clamp(vp->WorkSize.x * 0.3f, 240.0f, 340.0f);
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoBringToFrontOnFocus |
+                   ImGuiWindowFlags_NoSavedSettings);
+  top_bar();
+  ImGui::Separator();
+  const float panel_w = std::clamp(vp->WorkSize.x * 0.3f, 280.0f, 380.0f);
   ImGui::BeginChild("panel", ImVec2(panel_w, 0), false);
-  draw_panel();
+  playback_controls();
+  lesson_->panel(ctx_);
   ImGui::EndChild();
   ImGui::SameLine();
-  ImGui::BeginChild("workspace", ImVec2(0, 0), false, ImGuiWindowFlags_NoScrollbar);
-  draw_workspace(ImGui::GetContentRegionAvail());
+  ImGui::BeginChild("main", ImVec2(0, 0), false, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+  const float log_h = std::clamp(ImGui::GetContentRegionAvail().y * 0.18f, 70.0f, 150.0f);
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  lesson_->views(ctx_, ImVec2(avail.x, avail.y - log_h - ImGui::GetStyle().ItemSpacing.y));
+  ctx_.log.draw("log", log_h);
   ImGui::EndChild();
   ImGui::End();
-}
-
-void App::draw_panel() {
-  ImGui::PushFont(fonts().title);
-  ImGui::TextUnformatted("C-Space Lab");
-  ImGui::PopFont();
-  ImGui::TextDisabled("configuration spaces and roadmaps, v%s", kVersion);
-  ImGui::Separator();
-  ImGui::TextWrapped("Drag in the workspace to draw a disk obstacle: press at its centre, "
-                     "release at its rim.");
-  ImGui::Spacing();
-  ImGui::Text("Obstacles: %zu", scene_.obstacles.size());
-  int remove = -1;
-  if (ImGui::BeginTable("obstacles", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerH)) {
-    ImGui::TableSetupColumn("disk", ImGuiTableColumnFlags_WidthStretch);
-    ImGui::TableSetupColumn("r", ImGuiTableColumnFlags_WidthFixed, 56.0f);
-    ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, 24.0f);
-    for (std::size_t i = 0; i < scene_.obstacles.size(); ++i) {
-      const Obstacle& o = scene_.obstacles[i];
-      ImGui::PushID(static_cast<int>(i));
-      ImGui::TableNextRow();
-      ImGui::TableNextColumn();
-      const Box b = obstacle_bounds(o);
-      const Vec2 c = 0.5 * (b.min + b.max);
-      ImGui::Text("%zu %s (%.3f, %.3f)", i + 1, obstacle_type_name(o), c.x(), c.y());
-      ImGui::TableNextColumn();
-      if (const auto* d = std::get_if<Disk>(&o)) ImGui::Text("r %.3f", d->radius);
-      ImGui::TableNextColumn();
-      if (ImGui::SmallButton("×")) remove = static_cast<int>(i);
-      if (ImGui::IsItemHovered()) ImGui::SetTooltip("delete this disk");
-      ImGui::PopID();
-    }
-    ImGui::EndTable();
-  }
-  if (remove >= 0) scene_.obstacles.erase(scene_.obstacles.begin() + remove);
-  if (!scene_.obstacles.empty() && ImGui::Button("Clear all")) scene_.obstacles.clear();
-  if (!message_.empty()) {
-    ImGui::Spacing();
-    ImGui::TextWrapped("%s", message_.c_str());
-  }
-}
-
-void App::handle_disk_drag() {
-  if (view_.hovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) drag_from_ = view_.mouse_world();
-  if (!drag_from_) return;
-  const Vec2 to = view_.mouse_world();
-  const double radius = (to - *drag_from_).norm();
-  if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
-    view_.draw_disk(*drag_from_, radius, theme::with_alpha(theme::kPreview, 48), theme::kPreview, 2.0f);
-    ImGui::SetTooltip("r = %.3f", radius);
-    return;
-  }
-  // Released: a real drag makes a disk, a click does not.
-  if (radius * static_cast<double>(view_.scale()) >= static_cast<double>(kMinDragPixels)) {
-    scene_.obstacles.push_back(Disk{*drag_from_, radius});
-    message_.clear();
-  } else {
-    message_ = "Drag (do not just click) to give the disk a radius.";
-  }
-  drag_from_.reset();
-}
-
-void App::draw_workspace(ImVec2 size) {
-  view_.begin("##workspace", size, scene_.workspace_min, scene_.workspace_max);
-  view_.draw_grid();
-  ImDrawList* dl = view_.draw_list();
-  dl->PushClipRect(view_.canvas_min(), view_.canvas_max(), true);
-  for (const Obstacle& o : scene_.obstacles) view_.draw_obstacle(o);
-  view_.draw_marker(Vec2(scene_.start[0], scene_.start[1]), theme::kStart, "S");
-  view_.draw_marker(Vec2(scene_.goal[0], scene_.goal[1]), theme::kGoal, "G");
-  handle_disk_drag();
-  dl->PopClipRect();
-  if (view_.hovered()) {
-    const Vec2 m = view_.mouse_world();
-    char text[64];
-    std::snprintf(text, sizeof text, "(%.3f, %.3f)", m.x(), m.y());
-    dl->AddText(ImVec2(view_.canvas_min().x + 8, view_.canvas_max().y - ImGui::GetTextLineHeight() - 6),
-                theme::kLabel, text);
-  }
+  notice();
 }
 
 }  // namespace csl::app

@@ -1,11 +1,13 @@
 #pragma once
-// The lab's user interface: a control panel and the workspace canvas where dragging draws disks.
-#include <optional>
+// The lab's shell: the lesson menu, the side panel with the shared playback controls, the
+// lesson's views, the event log, notices, and the JS API that drives all of it.
+#include <map>
+#include <memory>
 #include <string>
 
+#include "app/context.hpp"
+#include "app/lesson.hpp"
 #include "app/platform.hpp"
-#include "app/workspace_view.hpp"
-#include "core/scene.hpp"
 
 namespace csl::app {
 
@@ -14,18 +16,23 @@ class App {
   explicit App(const Platform& platform);
   /// Builds one frame of UI (between ImGui::NewFrame and ImGui::Render).
   void frame();
+  /// Switches lessons (created on first use, kept afterwards so nothing is lost); false if unknown.
+  bool select_lesson(const std::string& id);
+  Lesson& lesson() { return *lesson_; }
+  const std::string& lesson_id() const { return lesson_id_; }
 
  private:
   void register_api();
-  void draw_panel();
-  void draw_workspace(ImVec2 size);
-  void handle_disk_drag();
+  void top_bar();
+  void playback_controls();
+  void shortcuts();
+  void notice();
 
   const Platform& platform_;
-  Scene scene_;
-  WorkspaceView view_;
-  std::optional<Vec2> drag_from_;  // press point of a disk being drawn
-  std::string message_;            // last notice for the user
+  LabContext ctx_;
+  std::map<std::string, std::unique_ptr<Lesson>> instances_;
+  Lesson* lesson_ = nullptr;
+  std::string lesson_id_;
 };
 
 }  // namespace csl::app

@@ -2,6 +2,7 @@
 
 #include <SDL.h>
 
+#include <algorithm>
 #include <cstdio>
 
 #include "app/fonts.hpp"
@@ -95,9 +96,37 @@ void Platform::update_pixel_ratio() {
   ImGui_ImplOpenGL3_CreateFontsTexture();
 }
 
+namespace {
+double now_ms() {
+  return 1000.0 * static_cast<double>(SDL_GetPerformanceCounter()) / static_cast<double>(SDL_GetPerformanceFrequency());
+}
+
+void summarise(const std::array<double, 120>& values, std::size_t count, double& mean, double& p95, double& max) {
+  std::array<double, 120> sorted = values;
+  std::sort(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(count));
+  double sum = 0;
+  for (std::size_t i = 0; i < count; ++i) sum += sorted[i];
+  mean = count ? sum / static_cast<double>(count) : 0.0;
+  p95 = count ? sorted[std::min(count - 1, count * 95 / 100)] : 0.0;
+  max = count ? sorted[count - 1] : 0.0;
+}
+}  // namespace
+
 void Platform::frame_once() {
+  const double start = now_ms();
+  // Releases held back from the last frame first, so that frame saw the keys down.
+  std::vector<SDL_Event> pending;
+  pending.swap(deferred_);
+  for (const SDL_Event& e : pending) ImGui_ImplSDL2_ProcessEvent(&e);
+  std::vector<SDL_Scancode> pressed_now;
   SDL_Event event;
   while (SDL_PollEvent(&event)) {
+    if (event.type == SDL_KEYDOWN) pressed_now.push_back(event.key.keysym.scancode);
+    if (event.type == SDL_KEYUP &&
+        std::find(pressed_now.begin(), pressed_now.end(), event.key.keysym.scancode) != pressed_now.end()) {
+      deferred_.push_back(event);
+      continue;
+    }
     ImGui_ImplSDL2_ProcessEvent(&event);
     if (event.type == SDL_QUIT) quit_ = true;
     if (event.type == SDL_WINDOWEVENT && event.window.event == SDL_WINDOWEVENT_CLOSE &&
@@ -112,6 +141,7 @@ void Platform::frame_once() {
   ImGui::NewFrame();
   frame_();
   ImGui::Render();
+  const double ui_done = now_ms();
 
   const ImGuiIO& io = ImGui::GetIO();
   glViewport(0, 0, static_cast<int>(io.DisplaySize.x * io.DisplayFramebufferScale.x),
@@ -120,7 +150,17 @@ void Platform::frame_once() {
   glClear(GL_COLOR_BUFFER_BIT);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   SDL_GL_SwapWindow(window_);
+  const std::size_t slot = static_cast<std::size_t>(frames_) % kTimed;
+  cpu_ms_[slot] = now_ms() - start;
+  ui_ms_[slot] = ui_done - start;
+  stats_.vertices = ImGui::GetDrawData()->TotalVtxCount;
+  interval_ms_[slot] = last_start_ < 0 ? 0.0 : start - last_start_;
+  last_start_ = start;
   ++frames_;
+  const std::size_t count = std::min<std::size_t>(static_cast<std::size_t>(frames_), kTimed);
+  summarise(interval_ms_, count, stats_.mean_interval_ms, stats_.p95_interval_ms, stats_.max_interval_ms);
+  summarise(cpu_ms_, count, stats_.mean_cpu_ms, stats_.p95_cpu_ms, stats_.max_cpu_ms);
+  summarise(ui_ms_, count, stats_.mean_ui_ms, stats_.p95_ui_ms, stats_.max_ui_ms);
   if (max_frames_ >= 0 && frames_ >= max_frames_) quit_ = true;
 }
 

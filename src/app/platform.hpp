@@ -2,7 +2,11 @@
 // The window, the GL context and the ImGui backends, with one main-loop body for the desktop
 // and the browser (where Emscripten drives the loop). Everything SDL/GL/Emscripten-specific
 // stays in platform.cpp.
+#include <array>
 #include <functional>
+#include <vector>
+
+#include <SDL_events.h>
 
 struct SDL_Window;
 
@@ -13,6 +17,15 @@ struct PlatformOptions {
   int width = 1280;   ///< desktop window size; in the browser the canvas's CSS size wins
   int height = 800;
   long max_frames = -1;  ///< desktop only: quit after this many frames (smoke tests); -1 = never
+};
+
+/// Frame timing over the last 120 frames: the interval between frames (what the user sees) and
+/// the CPU time spent building and submitting one.
+struct FrameStats {
+  double mean_interval_ms = 0, p95_interval_ms = 0, max_interval_ms = 0;
+  double mean_cpu_ms = 0, p95_cpu_ms = 0, max_cpu_ms = 0;
+  double mean_ui_ms = 0, p95_ui_ms = 0, max_ui_ms = 0;  ///< of which building the UI (no GL)
+  double vertices = 0;                                   ///< in the last frame's draw data
 };
 
 class Platform {
@@ -27,6 +40,7 @@ class Platform {
   /// Device pixels per CSS/logical pixel (2 on a typical HiDPI screen).
   float pixel_ratio() const { return pixel_ratio_; }
   long frame_count() const { return frames_; }
+  const FrameStats& frame_stats() const { return stats_; }
 
  private:
   static void frame_trampoline(void* self);
@@ -34,11 +48,18 @@ class Platform {
   void sync_canvas_size();
   void update_pixel_ratio();
 
+  // Key releases that arrived in the frame of their press, delivered a frame later (ImGui 1.86
+  // reads keys as per-frame state: a press and release in one frame would go unseen).
+  std::vector<SDL_Event> deferred_;
   SDL_Window* window_ = nullptr;
   void* gl_context_ = nullptr;
   std::function<void()> frame_;
   float pixel_ratio_ = 0.0f;  // 0 = fonts not built yet
   long frames_ = 0;
+  static constexpr std::size_t kTimed = 120;
+  std::array<double, kTimed> interval_ms_{}, cpu_ms_{}, ui_ms_{};
+  double last_start_ = -1.0;
+  FrameStats stats_;
   long max_frames_ = -1;
   bool quit_ = false;
 };

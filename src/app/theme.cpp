@@ -2,6 +2,14 @@
 
 namespace csl::app::theme {
 
+ImU32 component_color(int component, unsigned alpha) {
+  // The largest component is usually 0 (it holds the start): the calm blue; then distinct hues.
+  static const ImU32 kCycle[] = {rgba(0, 114, 178),  rgba(0, 158, 115),  rgba(204, 121, 167), rgba(86, 180, 233),
+                                 rgba(213, 94, 0),   rgba(120, 94, 240), rgba(0, 0, 0),       rgba(150, 150, 60)};
+  const ImU32 c = kCycle[static_cast<unsigned>(component) % (sizeof kCycle / sizeof kCycle[0])];
+  return with_alpha(c, alpha);
+}
+
 void apply_style() {
   ImGui::StyleColorsLight();
   ImGuiStyle& s = ImGui::GetStyle();

@@ -34,6 +34,17 @@ inline constexpr ImU32 kStart = kGreen;
 inline constexpr ImU32 kGoal = kVermillion;
 inline constexpr ImU32 kPreview = kBlue;
 inline constexpr ImU32 kLabel = rgba(70, 70, 70);
+inline constexpr ImU32 kSelectedFill = rgba(0, 114, 178, 110);
+inline constexpr ImU32 kSelectedEdge = rgba(0, 114, 178);
+inline constexpr ImU32 kWarning = rgba(213, 94, 0);
+inline constexpr ImU32 kFree = kGreen;
+inline constexpr ImU32 kHit = kVermillion;
+inline constexpr ImU32 kPath = rgba(230, 159, 0);          // orange, wide
+inline constexpr ImU32 kPathOutline = rgba(60, 40, 0, 200);
+inline constexpr ImU32 kRobot = rgba(0, 114, 178);
+inline constexpr ImU32 kCurrent = rgba(204, 121, 167);     // the step being shown
+/// Colours for roadmap components, cycled (Okabe–Ito minus the roles above, then tints).
+ImU32 component_color(int component, unsigned alpha = 255);
 
 /// Applies the lab's ImGui style (light, rounded, readable spacing).
 void apply_style();

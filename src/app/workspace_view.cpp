@@ -13,50 +13,77 @@ namespace {
 constexpr float kMargin = 36.0f;  // room for the axis labels
 }
 
-bool WorkspaceView::begin(const char* id, ImVec2 size, const Vec2& world_min, const Vec2& world_max) {
+void WorkspaceView::begin(const char* id, ImVec2 size, const Vec2& world_min, const Vec2& world_max) {
   world_min_ = world_min;
   world_max_ = world_max;
   canvas_min_ = ImGui::GetCursorScreenPos();
   size.x = std::max(size.x, 64.0f);
   size.y = std::max(size.y, 64.0f);
   canvas_max_ = ImVec2(canvas_min_.x + size.x, canvas_min_.y + size.y);
-  ImGui::InvisibleButton(id, size, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight);
+  ImGui::InvisibleButton(id, size,
+                         ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                             ImGuiButtonFlags_MouseButtonMiddle);
   hovered_ = ImGui::IsItemHovered();
 
   const Vec2 extent = world_max_ - world_min_;
   const float avail_w = size.x - 2 * kMargin, avail_h = size.y - 2 * kMargin;
-  scale_ = std::max(1.0f, std::min(avail_w / static_cast<float>(extent.x()),
-                                   avail_h / static_cast<float>(extent.y())));
-  const float used_w = scale_ * static_cast<float>(extent.x());
-  const float used_h = scale_ * static_cast<float>(extent.y());
-  // Bottom-left corner of the world rectangle, centred in the canvas; snapped to whole pixels
-  // so that 1-pixel grid lines stay sharp.
-  origin_ = ImVec2(std::round(canvas_min_.x + 0.5f * (size.x - used_w)),
-                   std::round(canvas_min_.y + 0.5f * (size.y + used_h)));
-  return hovered_;
+  const float fit = std::max(1.0f, std::min(avail_w / static_cast<float>(extent.x()),
+                                            avail_h / static_cast<float>(extent.y())));
+  const ImGuiIO& io = ImGui::GetIO();
+  // Zoom about the cursor: the world point under it stays put.
+  if (hovered_ && io.MouseWheel != 0.0f) {
+    const Vec2 before = mouse_world();
+    zoom_ = std::clamp(zoom_ * std::pow(1.2, static_cast<double>(io.MouseWheel)), 0.5, 200.0);
+    scale_ = fit * static_cast<float>(zoom_);
+    center_world_ = 0.5 * (world_min_ + world_max_) + pan_;
+    center_screen_ = ImVec2(canvas_min_.x + 0.5f * size.x, canvas_min_.y + 0.5f * size.y);
+    pan_ += before - mouse_world();
+  }
+  // Pan with the right or middle button.
+  if (hovered_ && (ImGui::IsMouseClicked(ImGuiMouseButton_Right) || ImGui::IsMouseClicked(ImGuiMouseButton_Middle)))
+    panning_ = true;
+  if (panning_) {
+    if (ImGui::IsMouseDown(ImGuiMouseButton_Right) || ImGui::IsMouseDown(ImGuiMouseButton_Middle))
+      pan_ -= Vec2(static_cast<double>(io.MouseDelta.x), -static_cast<double>(io.MouseDelta.y)) /
+              static_cast<double>(scale_);
+    else
+      panning_ = false;
+  }
+  scale_ = fit * static_cast<float>(zoom_);
+  center_world_ = 0.5 * (world_min_ + world_max_) + pan_;
+  // Snapped to whole pixels so that 1-pixel grid lines stay sharp.
+  center_screen_ = ImVec2(std::round(canvas_min_.x + 0.5f * size.x), std::round(canvas_min_.y + 0.5f * size.y));
 }
 
 ImVec2 WorkspaceView::to_screen(const Vec2& p) const {
-  return ImVec2(origin_.x + scale_ * static_cast<float>(p.x() - world_min_.x()),
-                origin_.y - scale_ * static_cast<float>(p.y() - world_min_.y()));
+  return ImVec2(center_screen_.x + scale_ * static_cast<float>(p.x() - center_world_.x()),
+                center_screen_.y - scale_ * static_cast<float>(p.y() - center_world_.y()));
 }
 
 Vec2 WorkspaceView::to_world(ImVec2 s) const {
-  return {world_min_.x() + static_cast<double>((s.x - origin_.x) / scale_),
-          world_min_.y() + static_cast<double>((origin_.y - s.y) / scale_)};
+  return {center_world_.x() + static_cast<double>((s.x - center_screen_.x) / scale_),
+          center_world_.y() + static_cast<double>((center_screen_.y - s.y) / scale_)};
 }
 
-void WorkspaceView::draw_grid() const {
+void WorkspaceView::push_clip() const {
+  const ImVec2 lo = to_screen(world_min_), hi = to_screen(world_max_);
+  const ImVec2 a(std::max(lo.x, canvas_min_.x), std::max(hi.y, canvas_min_.y));
+  const ImVec2 b(std::min(hi.x + 1, canvas_max_.x), std::min(lo.y + 1, canvas_max_.y));
+  draw_list()->PushClipRect(a, b, true);
+}
+
+void WorkspaceView::draw_grid(const char* x_label, const char* y_label) const {
   ImDrawList* dl = draw_list();
+  dl->PushClipRect(canvas_min_, canvas_max_, true);
   const ImVec2 lo = to_screen(world_min_), hi = to_screen(world_max_);
   dl->AddRectFilled(ImVec2(lo.x, hi.y), ImVec2(hi.x, lo.y), theme::kCanvasBg);
-  dl->PushClipRect(canvas_min_, canvas_max_, true);
 
   // Grid spacing: a power of ten (or half of one) that gives lines at least ~24 px apart.
   const double extent = std::max(world_max_.x() - world_min_.x(), world_max_.y() - world_min_.y());
   double step = std::pow(10.0, std::floor(std::log10(extent)));
   while (step * static_cast<double>(scale_) > 240.0) step /= 2.0;
   while (step * static_cast<double>(scale_) > 48.0) step /= 5.0;
+  while (step * static_cast<double>(scale_) < 12.0) step *= 2.0;
   const double major = step * 5.0;
   for (int axis = 0; axis < 2; ++axis) {
     const double a0 = world_min_[axis], a1 = world_max_[axis];
@@ -77,8 +104,14 @@ void WorkspaceView::draw_grid() const {
       dl->AddText(font, fs, pos, theme::kLabel, text);
     }
   }
-  dl->PopClipRect();
   dl->AddRect(ImVec2(lo.x, hi.y), ImVec2(hi.x + 1, lo.y + 1), theme::kFrame, 0.0f, 0, 1.0f);
+  // Axis names beside the frame.
+  ImFont* font = fonts().small;
+  const float fs = font->FontSize * ImGui::GetIO().FontGlobalScale;
+  dl->AddText(font, fs, ImVec2(hi.x + 6.0f, lo.y - 0.5f * fs), theme::kLabel, x_label);
+  const ImVec2 ys = font->CalcTextSizeA(fs, 1e9f, 0.0f, y_label);
+  dl->AddText(font, fs, ImVec2(lo.x - 0.5f * ys.x, hi.y - ys.y - 4.0f), theme::kLabel, y_label);
+  dl->PopClipRect();
 }
 
 void WorkspaceView::draw_disk(const Vec2& center, double radius, ImU32 fill, ImU32 edge,
@@ -88,8 +121,8 @@ void WorkspaceView::draw_disk(const Vec2& center, double radius, ImU32 fill, ImU
   // Enough segments that the outline looks round at any zoom.
   const int segments = std::clamp(static_cast<int>(r * 0.75f), 24, 256);
   ImDrawList* dl = draw_list();
-  dl->AddCircleFilled(c, r, fill, segments);
-  dl->AddCircle(c, r, edge, segments, thickness);
+  if (fill & IM_COL32_A_MASK) dl->AddCircleFilled(c, r, fill, segments);
+  if (edge & IM_COL32_A_MASK) dl->AddCircle(c, r, edge, segments, thickness);
 }
 
 void WorkspaceView::draw_polygon(const Polygon& poly, ImU32 fill, ImU32 edge, float thickness) const {
@@ -107,27 +140,44 @@ void WorkspaceView::draw_polygon(const Polygon& poly, ImU32 fill, ImU32 edge, fl
     dl->PrimReserve(static_cast<int>(3 * tris.size()), static_cast<int>(3 * tris.size()));
     for (const Triangle& t : tris)
       for (int k : t) {
-        dl->PrimWriteIdx(static_cast<ImDrawIdx>(dl->_VtxCurrentIdx));
+        dl->PrimWriteIdx(dl->_VtxCurrentIdx);
         dl->PrimWriteVtx(pts[k], uv, fill);
       }
   }
   dl->AddPolyline(pts.Data, pts.Size, edge, ImDrawFlags_Closed, thickness);
 }
 
-void WorkspaceView::draw_obstacle(const Obstacle& o) const {
+void WorkspaceView::draw_obstacle(const Obstacle& o, bool highlighted) const {
+  const ImU32 fill = highlighted ? theme::kSelectedFill : theme::kObstacleFill;
+  const ImU32 edge = highlighted ? theme::kSelectedEdge : theme::kObstacleEdge;
   if (const auto* d = std::get_if<Disk>(&o)) {
-    draw_disk(d->center, d->radius, theme::kObstacleFill, theme::kObstacleEdge);
+    draw_disk(d->center, d->radius, fill, edge, highlighted ? 2.5f : 1.5f);
   } else if (const auto* g = std::get_if<PolygonObstacle>(&o)) {
-    draw_polygon(g->vertices, theme::kObstacleFill, theme::kObstacleEdge);
+    draw_polygon(g->vertices, fill, edge, highlighted ? 2.5f : 1.5f);
   } else {
     const Wall& w = std::get<Wall>(o);
-    draw_list()->AddLine(to_screen(w.a), to_screen(w.b), theme::kObstacleEdge, 3.0f);
+    draw_segment(w.a, w.b, edge, highlighted ? 4.0f : 3.0f);
   }
 }
 
-void WorkspaceView::draw_marker(const Vec2& p, ImU32 color, const char* label) const {
+void WorkspaceView::draw_circle(const Vec2& center, double radius, ImU32 edge, float thickness) const {
+  const float r = scale_ * static_cast<float>(radius);
+  draw_list()->AddCircle(to_screen(center), r, edge, std::clamp(static_cast<int>(r * 0.75f), 24, 256), thickness);
+}
+
+void WorkspaceView::draw_segment(const Vec2& a, const Vec2& b, ImU32 color, float thickness) const {
+  draw_list()->AddLine(to_screen(a), to_screen(b), color, thickness);
+}
+
+void WorkspaceView::draw_label(const Vec2& p, const char* text, ImU32 color, ImVec2 offset) const {
+  const ImVec2 s = to_screen(p);
+  draw_list()->AddText(ImVec2(s.x + offset.x, s.y + offset.y), color, text);
+}
+
+void WorkspaceView::draw_marker(const Vec2& p, ImU32 color, const char* label, bool warn) const {
   const ImVec2 c = to_screen(p);
   ImDrawList* dl = draw_list();
+  if (warn) dl->AddCircle(c, 14.0f, theme::kWarning, 32, 3.0f);
   dl->AddCircleFilled(c, 9.0f, color, 24);
   dl->AddCircle(c, 9.0f, theme::kBlack, 24, 1.5f);
   ImFont* font = fonts().small;

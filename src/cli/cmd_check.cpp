@@ -3,14 +3,12 @@
 #include <stdexcept>
 
 #include "cli/commands.hpp"
-#include "core/edge_check.hpp"
+#include "core/edge_check_json.hpp"
 
 namespace csl::cli {
 namespace {
 
 using json = nlohmann::json;
-
-json number_or_null(const std::optional<double>& v) { return v ? json(*v) : json(nullptr); }
 
 int run_check(Args& args) {
   const auto from = args.take("from");
@@ -49,38 +47,9 @@ int run_check(Args& args) {
     throw UsageError("--trace: at most 100000 configurations (the trace would be too long)");
 
   const EdgeCheckResult r = check_edge(world, spec, p, q, trace);
-  json out{{"collision", r.collision},
-           {"evaluations", r.evaluations},
-           {"collision_t", number_or_null(r.collision_t)},
-           {"checker", spec.name()},
-           {"from", config_to_json(p)},
-           {"to", config_to_json(q)}};
-  if (trace) {
-    const bool bisection = spec.kind == EdgeCheckerSpec::Kind::Bisection;
-    json steps = json::array(), certified = json::array();
-    for (const EdgeEvent& e : r.trace) {
-      if (e.kind == EdgeEvent::Kind::Evaluate) {
-        json s{{"t", e.t}, {"q", config_to_json(e.q)}, {"eta", e.eta}, {"free", e.free}};
-        if (bisection) {
-          s["t0"] = e.t0;
-          s["t1"] = e.t1;
-          s["lambda"] = e.lambda;
-          s["depth"] = e.depth;
-        }
-        steps.push_back(s);
-      } else {
-        certified.push_back({{"t0", e.t0},
-                             {"t1", e.t1},
-                             {"lambda", e.lambda},
-                             {"eta0", e.eta0},
-                             {"eta1", e.eta1},
-                             {"depth", e.depth},
-                             {"unresolved", e.kind == EdgeEvent::Kind::Unresolved}});
-      }
-    }
-    out["trace"] = steps;
-    if (bisection) out["pieces"] = certified;
-  }
+  json out = edge_check_to_json(r, spec, trace);
+  out["from"] = config_to_json(p);
+  out["to"] = config_to_json(q);
   print_json(out);
   return 0;
 }

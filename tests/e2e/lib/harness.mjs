@@ -4,11 +4,14 @@
 import path from 'node:path';
 import fs from 'node:fs';
 import { fileURLToPath } from 'node:url';
+import os from 'node:os';
+import { spawnSync } from 'node:child_process';
 import { chromium } from 'playwright-core';
 import { serve } from '../../../scripts/static-server.mjs';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 export const DIST = process.env.CSPACELAB_DIST || path.resolve(here, '../../../build/wasm/dist');
+export const CLI = process.env.CSPACELAB_CLI || path.resolve(here, '../../../build/native/src/cli/cspacelab');
 export const ARTIFACTS = process.env.CSPACELAB_ARTIFACTS || path.resolve(here, '../../../build/test-artifacts');
 
 const CHROMIUM_ARGS = [
@@ -49,18 +52,51 @@ export async function openLab(page, url) {
 }
 
 /** Page coordinates (CSS px) of world points, through the app's own world->canvas mapping. */
-export async function worldToPage(page, points) {
-  const { points: local } = await page.evaluate((p) => window.cspacelab.view(p), points);
+export async function worldToPage(page, points, view = 'workspace') {
+  const { points: local } = await page.evaluate(([p, v]) => window.cspacelab.view(p, v), [points, view]);
   const box = await page.locator('canvas').boundingBox();
   return local.map(([x, y]) => ({ x: box.x + x, y: box.y + y }));
 }
 
-/** Drags the mouse with real events from one page point to another. */
-export async function drag(page, from, to, steps = 12) {
+/**
+ * Drags the mouse with real events from one page point to another. ImGui samples the mouse once
+ * a frame, so frames pass between the press, the moves and the release.
+ */
+export async function drag(page, from, to, steps = 8) {
   await page.mouse.move(from.x, from.y);
+  await waitFrames(page, 2);
   await page.mouse.down();
-  await page.mouse.move(to.x, to.y, { steps });
+  await waitFrames(page, 2);
+  for (let i = 1; i <= steps; ++i) {
+    await page.mouse.move(from.x + (to.x - from.x) * i / steps, from.y + (to.y - from.y) * i / steps);
+    await waitFrames(page, 1);
+  }
+  await waitFrames(page, 1);
   await page.mouse.up();
+  await waitFrames(page, 2);
+}
+
+/** A real click at a page point, with frames around it. */
+export async function click(page, at) {
+  await page.mouse.move(at.x, at.y);
+  await waitFrames(page, 2);
+  await page.mouse.down();
+  await waitFrames(page, 1);
+  await page.mouse.up();
+  await waitFrames(page, 2);
+}
+
+/** Types keys one at a time with a frame after each (ImGui reads them per frame). */
+export async function keys(page, ...names) {
+  for (const k of names) {
+    await page.keyboard.press(k);
+    await waitFrames(page, 1);
+  }
+}
+
+/** Calls the app's API in the page: api(page, 'state', {roadmap: true}). */
+export async function api(page, cmd, args = {}) {
+  return page.evaluate(([c, a]) => window.cspacelab.call(c, a), [cmd, args]);
 }
 
 /** Saves a screenshot under ARTIFACTS and returns its bytes. */
@@ -69,6 +105,21 @@ export async function screenshot(page, name) {
   const file = path.join(ARTIFACTS, name);
   const png = await page.screenshot({ path: file });
   return { file, png };
+}
+
+/** Runs the CLI and parses its JSON (throws with its stderr on failure). */
+export function cli(...args) {
+  const r = spawnSync(CLI, args, { encoding: 'utf8', maxBuffer: 256 << 20 });
+  if (r.status !== 0) throw new Error(`cspacelab ${args.join(' ')}: ${r.stderr}`);
+  return JSON.parse(r.stdout);
+}
+
+/** Writes JSON to a fresh temporary file and returns its path. */
+export function tempJson(value) {
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'csl-e2e-'));
+  const file = path.join(dir, 'scene.json');
+  fs.writeFileSync(file, JSON.stringify(value));
+  return file;
 }
 
 /**

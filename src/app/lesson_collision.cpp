@@ -1,0 +1,363 @@
+// Lesson "Collision checking": one straight-line edge p -> q over the homework's P12 scene (or
+// the 2-link arm's), checked both ways: N equally spaced configurations (which can miss the
+// collision), and the exact bisection of Schwarzer, Saha and Latombe, animated midpoint by
+// midpoint with the clearances eta and the motion bound lambda that decide each piece.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "app/bundled_scenes.hpp"
+#include "app/draw.hpp"
+#include "app/js_api.hpp"
+#include "app/lesson.hpp"
+#include "app/scene_editor.hpp"
+#include "app/theme.hpp"
+#include "app/ui.hpp"
+#include "core/edge_check_json.hpp"
+
+namespace csl::app {
+namespace {
+
+using json = nlohmann::json;
+
+constexpr int kInteractiveMaxGrid = 2000;
+
+class CollisionLesson : public Lesson {
+ public:
+  CollisionLesson() { load(false); }
+
+  void update(LabContext& ctx) override {
+    const int due = ctx.playback.due(static_cast<double>(ImGui::GetIO().DeltaTime));
+    for (int i = 0; i < due && !finished(); ++i) step_forward();
+    if (finished()) ctx.playback.playing = false;
+    if (logged_ != shown_) {
+      log(ctx);
+      logged_ = shown_;
+    }
+  }
+
+  void panel(LabContext& ctx) override {
+    ImGui::TextWrapped("Is the straight line from p to q free? Test N configurations along it, or prove "
+                       "it piece by piece: a piece is free when lambda <= eta(start) + eta(end).");
+    int robot = arm_ ? 1 : 0;
+    if (ImGui::RadioButton("point robot (P12)", &robot, 0)) load(false);
+    ImGui::SameLine();
+    if (ImGui::RadioButton("2-link arm", &robot, 1)) load(true);
+    ImGui::Separator();
+    bool changed = false;
+    ImGui::PushItemWidth(-60.0f);
+    for (int which = 0; which < 2; ++which) {
+      Config& c = which == 0 ? scene_.start : scene_.goal;
+      float v[2] = {static_cast<float>(c[0]), static_cast<float>(c[1])};
+      const float lo = arm_ ? -3.1416f : static_cast<float>(std::min(scene_.workspace_min.x(), scene_.workspace_min.y()));
+      const float hi = arm_ ? 3.1416f : static_cast<float>(std::max(scene_.workspace_max.x(), scene_.workspace_max.y()));
+      if (ImGui::SliderFloat2(which == 0 ? "p" : "q", v, lo, hi, "%.3f")) {
+        c[0] = static_cast<double>(v[0]);
+        c[1] = static_cast<double>(v[1]);
+        changed = true;
+      }
+    }
+    ImGui::PopItemWidth();
+    if (arm_) ImGui::TextDisabled("p, q = (theta1, theta2) in radians");
+    if (changed) recompute();
+
+    ui::section("Fixed resolution");
+    ImGui::PushItemWidth(-60.0f);
+    if (ImGui::SliderInt("N", &grid_n_, 2, 200, "%d", ImGuiSliderFlags_Logarithmic)) recompute();
+    ImGui::PopItemWidth();
+    if (grid_.collision)
+      ImGui::TextColored(ImVec4(0.0f, 0.45f, 0.3f, 1.0f), "N = %d finds the collision at t = %.4f", grid_n_, *grid_.collision_t);
+    else if (bisection_.collision)
+      ImGui::TextColored(ImVec4(0.7f, 0.25f, 0.0f, 1.0f), "N = %d misses the collision", grid_n_);
+    else
+      ImGui::Text("N = %d: no collision (and there is none)", grid_n_);
+    if (min_grid_)
+      ImGui::Text("smallest N that sees it: %d", *min_grid_);
+    else if (bisection_.collision)
+      ImGui::Text("no N up to %d sees it", kInteractiveMaxGrid);
+
+    ui::section("Exact: bisection");
+    ImGui::Text("step %d of %zu", shown_, bisection_.trace.size());
+    if (finished() && bisection_.collision)
+      ImGui::Text("verdict: collision at t = %.4f", *bisection_.collision_t);
+    else if (finished())
+      ImGui::Text("verdict: free");
+    ImGui::Text("evaluations: grid %d, bisection %d", grid_.evaluations, bisection_.evaluations);
+    trace_table();
+    ImGui::Separator();
+    ImGui::TextDisabled("Obstacles (drawn in the view)");
+    editor_.toolbar(scene_, ctx);
+  }
+
+  void views(LabContext& ctx, ImVec2 size) override {
+    const float strip = 92.0f;
+    view_.begin("##collision-workspace", ImVec2(size.x, size.y - strip), scene_.workspace_min, scene_.workspace_max);
+    ctx.views["workspace"] = &view_;
+    view_.draw_grid("x", "y");
+    view_.push_clip();
+    for (const Obstacle& o : scene_.obstacles) view_.draw_obstacle(o);
+    draw_checks();
+    if (!arm_) {
+      view_.draw_marker(Vec2(scene_.start[0], scene_.start[1]), theme::kStart, "p");
+      view_.draw_marker(Vec2(scene_.goal[0], scene_.goal[1]), theme::kGoal, "q");
+    }
+    view_.pop_clip();
+    SceneEditor::Options options;
+    options.endpoints_are_points = !arm_;
+    if (editor_.edit(view_, scene_, ctx, options)) recompute();
+    editor_.help_window();
+    t_strip(ImVec2(size.x, strip));
+  }
+
+  Scene* scene() override { return &scene_; }
+  bool accept_scene(const Scene& s, std::string& why) override {
+    if (std::holds_alternative<PolygonRobot>(s.robot)) {
+      why = "this lesson shows the point robot and the 2-link arm";
+      return false;
+    }
+    editor_.record(scene_);
+    editor_.deselect();
+    scene_ = s;
+    arm_ = std::holds_alternative<ArmRobot>(s.robot);
+    recompute();
+    return true;
+  }
+  bool undo() override { return editor_.undo(scene_) && (recompute(), true); }
+  bool redo() override { return editor_.redo(scene_) && (recompute(), true); }
+
+  json state(const json&) const override {
+    json grid = edge_check_to_json(grid_, EdgeCheckerSpec::parse("grid:" + std::to_string(grid_n_)), true);
+    json bisection = edge_check_to_json(bisection_, EdgeCheckerSpec::parse("bisection"), true);
+    return {{"robot", arm_ ? "arm2" : "point"},
+            {"p", config_to_json(scene_.start)},
+            {"q", config_to_json(scene_.goal)},
+            {"grid_n", grid_n_},
+            {"grid", grid},
+            {"min_grid", min_grid_ ? json(*min_grid_) : json(nullptr)},
+            {"bisection", bisection},
+            {"shown", shown_}};
+  }
+
+  void set_params(const json& j) override {
+    if (!j.is_object()) throw ApiError("params must be an object");
+    int n = grid_n_;
+    Config p = scene_.start, q = scene_.goal;
+    for (auto it = j.begin(); it != j.end(); ++it) {
+      if (it.key() == "grid_n") {
+        if (!it->is_number_integer() || it->get<int>() < 2 || it->get<int>() > 100000)
+          throw ApiError("grid_n: an integer in [2, 100000]");
+        n = it->get<int>();
+      } else if (it.key() == "p" || it.key() == "q") {
+        if (!it->is_array() || it->size() != 2 || !(*it)[0].is_number() || !(*it)[1].is_number())
+          throw ApiError(it.key() + ": [a, b]");
+        (it.key() == "p" ? p : q) = config({(*it)[0].get<double>(), (*it)[1].get<double>()});
+      } else {
+        throw ApiError("unknown parameter \"" + it.key() + "\" (grid_n, p, q)");
+      }
+    }
+    grid_n_ = n;
+    scene_.start = p;
+    scene_.goal = q;
+    recompute();
+  }
+
+  bool steppable() const override { return true; }
+  long steps() const override { return shown_; }
+  bool finished() const override { return shown_ >= static_cast<int>(bisection_.trace.size()); }
+  void step_forward() override { shown_ = std::min(shown_ + 1, static_cast<int>(bisection_.trace.size())); }
+  void step_back() override { shown_ = std::max(shown_ - 1, 0); }
+  void finish_phase() override { run_all(); }
+  void run_all() override { shown_ = static_cast<int>(bisection_.trace.size()); }
+  void reset() override { shown_ = 0; }
+  void run_to(long steps) override {
+    shown_ = static_cast<int>(std::clamp<long>(steps, 0, static_cast<long>(bisection_.trace.size())));
+  }
+
+ private:
+  void load(bool arm) {
+    arm_ = arm;
+    scene_ = bundled_scene(arm ? "arm-2link" : "p12");
+    editor_.clear_history();
+    view_.reset_view();
+    shown_ = 0;
+    recompute();
+  }
+
+  void recompute() {
+    world_ = std::make_unique<CollisionWorld>(scene_);
+    if (arm_) {
+      scene_.start = world_->space().wrap(scene_.start);
+      scene_.goal = world_->space().wrap(scene_.goal);
+    }
+    grid_ = check_edge(*world_, EdgeCheckerSpec::parse("grid:" + std::to_string(grid_n_)), scene_.start, scene_.goal, true);
+    bisection_ = check_edge(*world_, EdgeCheckerSpec::parse("bisection"), scene_.start, scene_.goal, true);
+    // No grid can see a collision the exact check rules out: skip the search then.
+    min_grid_ = bisection_.collision ? min_grid_resolution(*world_, scene_.start, scene_.goal, kInteractiveMaxGrid)
+                                     : std::nullopt;
+    shown_ = std::min(shown_, static_cast<int>(bisection_.trace.size()));
+    logged_ = -1;
+  }
+
+  Config at(double t) const { return world_->space().interpolate(scene_.start, scene_.goal, t); }
+
+  void draw_checks() {
+    ImDrawList* dl = view_.draw_list();
+    const Robot& robot = scene_.robot;
+    if (!arm_) {
+      view_.draw_segment(Vec2(scene_.start[0], scene_.start[1]), Vec2(scene_.goal[0], scene_.goal[1]),
+                         theme::rgba(60, 60, 60), 1.5f);
+    } else {
+      draw_robot(view_, robot, scene_.start, theme::kStart, 3.0f);
+      draw_robot(view_, robot, scene_.goal, theme::kGoal, 3.0f);
+    }
+    // The grid's configurations: small squares, green free, vermillion in collision.
+    for (const EdgeEvent& e : grid_.trace) {
+      const ImU32 c = e.free ? theme::kFree : theme::kHit;
+      if (arm_) {
+        draw_robot(view_, robot, e.q, theme::with_alpha(c, 90), 1.2f);
+      } else {
+        const ImVec2 s = view_.to_screen(Vec2(e.q[0], e.q[1]));
+        dl->AddRectFilled(ImVec2(s.x - 3, s.y - 9), ImVec2(s.x + 3, s.y - 3), c);
+      }
+    }
+    // Bisection, up to the step shown: evaluated midpoints numbered, the current piece's ends
+    // with their clearance disks, lambda beside it.
+    int number = 0;
+    for (int i = 0; i < shown_; ++i) {
+      const EdgeEvent& e = bisection_.trace[static_cast<std::size_t>(i)];
+      if (e.kind != EdgeEvent::Kind::Evaluate) continue;
+      ++number;
+      const ImU32 c = e.free ? theme::kFree : theme::kHit;
+      if (arm_) draw_robot(view_, robot, e.q, theme::with_alpha(c, i + 1 == shown_ ? 255 : 110), 2.0f);
+      else dl->AddCircleFilled(view_.to_screen(Vec2(e.q[0], e.q[1])), 5.0f, c, 16);
+      if (!arm_) {
+        char text[16];
+        std::snprintf(text, sizeof text, "%d", number);
+        view_.draw_label(Vec2(e.q[0], e.q[1]), text, theme::kLabel, ImVec2(-4, 6));
+      }
+    }
+    if (shown_ > 0) {
+      const EdgeEvent& e = bisection_.trace[static_cast<std::size_t>(shown_ - 1)];
+      if (e.t0 != e.t1) {
+        const Config a = at(e.t0), b = at(e.t1);
+        if (!arm_) {
+          view_.draw_circle(Vec2(a[0], a[1]), std::max(e.eta0, 0.0), theme::kCurrent, 2.0f);
+          view_.draw_circle(Vec2(b[0], b[1]), std::max(e.eta1, 0.0), theme::kCurrent, 2.0f);
+          view_.draw_segment(Vec2(a[0], a[1]), Vec2(b[0], b[1]), theme::kCurrent, 3.0f);
+        }
+        char text[96];
+        std::snprintf(text, sizeof text, "lambda = %.3f %s eta0 + eta1 = %.3f", e.lambda,
+                      e.lambda <= e.eta0 + e.eta1 ? "<=" : ">", e.eta0 + e.eta1);
+        view_.draw_label(Vec2(scene_.workspace_min.x(), scene_.workspace_max.y()), text, theme::kCurrent, ImVec2(6, 6));
+      }
+    }
+  }
+
+  // The parameter t along the edge, [0, 1]: the grid's t's on the upper row, bisection's
+  // midpoints (numbered in order) and certified pieces on the lower: the homework's plot.
+  void t_strip(ImVec2 size) {
+    const ImVec2 o = ImGui::GetCursorScreenPos();
+    ImGui::InvisibleButton("##t-strip", size);
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    const float x0 = o.x + 60.0f, x1 = o.x + size.x - 30.0f;
+    const auto x = [&](double t) { return x0 + static_cast<float>(t) * (x1 - x0); };
+    const float row1 = o.y + 22.0f, row2 = o.y + 58.0f;
+    dl->AddText(ImVec2(o.x + 4, row1 - 8), theme::kLabel, "grid");
+    dl->AddText(ImVec2(o.x + 4, row2 - 8), theme::kLabel, "bisect");
+    for (float row : {row1, row2}) dl->AddLine(ImVec2(x0, row), ImVec2(x1, row), theme::kGridMajor, 2.0f);
+    for (double t : {0.0, 0.25, 0.5, 0.75, 1.0}) {
+      char text[16];
+      std::snprintf(text, sizeof text, "%g", t);
+      dl->AddText(ImVec2(x(t) - 6, row2 + 12), theme::kLabel, text);
+    }
+    // The true colliding part of the edge (fine sampling), for reference.
+    for (const EdgeEvent& e : grid_.trace)
+      dl->AddRectFilled(ImVec2(x(e.t) - 3, row1 - 6), ImVec2(x(e.t) + 3, row1 + 6), e.free ? theme::kFree : theme::kHit);
+    int number = 0;
+    for (int i = 0; i < shown_; ++i) {
+      const EdgeEvent& e = bisection_.trace[static_cast<std::size_t>(i)];
+      if (e.kind == EdgeEvent::Kind::Certify) {
+        dl->AddRectFilled(ImVec2(x(e.t0), row2 - 3), ImVec2(x(e.t1), row2 + 3), theme::with_alpha(theme::kFree, 140));
+        continue;
+      }
+      if (e.kind != EdgeEvent::Kind::Evaluate) continue;
+      ++number;
+      dl->AddCircleFilled(ImVec2(x(e.t), row2), 5.0f, e.free ? theme::kFree : theme::kHit, 12);
+      char text[16];
+      std::snprintf(text, sizeof text, "%d", number);
+      dl->AddText(ImVec2(x(e.t) - 3, row2 - 22), theme::kLabel, text);
+    }
+  }
+
+  void trace_table() {
+    if (!ImGui::BeginTable("trace", 5, ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_BordersInnerH,
+                           ImVec2(0, 180)))
+      return;
+    ImGui::TableSetupScrollFreeze(0, 1);
+    ImGui::TableSetupColumn("#");
+    ImGui::TableSetupColumn("t");
+    ImGui::TableSetupColumn("eta");
+    ImGui::TableSetupColumn("lambda");
+    ImGui::TableSetupColumn("piece");
+    ImGui::TableHeadersRow();
+    int number = 0;
+    for (int i = 0; i < shown_; ++i) {
+      const EdgeEvent& e = bisection_.trace[static_cast<std::size_t>(i)];
+      ImGui::TableNextRow();
+      if (i + 1 == shown_) ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg0, theme::with_alpha(theme::kCurrent, 70));
+      ImGui::TableNextColumn();
+      if (e.kind == EdgeEvent::Kind::Evaluate) ImGui::Text("%d", ++number);
+      ImGui::TableNextColumn();
+      if (e.kind == EdgeEvent::Kind::Evaluate) ImGui::Text("%.4f", e.t);
+      else ImGui::TextDisabled(e.kind == EdgeEvent::Kind::Certify ? "free" : "?");
+      ImGui::TableNextColumn();
+      if (e.kind == EdgeEvent::Kind::Evaluate) ImGui::Text("%.4f", e.eta);
+      else ImGui::Text("%.3f+%.3f", e.eta0, e.eta1);
+      ImGui::TableNextColumn();
+      if (e.t0 != e.t1) ImGui::Text("%.4f", e.lambda);
+      ImGui::TableNextColumn();
+      if (e.t0 != e.t1) ImGui::Text("[%.3g, %.3g]", e.t0, e.t1);
+      else ImGui::TextDisabled("endpoint");
+      if (i + 1 == shown_) ImGui::SetScrollHereY(1.0f);
+    }
+    ImGui::EndTable();
+  }
+
+  void log(LabContext& ctx) {
+    ctx.log.clear();
+    ctx.log.add(0, std::string("grid:") + std::to_string(grid_n_) +
+                       (grid_.collision ? ": finds the collision" : ": sees no collision") + "; bisection: " +
+                       std::to_string(bisection_.evaluations) + " evaluations");
+    if (shown_ == 0) return;
+    const EdgeEvent& e = bisection_.trace[static_cast<std::size_t>(shown_ - 1)];
+    char buf[200];
+    if (e.kind == EdgeEvent::Kind::Evaluate && e.t0 == e.t1)
+      std::snprintf(buf, sizeof buf, "endpoint t = %g: eta = %.4f (%s)", e.t, e.eta, e.free ? "free" : "in collision");
+    else if (e.kind == EdgeEvent::Kind::Evaluate)
+      std::snprintf(buf, sizeof buf, "piece [%.4g, %.4g]: lambda = %.4f > %.4f, midpoint t = %.4g has eta = %.4f: %s",
+                    e.t0, e.t1, e.lambda, e.eta0 + e.eta1, e.t, e.eta, e.free ? "free, split" : "in collision");
+    else if (e.kind == EdgeEvent::Kind::Certify)
+      std::snprintf(buf, sizeof buf, "piece [%.4g, %.4g]: lambda = %.4f <= eta0 + eta1 = %.4f: proven free", e.t0, e.t1,
+                    e.lambda, e.eta0 + e.eta1);
+    else
+      std::snprintf(buf, sizeof buf, "piece [%.4g, %.4g] too short to split: taken as a collision", e.t0, e.t1);
+    ctx.log.add(shown_, buf);
+  }
+
+  Scene scene_;
+  bool arm_ = false;
+  SceneEditor editor_;
+  WorkspaceView view_;
+  std::unique_ptr<CollisionWorld> world_;
+  int grid_n_ = 4;
+  EdgeCheckResult grid_, bisection_;
+  std::optional<int> min_grid_;
+  int shown_ = 0;
+  int logged_ = -1;
+};
+
+}  // namespace
+
+CSL_REGISTER_LESSON(CollisionLesson, "collision", "Collision checking", "Planning");
+
+}  // namespace csl::app

@@ -1,0 +1,72 @@
+#include "app/prm_text.hpp"
+
+#include <cstdio>
+
+namespace csl::app {
+
+std::string format_config(const Config& q) {
+  std::string out = "(";
+  char buf[32];
+  for (Eigen::Index i = 0; i < q.size(); ++i) {
+    std::snprintf(buf, sizeof buf, "%s%.3f", i ? ", " : "", q[i]);
+    out += buf;
+  }
+  return out + ")";
+}
+
+std::string obstacle_label(const Scene& scene, int index) {
+  if (index < 0 || index >= static_cast<int>(scene.obstacles.size())) return "an obstacle";
+  std::string type = obstacle_type_name(scene.obstacles[static_cast<std::size_t>(index)]);
+  if (type == "segment") type = "wall";
+  return type + " " + std::to_string(index + 1);
+}
+
+std::string describe(const PrmEvent& e, const Prm& prm, const Scene& scene) {
+  char buf[256];
+  const std::string q = format_config(e.q);
+  switch (e.kind) {
+    case PrmEvent::Kind::AddEndpoint:
+      std::snprintf(buf, sizeof buf, "%s added as vertex %d at %s", e.vertex == 0 ? "q_init" : "q_final", e.vertex,
+                    q.c_str());
+      break;
+    case PrmEvent::Kind::EndpointInCollision:
+      std::snprintf(buf, sizeof buf, "%s at %s is inside %s: no path can %s there",
+                    e.vertex == 0 ? "q_init" : "q_final", q.c_str(), obstacle_label(scene, e.obstacle).c_str(),
+                    e.vertex == 0 ? "start" : "end");
+      break;
+    case PrmEvent::Kind::SampleAccepted:
+      std::snprintf(buf, sizeof buf, "sample #%d at %s: free, added as vertex %d", e.sample, q.c_str(), e.vertex);
+      break;
+    case PrmEvent::Kind::SampleRejected:
+      std::snprintf(buf, sizeof buf, "sample #%d at %s: rejected, inside %s", e.sample, q.c_str(),
+                    obstacle_label(scene, e.obstacle).c_str());
+      break;
+    case PrmEvent::Kind::Neighbors:
+      std::snprintf(buf, sizeof buf, "connecting vertex %d: %d close pair%s to check (%s)", e.vertex, e.candidates,
+                    e.candidates == 1 ? "" : "s", prm.params().neighbors.name().c_str());
+      break;
+    case PrmEvent::Kind::EdgeAdded:
+      std::snprintf(buf, sizeof buf, "edge %d-%d: free (%s, %d evaluation%s), added", e.vertex, e.other,
+                    prm.params().checker.name().c_str(), e.evaluations, e.evaluations == 1 ? "" : "s");
+      break;
+    case PrmEvent::Kind::EdgeRejected:
+      std::snprintf(buf, sizeof buf, "edge %d-%d: in collision at t = %.3f (%d evaluation%s)", e.vertex, e.other,
+                    e.collision_t, e.evaluations, e.evaluations == 1 ? "" : "s");
+      break;
+    case PrmEvent::Kind::PathEdgeRemoved:
+      std::snprintf(buf, sizeof buf, "path edge %d-%d fails the exact check at t = %.3f: removed, searching again",
+                    e.vertex, e.other, e.collision_t);
+      break;
+    case PrmEvent::Kind::PathFound:
+      std::snprintf(buf, sizeof buf, "q_init and q_final are connected: a path of %zu edges, length %.4f",
+                    prm.path().size() - 1, e.path_length);
+      break;
+    case PrmEvent::Kind::NoPath:
+      std::snprintf(buf, sizeof buf, "q_init and q_final are not connected: PRM declares no path (n = %d)",
+                    prm.params().samples);
+      break;
+  }
+  return buf;
+}
+
+}  // namespace csl::app
