@@ -43,6 +43,10 @@ class CSpaceLabApi {
   reset() { return this.call('reset'); }
   getScene() { return this.call('get_scene'); }
   setScene(scene) { return this.call('set_scene', { scene }); }
+  /** {lesson, scene, params, steps}: enough to restore exactly this view (share links, autosave). */
+  snapshot() { return this.call('snapshot'); }
+  /** Restores a snapshot; every part is checked first, and a bad one changes nothing. */
+  restore(snapshot) { return this.call('restore', snapshot); }
   undo() { return this.call('undo'); }
   redo() { return this.call('redo'); }
   log() { return this.call('log'); }

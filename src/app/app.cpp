@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "app/fonts.hpp"
 #include "app/js_api.hpp"
@@ -129,6 +130,32 @@ void App::register_api() {
                         {"canvas_max", vec_json(v.canvas_max())},
                         {"scale", v.scale()},
                         {"points", points}};
+          });
+  // The whole state a link or an autosave needs to reproduce what is on screen exactly.
+  api.add("snapshot", "{lesson, scene, params, steps}: everything needed to restore this view exactly",
+          [this](const json&) {
+            return json{{"lesson", lesson_id_},
+                        {"scene", lesson_->scene() ? scene_to_json(*lesson_->scene()) : json(nullptr)},
+                        {"params", lesson_->params()},
+                        {"steps", lesson_->steps()}};
+          });
+  api.add("restore", "restore a snapshot: {lesson, scene?, params?, steps?}; all checked before anything changes",
+          [this](const json& args) {
+            const std::string id = args.value("lesson", lesson_id_);
+            const LessonInfo* info = find_lesson(id);
+            if (!info) throw ApiError("lesson: no lesson \"" + id + "\"");
+            std::optional<Scene> scene;
+            if (args.contains("scene") && !args["scene"].is_null()) scene = scene_from_json(args["scene"]);
+            const long steps = count_arg(args, "steps", 0, 100000000);
+            // Try everything on a fresh lesson first: a bad part leaves the current one untouched.
+            std::unique_ptr<Lesson> trial = info->create();
+            std::string why;
+            if (scene && !trial->accept_scene(*scene, why)) throw ApiError("scene: " + why);
+            if (args.contains("params")) trial->set_params(args["params"]);
+            trial->run_to(steps);
+            instances_[id] = std::move(trial);
+            select_lesson(id);
+            return json{{"lesson", lesson_id_}, {"steps", lesson_->steps()}};
           });
   api.add("log", "the event log's lines", [this](const json&) {
     json out = json::array();

@@ -42,6 +42,8 @@ class Lesson {
   virtual nlohmann::json state(const nlohmann::json& args) const = 0;
   /// Sets parameters from the JS API; throws ApiError naming a bad one, changing nothing.
   virtual void set_params(const nlohmann::json& params) = 0;
+  /// The parameters set_params() takes, as they are now (for share links and autosave).
+  virtual nlohmann::json params() const = 0;
 
   /// Stepping, for lessons that run an algorithm (the shared playback controls call these).
   virtual bool steppable() const { return false; }

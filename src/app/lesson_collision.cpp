@@ -161,6 +161,10 @@ class CollisionLesson : public Lesson {
     recompute();
   }
 
+  json params() const override {
+    return {{"grid_n", grid_n_}, {"p", config_to_json(scene_.start)}, {"q", config_to_json(scene_.goal)}};
+  }
+
   bool steppable() const override { return true; }
   long steps() const override { return shown_; }
   bool finished() const override { return shown_ >= static_cast<int>(bisection_.trace.size()); }

@@ -115,6 +115,8 @@ class StepPrmLesson : public Lesson {
     rebuild(0);
   }
 
+  json params() const override { return prm_params_json(params_); }
+
   bool steppable() const override { return true; }
   long steps() const override { return prm_->steps(); }
   bool finished() const override { return prm_->done(); }
