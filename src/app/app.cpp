@@ -262,10 +262,12 @@ void App::frame() {
   ImGui::EndChild();
   ImGui::SameLine();
   ImGui::BeginChild("main", ImVec2(0, 0), false, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
-  const float log_h = std::clamp(ImGui::GetContentRegionAvail().y * 0.18f, 70.0f, 150.0f);
+  // The event log, for lessons that step through an algorithm or report progress.
+  const bool log = lesson_->steppable() || !ctx_.log.lines().empty();
+  const float log_h = log ? std::clamp(ImGui::GetContentRegionAvail().y * 0.18f, 70.0f, 150.0f) : 0.0f;
   const ImVec2 avail = ImGui::GetContentRegionAvail();
-  lesson_->views(ctx_, ImVec2(avail.x, avail.y - log_h - ImGui::GetStyle().ItemSpacing.y));
-  ctx_.log.draw("log", log_h);
+  lesson_->views(ctx_, ImVec2(avail.x, avail.y - (log ? log_h + ImGui::GetStyle().ItemSpacing.y : 0.0f)));
+  if (log) ctx_.log.draw("log", log_h);
   ImGui::EndChild();
   ImGui::End();
   notice();

@@ -1,0 +1,504 @@
+// Lesson "PRM analysis": why PRM works, in numbers. The failure bound of section 2.1 for the
+// current scene (L and r from a reference path, mu(F) by Monte Carlo, all editable), against
+// n on a log scale, with P8's whole-space tiling bound beside it and measured failure rates
+// from repeated runs (in the background of the frame loop, with progress and cancel); and
+// P9's visibility probability for the wall-with-a-gap square, exact and by Monte Carlo.
+#include <array>
+#include <chrono>
+#include <limits>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <sstream>
+
+#include "app/bundled_scenes.hpp"
+#include "app/draw.hpp"
+#include "app/js_api.hpp"
+#include "app/lesson.hpp"
+#include "app/plot.hpp"
+#include "app/scene_editor.hpp"
+#include "app/theme.hpp"
+#include "app/ui.hpp"
+#include "core/experiment.hpp"
+
+namespace csl::app {
+namespace {
+
+using json = nlohmann::json;
+
+constexpr double kFrameBudgetMs = 8.0;  // experiment work per frame: the UI stays responsive
+
+class AnalysisLesson : public Lesson {
+ public:
+  AnalysisLesson() : scene_(bundled_scene("wall-gap")) {
+    measure();
+    sample_p9();
+  }
+
+  void update(LabContext& ctx) override {
+    if (!experiment_ || experiment_->done()) return;
+    // A slice of trials per frame, then back to drawing.
+    const auto start = std::chrono::steady_clock::now();
+    while (!experiment_->done() &&
+           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() < kFrameBudgetMs)
+      experiment_->step();
+    if (experiment_->done()) ctx.log.add(0, "experiment finished: " + std::to_string(trials_) + " runs per n");
+  }
+
+  void panel(LabContext& ctx) override {
+    int tab = tab_;
+    if (ImGui::RadioButton("Failure bound", &tab, 0)) tab_ = 0;
+    ImGui::SameLine();
+    if (ImGui::RadioButton("Visibility (P9)", &tab, 1)) tab_ = 1;
+    if (tab_ == 0) bound_panel(ctx);
+    else visibility_panel();
+  }
+
+  void views(LabContext& ctx, ImVec2 size) override {
+    if (tab_ == 0) {
+      const float side = std::min(size.x * 0.42f, size.y);
+      scene_view_.begin("##analysis-scene", ImVec2(side, size.y), scene_.workspace_min, scene_.workspace_max);
+      ctx.views["workspace"] = &scene_view_;
+      scene_view_.draw_grid();
+      scene_view_.push_clip();
+      for (const Obstacle& o : scene_.obstacles) scene_view_.draw_obstacle(o);
+      if (!reference_path_.empty()) {
+        for (std::size_t i = 0; i + 1 < reference_path_.size(); ++i)
+          scene_view_.draw_segment(Vec2(reference_path_[i][0], reference_path_[i][1]),
+                                   Vec2(reference_path_[i + 1][0], reference_path_[i + 1][1]), theme::kPath, 3.0f);
+      }
+      scene_view_.draw_marker(Vec2(scene_.start[0], scene_.start[1]), theme::kStart, "S");
+      scene_view_.draw_marker(Vec2(scene_.goal[0], scene_.goal[1]), theme::kGoal, "G");
+      scene_view_.pop_clip();
+      if (editor_.edit(scene_view_, scene_, ctx, {})) measure();
+      editor_.help_window();
+      ImGui::SameLine();
+      bound_plot(ImVec2(size.x - side - ImGui::GetStyle().ItemSpacing.x, size.y));
+    } else {
+      const float side = std::min(size.x, size.y);
+      p9_view_.begin("##p9", ImVec2(side, size.y), Vec2(0, 0), Vec2(1, 1));
+      ctx.views["p9"] = &p9_view_;
+      p9_view_.draw_grid();
+      p9_view();
+    }
+  }
+
+  Scene* scene() override { return &scene_; }
+  bool accept_scene(const Scene& s, std::string& why) override {
+    if (std::holds_alternative<ArmRobot>(s.robot)) {
+      why = "the analysis lesson uses point and polygon robots";
+      return false;
+    }
+    editor_.record(scene_);
+    editor_.deselect();
+    scene_ = s;
+    measure();
+    return true;
+  }
+  bool undo() override { return editor_.undo(scene_) && (measure(), true); }
+  bool redo() override { return editor_.redo(scene_) && (measure(), true); }
+
+  json state(const json&) const override {
+    json rows = json::array();
+    if (experiment_)
+      for (const ExperimentRow& r : experiment_->rows())
+        rows.push_back({{"samples", r.samples},
+                        {"trials", r.trials},
+                        {"failures", r.failures},
+                        {"failure_rate", r.failure_rate.estimate},
+                        {"ci_low", r.failure_rate.low},
+                        {"ci_high", r.failure_rate.high},
+                        {"bound", bound(r.samples).bound}});
+    return {{"tab", tab_ == 0 ? "bound" : "visibility"},
+            {"path_exists", path_exists_},
+            {"length", length_},
+            {"clearance", clearance_},
+            {"dimension", dim_},
+            {"free_volume", free_volume_},
+            {"measured", {{"length", measured_length_}, {"clearance", measured_clearance_}, {"free_volume", measured_volume_}}},
+            {"bound_at_1000", bound(1000).bound},
+            {"tiling_bound_at_1000", whole_space_tiling_bound(clearance_, dim_, 1000).bound},
+            {"sample_counts", sample_counts_},
+            {"trials", trials_},
+            {"experiment",
+             {{"running", experiment_ && !experiment_->done()},
+              {"progress", experiment_ ? experiment_->progress() : 0.0},
+              {"rows", rows}}},
+            {"visibility",
+             {{"x", p9_x_},
+              {"y", p9_y_},
+              {"gap", p9_gap_},
+              {"exact", visibility_probability(p9_x_, p9_y_, p9_gap_)},
+              {"monte_carlo", mc_.estimate},
+              {"trials", mc_.trials},
+              {"ci_low", mc_.low},
+              {"ci_high", mc_.high}}}};
+  }
+
+  void set_params(const json& j) override {
+    if (!j.is_object()) throw ApiError("params must be an object");
+    // Checked in full before anything changes.
+    double length = length_, clearance = clearance_, volume = free_volume_;
+    std::vector<int> counts = sample_counts_;
+    int trials = trials_, tab = tab_;
+    double x = p9_x_, y = p9_y_, gap = p9_gap_;
+    long long mc = mc_trials_;
+    bool run = false, cancel = false;
+    const auto positive = [](const json& v, const char* what) {
+      if (!v.is_number() || !(v.get<double>() > 0) || !std::isfinite(v.get<double>()))
+        throw ApiError(std::string(what) + ": a finite number > 0");
+      return v.get<double>();
+    };
+    for (auto it = j.begin(); it != j.end(); ++it) {
+      const std::string& k = it.key();
+      const json& v = *it;
+      if (k == "length") length = positive(v, "length");
+      else if (k == "clearance") clearance = positive(v, "clearance");
+      else if (k == "free_volume") volume = positive(v, "free_volume");
+      else if (k == "sample_counts") {
+        if (!v.is_array() || v.empty() || v.size() > 20) throw ApiError("sample_counts: 1 to 20 integers");
+        counts.clear();
+        for (const json& n : v) {
+          if (!n.is_number_integer() || n.get<long long>() < 0 || n.get<long long>() > 20000)
+            throw ApiError("sample_counts: integers in [0, 20000]");
+          counts.push_back(n.get<int>());
+        }
+      } else if (k == "trials") {
+        if (!v.is_number_integer() || v.get<int>() < 1 || v.get<int>() > 1000) throw ApiError("trials: 1..1000");
+        trials = v.get<int>();
+      } else if (k == "tab") {
+        if (v != "bound" && v != "visibility") throw ApiError("tab: \"bound\" or \"visibility\"");
+        tab = v == "bound" ? 0 : 1;
+      } else if (k == "point") {
+        if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number()) throw ApiError("point: [x, y]");
+        x = v[0].get<double>();
+        y = v[1].get<double>();
+      } else if (k == "gap") {
+        if (!v.is_number()) throw ApiError("gap: a number in [0, 1]");
+        gap = v.get<double>();
+      } else if (k == "mc_trials") {
+        if (!v.is_number_integer() || v.get<long long>() < 1 || v.get<long long>() > 1000000)
+          throw ApiError("mc_trials: 1..1000000");
+        mc = v.get<long long>();
+      } else if (k == "run") run = v.is_boolean() && v.get<bool>();
+      else if (k == "cancel") cancel = v.is_boolean() && v.get<bool>();
+      else throw ApiError("unknown parameter \"" + k + "\"");
+    }
+    if (!(x >= 0 && x < 0.5 && y >= 0 && y <= 1)) throw ApiError("point: x in [0, 1/2), y in [0, 1]");
+    if (!(gap >= 0 && gap <= 1)) throw ApiError("gap: a number in [0, 1]");
+    length_ = length;
+    clearance_ = clearance;
+    free_volume_ = volume;
+    sample_counts_ = counts;
+    std::string text;
+    for (int n : counts) text += (text.empty() ? "" : ",") + std::to_string(n);
+    std::snprintf(counts_text_, sizeof counts_text_, "%s", text.c_str());
+    trials_ = trials;
+    tab_ = tab;
+    const bool p9_changed = x != p9_x_ || y != p9_y_ || gap != p9_gap_ || mc != mc_trials_;
+    p9_x_ = x;
+    p9_y_ = y;
+    p9_gap_ = gap;
+    mc_trials_ = mc;
+    if (p9_changed) sample_p9();
+    if (cancel) experiment_.reset();
+    if (run) start_experiment();
+  }
+
+  json params() const override {
+    return {{"sample_counts", sample_counts_}, {"trials", trials_}, {"tab", tab_ == 0 ? "bound" : "visibility"},
+            {"point", {p9_x_, p9_y_}}, {"gap", p9_gap_}, {"mc_trials", mc_trials_}};
+  }
+
+  /// "run" from the API: finish the experiment now (starting one if none).
+  void run_all() override {
+    if (!experiment_) start_experiment();
+    experiment_->run();
+  }
+
+ private:
+  FailureBound bound(int n) const {
+    if (!(length_ > 0 && clearance_ > 0 && free_volume_ > 0)) return FailureBound{};
+    return path_tiling_bound(length_, clearance_, dim_, free_volume_, n);
+  }
+
+  // Measures the scene: a reference run for a path (L, r), Monte Carlo for mu(F).
+  void measure() {
+    world_ = std::make_unique<CollisionWorld>(scene_);
+    experiment_.reset();
+    reference_path_.clear();
+    dim_ = world_->space().dim();
+    ExperimentParams p;
+    p.sample_counts = {1};
+    p.trials = 1;
+    p.seed = 1;
+    p.reference_samples = 3000;
+    p.volume_samples = 50000;
+    if (!world_->is_free(scene_.start) || !world_->is_free(scene_.goal)) {
+      path_exists_ = false;
+      return;
+    }
+    Experiment probe(*world_, scene_.start, scene_.goal, p);
+    probe.step();  // the reference run only
+    const ExperimentReference& ref = probe.reference();
+    path_exists_ = ref.path_exists;
+    measured_length_ = ref.path_length;
+    measured_clearance_ = ref.clearance;
+    measured_volume_ = ref.free_volume;
+    length_ = measured_length_;
+    clearance_ = measured_clearance_;
+    free_volume_ = measured_volume_;
+    if (path_exists_) {
+      // The same reference planner, for drawing its path.
+      PrmParams pp;
+      pp.samples = p.reference_samples;
+      pp.seed = p.seed ^ 0x5eed5eed5eed5eedull;
+      Prm prm(*world_, scene_.start, scene_.goal, pp);
+      prm.run();
+      for (int v : prm.path()) reference_path_.push_back(prm.roadmap().vertices[static_cast<std::size_t>(v)]);
+    }
+  }
+
+  void start_experiment() {
+    ExperimentParams p;
+    p.sample_counts = sample_counts_;
+    p.trials = trials_;
+    p.seed = 1;
+    p.reference_samples = 3000;
+    p.volume_samples = 50000;
+    experiment_ = std::make_unique<Experiment>(*world_, scene_.start, scene_.goal, p);
+  }
+
+  void bound_panel(LabContext& ctx) {
+    ui::section("The bound of section 2.1");
+    ImGui::TextWrapped("A free path of length L with clearance r is covered by m = ceil(L/(r/2)) balls of "
+                       "radius r/2; PRM fails only if one of them gets no sample:");
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.0f, 0.3f, 0.55f, 1.0f));
+    ImGui::TextWrapped("P(fail) <= m exp(-sigma r^d n),  sigma = mu(B1) / (2^d mu(F))");
+    ImGui::PopStyleColor();
+    if (!path_exists_) ImGui::TextColored(ImVec4(0.7f, 0.25f, 0.0f, 1.0f), "no path found in this scene: enter L, r by hand");
+    ImGui::PushItemWidth(-110);
+    float l = static_cast<float>(length_), r = static_cast<float>(clearance_), v = static_cast<float>(free_volume_);
+    if (ImGui::DragFloat("L (length)", &l, 0.01f, 0.001f, 100.0f, "%.4f")) length_ = static_cast<double>(l);
+    if (ImGui::DragFloat("r (clearance)", &r, 0.0005f, 0.0001f, 10.0f, "%.4f")) clearance_ = static_cast<double>(r);
+    if (ImGui::DragFloat("mu(F)", &v, 0.01f, 0.0001f, 1000.0f, "%.4f")) free_volume_ = static_cast<double>(v);
+    ImGui::PopItemWidth();
+    ImGui::Text("d = %d   m = %.0f   sigma = %.4g", dim_, bound(0).balls, bound(0).sigma);
+    if (ImGui::SmallButton("use the measured values")) {
+      length_ = measured_length_;
+      clearance_ = measured_clearance_;
+      free_volume_ = measured_volume_;
+    }
+    if (bound(0).rate > 0) ImGui::Text("the bound reaches 1%% at n = %.0f", bound(0).samples_for(0.01));
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("measured: L and the path's clearance from a reference run with 3000 samples "
+                       "(r = that clearance / the robot's K), mu(F) by Monte Carlo");
+    ImGui::PopStyleColor();
+
+    ui::section("Experiment: run PRM many times");
+    ImGui::PushItemWidth(-110);
+    ImGui::InputText("n values", counts_text_, sizeof counts_text_);
+    ImGui::SliderInt("runs per n", &trials_, 1, 200);
+    ImGui::PopItemWidth();
+    const bool running = experiment_ && !experiment_->done();
+    if (!running && ImGui::Button("Run experiment")) {
+      std::vector<int> counts;
+      std::stringstream in(counts_text_);
+      std::string item;
+      bool ok = true;
+      while (std::getline(in, item, ',')) {
+        char* end = nullptr;
+        const long n = std::strtol(item.c_str(), &end, 10);
+        if (end == item.c_str() || n < 0 || n > 20000) ok = false;
+        else counts.push_back(static_cast<int>(n));
+      }
+      if (!ok || counts.empty() || counts.size() > 20) {
+        ctx.notify("n values: up to 20 integers in [0, 20000], separated by commas");
+      } else {
+        sample_counts_ = counts;
+        start_experiment();
+        ctx.log.clear();
+        ctx.log.add(0, "experiment started: " + std::to_string(trials_) + " runs for each of " +
+                           std::to_string(counts.size()) + " values of n");
+      }
+    }
+    if (running) {
+      ImGui::ProgressBar(static_cast<float>(experiment_->progress()), ImVec2(-80, 0));
+      ImGui::SameLine();
+      if (ImGui::Button("Cancel")) {
+        experiment_.reset();
+        ctx.log.add(0, "experiment cancelled");
+      }
+    }
+    if (experiment_) {
+      if (ImGui::BeginTable("rates", 5, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerH)) {
+        ImGui::TableSetupColumn("n");
+        ImGui::TableSetupColumn("fail");
+        ImGui::TableSetupColumn("rate");
+        ImGui::TableSetupColumn("95%");
+        ImGui::TableSetupColumn("bound");
+        ImGui::TableHeadersRow();
+        for (const ExperimentRow& row : experiment_->rows()) {
+          if (row.trials == 0) continue;
+          ImGui::TableNextRow();
+          ImGui::TableNextColumn();
+          ImGui::Text("%d", row.samples);
+          ImGui::TableNextColumn();
+          ImGui::Text("%d/%d", row.failures, row.trials);
+          ImGui::TableNextColumn();
+          ImGui::Text("%.2f", row.failure_rate.estimate);
+          ImGui::TableNextColumn();
+          ImGui::Text("%.2f-%.2f", row.failure_rate.low, row.failure_rate.high);
+          ImGui::TableNextColumn();
+          ImGui::Text("%.3g", bound(row.samples).bound);
+        }
+        ImGui::EndTable();
+      }
+    }
+    ui::section("Obstacles");
+    editor_.toolbar(scene_, ctx);
+  }
+
+  void bound_plot(ImVec2 size) {
+    // n on a log scale: the experiment's small n and the bound's large n on one picture.
+    double n_lo = 10, n_hi = 1000;
+    for (int n : sample_counts_)
+      if (n > 0) n_lo = std::min(n_lo, 0.5 * n), n_hi = std::max(n_hi, 2.0 * n);
+    if (bound(0).rate > 0) n_hi = std::max(n_hi, std::min(1e6, 2.0 * bound(0).samples_for(1e-3)));
+    n_hi = std::pow(10.0, std::ceil(std::log10(n_hi)));
+    n_lo = std::pow(10.0, std::floor(std::log10(std::max(n_lo, 1.0))));
+    Plot plot;
+    plot.begin("##bound-plot", size, {n_lo, n_hi, true, "samples n (log scale)"}, {1e-4, 1e3, true, "P(failure)"});
+    plot.shade_above(1.0, theme::rgba(0, 0, 0, 18), "above 1: the bound says nothing");
+    std::vector<double> xs, path_bound, tiling;
+    for (int i = 0; i <= 240; ++i) {
+      const double n = n_lo * std::pow(n_hi / n_lo, i / 240.0);
+      xs.push_back(n);
+      path_bound.push_back(bound(static_cast<int>(std::lround(n))).bound);
+      tiling.push_back(clearance_ > 0 ? whole_space_tiling_bound(clearance_, dim_, n).bound
+                                      : std::numeric_limits<double>::quiet_NaN());
+    }
+    plot.line(xs, path_bound, theme::kBlue, 2.5f, "path tiling bound (2.1)");
+    plot.line(xs, tiling, theme::kOrange, 2.0f, "whole-space tiling bound (P8)");
+    if (experiment_) {
+      std::vector<double> n, rate, lo, hi;
+      for (const ExperimentRow& row : experiment_->rows()) {
+        if (row.trials == 0 || row.samples <= 0) continue;
+        n.push_back(row.samples);
+        rate.push_back(row.failure_rate.estimate);
+        lo.push_back(row.failure_rate.low);
+        hi.push_back(row.failure_rate.high);
+      }
+      plot.points(n, rate, lo, hi, theme::kVermillion, "measured failure rate, 95% interval (0: hollow)");
+    }
+    plot.end();
+  }
+
+  void visibility_panel() {
+    ui::section("P9: seeing through the gap");
+    ImGui::TextWrapped("A wall of zero thickness at x = 1/2 with an opening of height d in the middle. Click a "
+                       "point (x1, y1) with x1 < 1/2: which share of the square does it see? All of the left half, "
+                       "and the part of the right half inside the cone through the opening.");
+    ImGui::PushItemWidth(-90);
+    float gap = static_cast<float>(p9_gap_);
+    if (ImGui::SliderFloat("gap d", &gap, 0.0f, 1.0f, "%.3f")) {
+      p9_gap_ = static_cast<double>(gap);
+      sample_p9();
+    }
+    int trials = static_cast<int>(mc_trials_);
+    if (ImGui::SliderInt("samples", &trials, 100, 100000, "%d", ImGuiSliderFlags_Logarithmic)) {
+      mc_trials_ = trials;
+      sample_p9();
+    }
+    ImGui::PopItemWidth();
+    ImGui::Text("(x1, y1) = (%.3f, %.3f)", p9_x_, p9_y_);
+    ImGui::TextColored(ImVec4(0.0f, 0.3f, 0.55f, 1.0f), "exact:        p = %.5f", visibility_probability(p9_x_, p9_y_, p9_gap_));
+    ImGui::Text("Monte Carlo: p = %.5f  [%.5f, %.5f]", mc_.estimate, mc_.low, mc_.high);
+    ImGui::TextDisabled("from %lld samples, 95%% Wilson interval", mc_.trials);
+  }
+
+  void sample_p9() {
+    Rng rng(p9_seed_);
+    long long seen = 0;
+    mc_points_.clear();
+    for (long long i = 0; i < mc_trials_; ++i) {
+      const double x = rng.uniform01(), y = rng.uniform01();
+      const bool visible = visible_in_p9(p9_x_, p9_y_, p9_gap_, x, y);
+      seen += visible;
+      if (mc_points_.size() < 3000) mc_points_.push_back({x, y, visible ? 1.0 : 0.0});
+    }
+    mc_ = wilson_interval(seen, mc_trials_);
+  }
+
+  void p9_view() {
+    WorkspaceView& v = p9_view_;
+    ImDrawList* dl = v.draw_list();
+    v.push_clip();
+    // The visible region: the left half, and the cone through the opening, clipped.
+    const double lo = 0.5 - 0.5 * p9_gap_, hi = 0.5 + 0.5 * p9_gap_, run = 0.5 - p9_x_;
+    const ImU32 shade = theme::with_alpha(theme::kSkyBlue, 70);
+    dl->AddRectFilled(v.to_screen(Vec2(0, 1)), v.to_screen(Vec2(0.5, 0)), shade);
+    std::vector<ImVec2> cone;
+    const int kSteps = 64;
+    for (int i = 0; i <= kSteps; ++i) {
+      const double x = 0.5 + 0.5 * i / kSteps;
+      cone.push_back(v.to_screen(Vec2(x, std::clamp(lo + (lo - p9_y_) / run * (x - 0.5), 0.0, 1.0))));
+    }
+    for (int i = kSteps; i >= 0; --i) {
+      const double x = 0.5 + 0.5 * i / kSteps;
+      cone.push_back(v.to_screen(Vec2(x, std::clamp(hi + (hi - p9_y_) / run * (x - 0.5), 0.0, 1.0))));
+    }
+    // The cone's clipped outline is convex: one filled polygon.
+    dl->AddConvexPolyFilled(cone.data(), static_cast<int>(cone.size()), shade);
+    for (const auto& p : mc_points_) {
+      const ImVec2 c = v.to_screen(Vec2(p[0], p[1]));
+      dl->AddRectFilled(ImVec2(c.x - 1, c.y - 1), ImVec2(c.x + 1, c.y + 1),
+                        p[2] > 0 ? theme::with_alpha(theme::kGreen, 160) : theme::with_alpha(theme::kVermillion, 160));
+    }
+    // The wall, the rays through the opening's ends, the point.
+    v.draw_segment(Vec2(0.5, 0), Vec2(0.5, lo), theme::kBlack, 4.0f);
+    v.draw_segment(Vec2(0.5, hi), Vec2(0.5, 1), theme::kBlack, 4.0f);
+    for (double end : {lo, hi}) {
+      const double far_y = end + (end - p9_y_) / run * 0.5;
+      v.draw_segment(Vec2(p9_x_, p9_y_), Vec2(1.0, far_y), theme::with_alpha(theme::kBlue, 150), 1.5f);
+    }
+    v.draw_marker(Vec2(p9_x_, p9_y_), theme::kBlue, "P");
+    v.pop_clip();
+    // Click or drag in the left half to move the point.
+    if (v.hovered() && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+      const Vec2 m = v.mouse_world();
+      const double x = std::clamp(m.x(), 0.0, 0.4999), y = std::clamp(m.y(), 0.0, 1.0);
+      if (x != p9_x_ || y != p9_y_) {
+        p9_x_ = x;
+        p9_y_ = y;
+        sample_p9();
+      }
+    }
+  }
+
+  Scene scene_;
+  SceneEditor editor_;
+  WorkspaceView scene_view_, p9_view_;
+  std::unique_ptr<CollisionWorld> world_;
+  std::vector<Config> reference_path_;
+  bool path_exists_ = false;
+  int dim_ = 2;
+  double length_ = 1, clearance_ = 0.05, free_volume_ = 1;
+  double measured_length_ = 0, measured_clearance_ = 0, measured_volume_ = 0;
+  std::vector<int> sample_counts_ = {20, 50, 100, 200, 500, 1000};
+  char counts_text_[128] = "20,50,100,200,500,1000";
+  int trials_ = 30;
+  std::unique_ptr<Experiment> experiment_;
+  int tab_ = 0;
+  double p9_x_ = 0.25, p9_y_ = 0.3, p9_gap_ = 0.1;
+  long long mc_trials_ = 20000;
+  std::uint64_t p9_seed_ = 9;
+  Proportion mc_;
+  std::vector<std::array<double, 3>> mc_points_;
+};
+
+}  // namespace
+
+CSL_REGISTER_LESSON(AnalysisLesson, "analysis", "PRM analysis", "Planning");
+
+}  // namespace csl::app

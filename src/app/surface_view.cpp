@@ -1,0 +1,104 @@
+#include "app/surface_view.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "app/theme.hpp"
+#include "core/angles.hpp"
+
+namespace csl::app {
+
+void SurfaceView::begin(const char* id, ImVec2 size, double extent) {
+  const ImVec2 at = ImGui::GetCursorScreenPos();
+  size.x = std::max(size.x, 40.0f);
+  size.y = std::max(size.y, 40.0f);
+  ImGui::InvisibleButton(id, size);
+  hovered_ = ImGui::IsItemHovered();
+  if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f)) {
+    const ImVec2 d = ImGui::GetIO().MouseDelta;
+    yaw_ += 0.01 * static_cast<double>(d.x);
+    pitch_ = std::clamp(pitch_ + 0.01 * static_cast<double>(d.y), -1.5, 1.5);
+  }
+  centre_ = ImVec2(at.x + 0.5f * size.x, at.y + 0.5f * size.y);
+  scale_ = 0.5f * std::min(size.x, size.y) / static_cast<float>(extent);
+  ImGui::GetWindowDrawList()->AddRectFilled(at, ImVec2(at.x + size.x, at.y + size.y), theme::kCanvasBg);
+}
+
+Vec3 SurfaceView::rotate(const Vec3& p) const {
+  // Turn about z (yaw), then tilt about x (pitch): z ends up pointing (mostly) up the screen.
+  const double cy = std::cos(yaw_), sy = std::sin(yaw_), cp = std::cos(pitch_), sp = std::sin(pitch_);
+  const Vec3 a(cy * p.x() - sy * p.y(), sy * p.x() + cy * p.y(), p.z());
+  return {a.x(), cp * a.y() - sp * a.z(), sp * a.y() + cp * a.z()};
+}
+
+ImVec2 SurfaceView::project(const Vec3& p, double* depth) const {
+  const Vec3 r = rotate(p);
+  if (depth) *depth = -r.y();  // the viewer looks along +y
+  return ImVec2(centre_.x + scale_ * static_cast<float>(r.x()), centre_.y - scale_ * static_cast<float>(r.z()));
+}
+
+bool SurfaceView::facing(const Vec3& n) const { return rotate(n).y() < 0.0; }
+
+void SurfaceView::draw_surface(const std::function<SurfacePoint(double, double)>& f, int nu, int nv,
+                               const std::function<ImU32(double, double)>& color) const {
+  struct Quad {
+    ImVec2 corner[4];
+    double depth;
+    ImU32 fill;
+  };
+  std::vector<Quad> quads;
+  quads.reserve(static_cast<std::size_t>(nu * nv));
+  const Vec3 light = Vec3(-0.4, -0.8, 0.5).normalized();  // in view coordinates
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
+      Quad q;
+      const double u0 = double(i) / nu, u1 = double(i + 1) / nu, v0 = double(j) / nv, v1 = double(j + 1) / nv;
+      const double us[4] = {u0, u1, u1, u0}, vs[4] = {v0, v0, v1, v1};
+      q.depth = 0;
+      for (int k = 0; k < 4; ++k) {
+        double d;
+        q.corner[k] = project(f(us[k], vs[k]).p, &d);
+        q.depth += d;
+      }
+      const SurfacePoint mid = f(0.5 * (u0 + u1), 0.5 * (v0 + v1));
+      const Vec3 n = rotate(mid.n);
+      // Lambert shading; faces turned away (seen through the hole) darker.
+      const double lit = 0.45 + 0.55 * std::fabs(n.dot(light));
+      const ImU32 c = color(0.5 * (u0 + u1), 0.5 * (v0 + v1));
+      const auto channel = [&](int shift) {
+        return static_cast<unsigned>(std::clamp(lit * ((c >> shift) & 0xFF), 0.0, 255.0));
+      };
+      q.fill = theme::rgba(channel(0), channel(8), channel(16), (c >> 24) & 0xFF);
+      quads.push_back(q);
+    }
+  std::sort(quads.begin(), quads.end(), [](const Quad& a, const Quad& b) { return a.depth < b.depth; });
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  // No anti-aliasing between quads (it would leave seams); the mesh is fine enough.
+  const ImDrawListFlags saved = dl->Flags;
+  dl->Flags &= ~ImDrawListFlags_AntiAliasedFill;
+  for (const Quad& q : quads) dl->AddQuadFilled(q.corner[0], q.corner[1], q.corner[2], q.corner[3], q.fill);
+  dl->Flags = saved;
+}
+
+void SurfaceView::draw_curve(const std::vector<SurfacePoint>& points, ImU32 color, float thickness) const {
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+    const bool front = facing(points[i].n) && facing(points[i + 1].n);
+    dl->AddLine(project(points[i].p), project(points[i + 1].p), front ? color : theme::with_alpha(color, 70),
+                front ? thickness : 1.0f);
+  }
+}
+
+SurfacePoint torus_point(double u, double v, double big, double small) {
+  const double a = kTwoPi * u, b = kTwoPi * v;
+  const double ca = std::cos(a), sa = std::sin(a), cb = std::cos(b), sb = std::sin(b);
+  return {Vec3((big + small * cb) * ca, (big + small * cb) * sa, small * sb), Vec3(cb * ca, cb * sa, sb)};
+}
+
+SurfacePoint sphere_point(double u, double v) {
+  const double a = kTwoPi * u, b = kPi * v;
+  const Vec3 p(std::sin(b) * std::cos(a), std::sin(b) * std::sin(a), std::cos(b));
+  return {p, p};
+}
+
+}  // namespace csl::app

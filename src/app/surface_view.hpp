@@ -1,0 +1,57 @@
+#pragma once
+// A small 3-D view for surfaces of the lesson (the torus T^2, the sphere S^2): parametric
+// surfaces as shaded quads sorted back to front, curves on them, rotated by dragging.
+// Orthographic projection; enough for pictures that teach, no GPU depth buffer needed.
+#include <functional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "imgui.h"
+
+namespace csl::app {
+
+using Vec3 = Eigen::Vector3d;
+
+/// A point of a surface with its unit normal.
+struct SurfacePoint {
+  Vec3 p;
+  Vec3 n;
+};
+
+class SurfaceView {
+ public:
+  /// Lays out the canvas at the cursor (size in logical pixels); a left drag turns the view.
+  void begin(const char* id, ImVec2 size, double extent);
+  void set_angles(double yaw, double pitch) {
+    yaw_ = yaw;
+    pitch_ = pitch;
+  }
+
+  /// Screen position of a 3-D point; depth > 0 is nearer the viewer.
+  ImVec2 project(const Vec3& p, double* depth = nullptr) const;
+  /// Whether a surface normal faces the viewer.
+  bool facing(const Vec3& n) const;
+
+  /// The surface f(u, v), u and v in [0, 1), as nu x nv shaded quads coloured by
+  /// color(u, v) (at the quad's centre), far ones first.
+  void draw_surface(const std::function<SurfacePoint(double u, double v)>& f, int nu, int nv,
+                    const std::function<ImU32(double u, double v)>& color) const;
+  /// A curve on a surface: solid where the surface faces the viewer, faint behind.
+  void draw_curve(const std::vector<SurfacePoint>& points, ImU32 color, float thickness) const;
+  bool hovered() const { return hovered_; }
+
+ private:
+  Vec3 rotate(const Vec3& p) const;
+  ImVec2 centre_{0, 0};
+  float scale_ = 1.0f;
+  double yaw_ = 0.6, pitch_ = 0.9;
+  bool hovered_ = false;
+};
+
+/// The torus of radii (R, r): u turns around the hole (theta1), v around the tube (theta2).
+SurfacePoint torus_point(double u, double v, double big = 1.0, double small = 0.42);
+/// The unit sphere: u around the axis, v from pole to pole.
+SurfacePoint sphere_point(double u, double v);
+
+}  // namespace csl::app
