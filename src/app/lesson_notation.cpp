@@ -49,7 +49,10 @@ class NotationLesson : public Lesson {
     int mode = practice_ ? 1 : 0;
     if (ImGui::RadioButton("Build a robot", &mode, 0)) practice_ = false;
     ImGui::SameLine();
-    if (ImGui::RadioButton("Practice", &mode, 1)) practice_ = true;
+    if (ImGui::RadioButton("Practice", &mode, 1) && !practice_) {
+      practice_ = true;
+      focus_answer_ = true;
+    }
     if (!practice_) builder();
     else practice();
     ui::section("Why S^1 x S^1 is not S^2");
@@ -122,6 +125,7 @@ class NotationLesson : public Lesson {
       }
     }
     robot_ = robot;
+    if (practice && (!practice_ || exercise != exercise_)) focus_answer_ = true;
     practice_ = practice;
     if (exercise != exercise_) checked_ = false;
     exercise_ = exercise;
@@ -187,16 +191,25 @@ class NotationLesson : public Lesson {
     ImGui::TextWrapped("%s", kExercises[static_cast<std::size_t>(exercise_)].text);
     ImGui::TextDisabled("Write Q, e.g.  SE(2) x T^3  or  R^2 x S^1");
     ImGui::PushItemWidth(-1);
+    // A new exercise puts the cursor in the answer field: the student can type at once.
+    if (focus_answer_) {
+      ImGui::SetKeyboardFocusHere();
+      focus_answer_ = false;
+    }
     const bool enter = ImGui::InputText("##answer", answer_buffer_, sizeof answer_buffer_,
                                         ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::PopItemWidth();
     answer_ = answer_buffer_;
-    if (ImGui::Button("Check") || enter) run_check();
+    if (ImGui::Button("Check") || enter) {
+      run_check();
+      focus_answer_ = true;  // keep typing: correct the answer and Enter again
+    }
     ImGui::SameLine();
     if (ImGui::Button("Next exercise")) {
       exercise_ = (exercise_ + 1) % static_cast<int>(kExercises.size());
       checked_ = false;
       answer_buffer_[0] = '\0';
+      focus_answer_ = true;
     }
     if (checked_) {
       const ImVec4 colour = check_.correct ? ImVec4(0.0f, 0.45f, 0.3f, 1.0f) : ImVec4(0.7f, 0.25f, 0.0f, 1.0f);
@@ -271,9 +284,12 @@ class NotationLesson : public Lesson {
     dl->AddCircle(at, 0.15f * unit, ink, 12, 2.0f);
     dl->AddText(ImVec2(o.x + 8, o.y + 8), theme::kLabel, "circles: revolute joints (S^1 each)   boxes: prismatic (R)");
     if (robot_.spherical_wrist) dl->AddText(ImVec2(o.x + 8, o.y + 26), theme::kLabel, "small circles: the spherical wrist's three revolute joints");
-    char q[128];
-    std::snprintf(q, sizeof q, "Q = %s", configuration_space(robot_).notation.c_str());
-    dl->AddText(nullptr, 0.0f, ImVec2(o.x + 8, o.y + size.y - 28), theme::kBlue, q);
+    // In practice mode the picture must not give the answer away.
+    if (!practice_) {
+      char q[128];
+      std::snprintf(q, sizeof q, "Q = %s", configuration_space(robot_).notation.c_str());
+      dl->AddText(nullptr, 0.0f, ImVec2(o.x + 8, o.y + size.y - 28), theme::kBlue, q);
+    }
   }
 
   // The torus with a loop around its hole, the sphere with a loop shrinking to a point.
@@ -313,6 +329,7 @@ class NotationLesson : public Lesson {
   int exercise_ = 0;
   std::string answer_;
   char answer_buffer_[256] = "";
+  bool focus_answer_ = false;
   bool checked_ = false;
   AnswerCheck check_;
   SurfaceView torus_, sphere_;
