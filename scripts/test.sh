@@ -15,5 +15,8 @@ cmake --build --preset native
 echo "[test] configuring and building wasm (build/wasm)"
 cmake --preset wasm >build/configure-wasm.log 2>&1 || { cat build/configure-wasm.log; exit 1; }
 cmake --build --preset wasm
+echo "[test] configuring and building the hardening build (build/hardening: clang, ASan + UBSan, fuzzers)"
+cmake --preset hardening >build/configure-hardening.log 2>&1 || { cat build/configure-hardening.log; exit 1; }
+cmake --build --preset hardening
 echo "[test] running every test"
 exec ctest --preset all "$@"
