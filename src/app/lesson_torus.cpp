@@ -1,0 +1,504 @@
+// Lesson "2-link arm and the torus": the arm in its workspace and its configuration space
+// T^2 = S^1 x S^1 side by side, linked both ways (pose the arm from the C-space; drag its links
+// in the workspace), with the C-obstacles drawn from the exact analytic map; PRM grown on the
+// torus with the wrapped metric (edges across a seam leave one side of the square and come back
+// on the other); the torus in 3-D with the C-obstacles on its surface; and a guided exercise on
+// loops that can and cannot be shrunk.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <deque>
+#include <memory>
+
+#include "app/bundled_scenes.hpp"
+#include "app/draw.hpp"
+#include "app/js_api.hpp"
+#include "app/lesson.hpp"
+#include "app/prm_controls.hpp"
+#include "app/prm_text.hpp"
+#include "app/scene_editor.hpp"
+#include "app/surface_view.hpp"
+#include "app/theme.hpp"
+#include "app/ui.hpp"
+#include "core/angles.hpp"
+#include "core/cspace_map.hpp"
+
+namespace csl::app {
+namespace {
+
+using json = nlohmann::json;
+
+constexpr std::size_t kTrail = 400;
+const ImU32 kCObstacle = theme::rgba(96, 96, 104, 210);
+
+enum class Exercise { None, Around, Shrink };
+
+class TorusLesson : public Lesson {
+ public:
+  TorusLesson() : scene_(bundled_scene("arm-2link")) {
+    q_ = scene_.start;
+    rebuild(0);
+  }
+
+  void update(LabContext& ctx) override {
+    const int due = ctx.playback.due(static_cast<double>(ImGui::GetIO().DeltaTime));
+    for (int i = 0; i < due && !prm_->done(); ++i) prm_->step();
+    if (prm_->done()) ctx.playback.playing = false;
+    if (logged_ != prm_->steps()) {
+      if (prm_->steps() == 0 || prm_->steps() < logged_ || prm_->steps() > logged_ + 1) ctx.log.clear();
+      if (prm_->steps() > 0) ctx.log.add(prm_->steps(), describe(prm_->last_event(), *prm_, scene_));
+      logged_ = prm_->steps();
+    }
+    // The arm walks along the found path, or along the exercise's loop, again and again.
+    const double dt = static_cast<double>(ImGui::GetIO().DeltaTime);
+    if (animate_ && (prm_->solved() || exercise_ != Exercise::None)) {
+      phase_ = std::fmod(phase_ + 0.12 * dt, 1.0);
+      q_ = exercise_ != Exercise::None ? loop_at(phase_) : path_at(phase_);
+      push_trail();
+    }
+  }
+
+  void panel(LabContext& ctx) override {
+    ImGui::TextWrapped("Two joint angles fix the arm: its C-space is the torus T^2 = S^1 x S^1, drawn flat as a "
+                       "square whose opposite edges are glued. Drag in the square to pose the arm, or drag the "
+                       "arm's links; drag obstacles and watch their C-obstacles change.");
+    ImGui::Text("q = (%.3f, %.3f)  %s", q_[0], q_[1], world_->is_free(q_) ? "free" : "in collision");
+    ImGui::Checkbox("animate the path / loop", &animate_);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("clear trail")) trail_.clear();
+    ui::section("Right-hand view");
+    ImGui::RadioButton("square", &right_view_, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("torus (3-D)", &right_view_, 1);
+    ImGui::SameLine();
+    ImGui::RadioButton("both", &right_view_, 2);
+
+    ui::section("PRM on the torus");
+    if (prm_controls(params_, 5000)) rebuild(0);
+    ImGui::Text("|V| = %zu  |E| = %ld  components %d", prm_->roadmap().vertices.size(), prm_->edges_alive(),
+                prm_->components());
+    ImGui::Text("edges across a seam: %d", seam_edges());
+    if (prm_->solved()) ImGui::TextColored(ImVec4(0.0f, 0.45f, 0.3f, 1.0f), "path found, length %.3f rad", prm_->path_length());
+    else if (prm_->done()) ImGui::TextColored(ImVec4(0.7f, 0.25f, 0.0f, 1.0f), "no path found");
+
+    ui::section("Exercise: loops on the torus");
+    if (ImGui::Button("a loop around the torus")) start_exercise(Exercise::Around);
+    ImGui::SameLine();
+    if (ImGui::Button("a loop that shrinks")) start_exercise(Exercise::Shrink);
+    if (exercise_ == Exercise::Around)
+      ImGui::TextWrapped("theta1 makes a full turn: the point leaves the square on the right and comes back on the "
+                         "left, because the edges are the same place. On the torus this loop goes around the hole: "
+                         "no continuous change of it shrinks it to a point. The arm turns all the way round.");
+    if (exercise_ == Exercise::Shrink)
+      ImGui::TextWrapped("A small circle in the square is a loop that can be pulled in to a point, in the square "
+                         "and on the torus alike: the arm only wiggles.");
+    if (exercise_ != Exercise::None) {
+      ImGui::TextWrapped("%s", loop_blocked() ? "Here the loop crosses C-obstacles: the arm could not make this motion."
+                                              : "Here the whole loop is free.");
+      if (ImGui::SmallButton("stop the exercise")) exercise_ = Exercise::None;
+    }
+    ui::section("Obstacles");
+    editor_.toolbar(scene_, ctx);
+  }
+
+  void views(LabContext& ctx, ImVec2 size) override {
+    const float w = 0.5f * (size.x - ImGui::GetStyle().ItemSpacing.x);
+    workspace(ctx, ImVec2(w, size.y));
+    ImGui::SameLine();
+    ImGui::BeginGroup();
+    if (right_view_ == 0) cspace(ctx, ImVec2(w, size.y));
+    if (right_view_ == 1) torus(ImVec2(w, size.y));
+    if (right_view_ == 2) {
+      const float h = 0.5f * (size.y - ImGui::GetStyle().ItemSpacing.y);
+      cspace(ctx, ImVec2(w, h));
+      torus(ImVec2(w, h));
+    }
+    ImGui::EndGroup();
+    editor_.help_window();
+  }
+
+  Scene* scene() override { return &scene_; }
+  bool accept_scene(const Scene& s, std::string& why) override {
+    if (!std::holds_alternative<ArmRobot>(s.robot)) {
+      why = "this lesson is about the 2-link arm (robot type 'arm2')";
+      return false;
+    }
+    editor_.record(scene_);
+    editor_.deselect();
+    scene_ = s;
+    q_ = scene_.start;
+    trail_.clear();
+    rebuild(0);
+    return true;
+  }
+  bool undo() override { return editor_.undo(scene_) && (rebuild(prm_->steps()), true); }
+  bool redo() override { return editor_.redo(scene_) && (rebuild(prm_->steps()), true); }
+
+  json state(const json& args) const override {
+    const Roadmap& r = prm_->roadmap();
+    json path = json::array();
+    for (int v : prm_->path()) path.push_back(config_to_json(r.vertices[static_cast<std::size_t>(v)]));
+    char hash[32];
+    std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(roadmap_hash(r)));
+    json out{{"q", config_to_json(q_)},
+             {"q_free", world_->is_free(q_)},
+             {"start", config_to_json(scene_.start)},
+             {"goal", config_to_json(scene_.goal)},
+             {"free_fraction", free_fraction_},
+             {"link1_blocked", json::array()},
+             {"trail", trail_.size()},
+             {"view", right_view_ == 0 ? "square" : right_view_ == 1 ? "torus" : "both"},
+             {"exercise", exercise_ == Exercise::None ? "none" : exercise_ == Exercise::Around ? "around" : "shrink"},
+             {"prm",
+              {{"params", prm_params_json(params_)},
+               {"phase", phase_name(prm_->phase())},
+               {"steps", prm_->steps()},
+               {"nodes", r.vertices.size()},
+               {"edges", prm_->edges_alive()},
+               {"seam_crossing_edges", seam_edges()},
+               {"solved", prm_->solved()},
+               {"path", path},
+               {"path_length", prm_->solved() ? json(prm_->path_length()) : json(nullptr)},
+               {"roadmap_hash", hash}}}};
+    for (const AngleInterval& i : map_->link1_blocked()) out["link1_blocked"].push_back({i.lo, i.hi});
+    if (args.contains("blocked_at")) {
+      // The map's answer at given configurations: [[theta1, theta2], ...] -> [bool, ...].
+      json at = json::array();
+      for (const json& p : args["blocked_at"])
+        if (p.is_array() && p.size() == 2 && p[0].is_number() && p[1].is_number())
+          at.push_back(map_->blocked(p[0].get<double>(), p[1].get<double>()));
+      out["blocked_at"] = at;
+    }
+    return out;
+  }
+
+  void set_params(const json& j) override {
+    if (!j.is_object()) throw ApiError("params must be an object");
+    json prm_part = json::object();
+    std::optional<Config> q;
+    int view = right_view_;
+    std::optional<Exercise> ex;
+    for (auto it = j.begin(); it != j.end(); ++it) {
+      const std::string& k = it.key();
+      if (k == "samples" || k == "neighbors" || k == "checker" || k == "seed") {
+        prm_part[k] = *it;
+      } else if (k == "q") {
+        if (!it->is_array() || it->size() != 2 || !(*it)[0].is_number() || !(*it)[1].is_number())
+          throw ApiError("q: [theta1, theta2]");
+        q = config({(*it)[0].get<double>(), (*it)[1].get<double>()});
+        if (!std::isfinite((*q)[0]) || !std::isfinite((*q)[1])) throw ApiError("q: finite angles");
+      } else if (k == "view") {
+        if (*it != "square" && *it != "torus" && *it != "both") throw ApiError("view: square, torus or both");
+        view = *it == "square" ? 0 : *it == "torus" ? 1 : 2;
+      } else if (k == "exercise") {
+        if (*it != "none" && *it != "around" && *it != "shrink") throw ApiError("exercise: none, around or shrink");
+        ex = *it == "none" ? Exercise::None : *it == "around" ? Exercise::Around : Exercise::Shrink;
+      } else {
+        throw ApiError("unknown parameter \"" + k + "\"");
+      }
+    }
+    const PrmParams p = prm_params_from_json(prm_part, params_, 5000);
+    right_view_ = view;
+    if (q) {
+      q_ = world_->space().wrap(*q);
+      push_trail();
+    }
+    if (ex) start_exercise(*ex);
+    if (!prm_part.empty()) {
+      params_ = p;
+      rebuild(0);
+    }
+  }
+
+  json params() const override {
+    json p = prm_params_json(params_);
+    p["q"] = config_to_json(q_);
+    p["view"] = right_view_ == 0 ? "square" : right_view_ == 1 ? "torus" : "both";
+    return p;
+  }
+
+  bool steppable() const override { return true; }
+  long steps() const override { return prm_->steps(); }
+  bool finished() const override { return prm_->done(); }
+  void step_forward() override {
+    if (!prm_->done()) prm_->step();
+  }
+  void step_back() override {
+    if (prm_->steps() > 0) prm_->run_to(prm_->steps() - 1);
+  }
+  void finish_phase() override {
+    const PrmPhase phase = prm_->phase();
+    while (!prm_->done() && prm_->phase() == phase) prm_->step();
+  }
+  void run_all() override { prm_->run(); }
+  void reset() override { prm_->reset(); }
+  void run_to(long steps) override { prm_->run_to(steps); }
+
+ private:
+  // After any change of the scene: the world, the exact C-obstacle map, the planner (replayed).
+  void rebuild(long steps) {
+    world_ = std::make_unique<CollisionWorld>(scene_);
+    map_ = std::make_unique<ArmCSpaceMap>(std::get<ArmRobot>(scene_.robot), scene_.obstacles);
+    std::vector<std::uint8_t> pixels;
+    free_fraction_ = map_->rasterize(128, pixels);
+    prm_ = std::make_unique<Prm>(*world_, scene_.start, scene_.goal, params_);
+    prm_->run_to(steps);
+    ++version_;
+    logged_ = -1;
+  }
+
+  int seam_edges() const {
+    int n = 0;
+    const auto& v = prm_->roadmap().vertices;
+    for (const RoadmapEdge& e : prm_->roadmap().edges) {
+      if (!e.alive) continue;
+      const Config& a = v[static_cast<std::size_t>(e.a)];
+      const Config& b = v[static_cast<std::size_t>(e.b)];
+      const Config d = world_->space().difference(a, b);
+      // The short way round leaves the chart when it differs from the plain difference.
+      n += std::fabs(b[0] - a[0] - d[0]) > 1e-9 || std::fabs(b[1] - a[1] - d[1]) > 1e-9;
+    }
+    return n;
+  }
+
+  void push_trail() {
+    if (!trail_.empty() && (trail_.back() - q_).norm() < 1e-9) return;
+    trail_.push_back(q_);
+    while (trail_.size() > kTrail) trail_.pop_front();
+  }
+
+  Config path_at(double s) const {
+    const auto& v = prm_->roadmap().vertices;
+    const auto& path = prm_->path();
+    if (path.size() < 2) return q_;
+    const double total = prm_->path_length();
+    double left = s * total;
+    for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+      const Config& a = v[static_cast<std::size_t>(path[i])];
+      const Config& b = v[static_cast<std::size_t>(path[i + 1])];
+      const double len = world_->space().distance(a, b);
+      if (left <= len || i + 2 == path.size()) return world_->space().interpolate(a, b, len > 0 ? std::min(1.0, left / len) : 0.0);
+      left -= len;
+    }
+    return q_;
+  }
+
+  Config loop_at(double s) const {
+    if (exercise_ == Exercise::Around) return world_->space().wrap(config({loop_origin_[0] + kTwoPi * s, loop_origin_[1]}));
+    return world_->space().wrap(config({loop_origin_[0] + 0.35 * std::cos(kTwoPi * s), loop_origin_[1] + 0.35 * std::sin(kTwoPi * s)}));
+  }
+
+  bool loop_blocked() const {
+    for (int i = 0; i < 360; ++i)
+      if (!world_->is_free(loop_at(i / 360.0))) return true;
+    return false;
+  }
+
+  void start_exercise(Exercise e) {
+    exercise_ = e;
+    loop_origin_ = q_;
+    phase_ = 0.0;
+    animate_ = true;
+    trail_.clear();
+  }
+
+  // --- the workspace: the arm, obstacles, the tip's trail; drag a link to turn its joint.
+  void workspace(LabContext& ctx, ImVec2 size) {
+    const bool grab_link = view_.hovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && link_under_mouse() > 0;
+    view_.begin("##torus-workspace", size, scene_.workspace_min, scene_.workspace_max);
+    ctx.views["workspace"] = &view_;
+    view_.draw_grid();
+    view_.push_clip();
+    for (const Obstacle& o : scene_.obstacles) view_.draw_obstacle(o);
+    const Robot& robot = scene_.robot;
+    if (ghost_) draw_robot(view_, robot, *ghost_, theme::with_alpha(theme::kPurple, 120), 2.0f);
+    for (std::size_t i = 1; i < trail_.size(); ++i) {
+      const ArmPose a = arm_pose(std::get<ArmRobot>(robot), trail_[i - 1]), b = arm_pose(std::get<ArmRobot>(robot), trail_[i]);
+      view_.draw_segment(a.tip, b.tip, theme::with_alpha(theme::kCurrent, 180), 2.0f);
+    }
+    draw_robot(view_, robot, scene_.start, theme::with_alpha(theme::kStart, 110), 2.0f);
+    draw_robot(view_, robot, scene_.goal, theme::with_alpha(theme::kGoal, 110), 2.0f);
+    draw_robot(view_, robot, q_, world_->is_free(q_) ? theme::kRobot : theme::kHit, 4.0f);
+    view_.pop_clip();
+    (void)grab_link;
+    // Links first (a press on a link turns its joint), the editor otherwise.
+    if (dragging_link_ == 0 && view_.hovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left))
+      dragging_link_ = link_under_mouse();
+    if (dragging_link_ > 0) {
+      if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+        const ArmRobot& arm = std::get<ArmRobot>(robot);
+        const ArmPose pose = arm_pose(arm, q_);
+        const Vec2 m = view_.mouse_world();
+        if (dragging_link_ == 1) {
+          q_[0] = std::atan2(m.y() - arm.base.y(), m.x() - arm.base.x());
+        } else {
+          const double absolute = std::atan2(m.y() - pose.elbow.y(), m.x() - pose.elbow.x());
+          q_[1] = wrap_angle(absolute - q_[0]);
+        }
+        exercise_ = Exercise::None;
+        animate_ = false;
+        push_trail();
+      } else {
+        dragging_link_ = 0;
+      }
+      return;
+    }
+    SceneEditor::Options options;
+    options.endpoints_are_points = false;
+    if (editor_.edit(view_, scene_, ctx, options)) rebuild(prm_->steps());
+  }
+
+  // 1 or 2 if the mouse is on link 1 or 2 of the posed arm, else 0.
+  int link_under_mouse() const {
+    const ArmPose pose = arm_pose(std::get<ArmRobot>(scene_.robot), q_);
+    const Vec2 m = view_.mouse_world();
+    const double near = view_.pixels(7.0f);
+    if (point_segment_distance(m, pose.elbow, pose.tip) <= near) return 2;
+    if (point_segment_distance(m, pose.base, pose.elbow) <= near) return 1;
+    return 0;
+  }
+
+  // --- the C-space square: exact C-obstacles, roadmap, path, trail; hover and drag to pose.
+  void cspace(LabContext& ctx, ImVec2 size) {
+    cspace_view_.begin("##torus-cspace", size, Vec2(-kPi, -kPi), Vec2(kPi, kPi));
+    ctx.views["cspace"] = &cspace_view_;
+    cspace_view_.draw_grid("theta1", "theta2");
+    cspace_view_.push_clip();
+    draw_cobstacles();
+    const Space& space = world_->space();
+    refresh_labels();
+    roadmap_layer_.draw(cspace_view_, space, prm_->roadmap(), labels_, (static_cast<long long>(version_) << 32) + prm_->steps());
+    if (prm_->solved()) draw_path(cspace_view_, space, prm_->roadmap(), prm_->path());
+    for (std::size_t i = 1; i < trail_.size(); ++i)
+      draw_chart_segment(cspace_view_, space, trail_[i - 1], space.difference(trail_[i - 1], trail_[i]),
+                         theme::with_alpha(theme::kCurrent, 200), 2.0f);
+    cspace_view_.draw_marker(Vec2(scene_.start[0], scene_.start[1]), theme::kStart, "S", !world_->is_free(scene_.start));
+    cspace_view_.draw_marker(Vec2(scene_.goal[0], scene_.goal[1]), theme::kGoal, "G", !world_->is_free(scene_.goal));
+    const ImVec2 at = cspace_view_.to_screen(Vec2(q_[0], q_[1]));
+    cspace_view_.draw_list()->AddCircleFilled(at, 6.0f, world_->is_free(q_) ? theme::kRobot : theme::kHit, 16);
+    cspace_view_.draw_list()->AddCircle(at, 6.0f, theme::rgba(255, 255, 255), 16, 2.0f);
+    cspace_view_.pop_clip();
+
+    // Hover: a ghost of the arm; press and drag: pose it (or move start / goal when on them).
+    ghost_.reset();
+    if (!cspace_view_.hovered() && drag_marker_ == 0 && !posing_) return;
+    const Vec2 m = cspace_view_.mouse_world();
+    const Config at_mouse = space.wrap(config({m.x(), m.y()}));
+    if (cspace_view_.hovered()) ghost_ = at_mouse;
+    if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && cspace_view_.hovered()) {
+      const double grab = cspace_view_.pixels(11.0f);
+      if (length(Vec2(scene_.goal[0], scene_.goal[1]) - m) <= grab) drag_marker_ = 2;
+      else if (length(Vec2(scene_.start[0], scene_.start[1]) - m) <= grab) drag_marker_ = 1;
+      else posing_ = true;
+      marker_before_ = scene_;
+    }
+    if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+      if (drag_marker_ != 0) editor_.record(marker_before_);
+      drag_marker_ = 0;
+      posing_ = false;
+      return;
+    }
+    if (drag_marker_ != 0) {
+      (drag_marker_ == 1 ? scene_.start : scene_.goal) = at_mouse;
+      rebuild(0);
+    } else if (posing_) {
+      q_ = at_mouse;
+      exercise_ = Exercise::None;
+      animate_ = false;
+      push_trail();
+    }
+  }
+
+  // Columns of the square, one device pixel wide, each filled where theta2 is blocked; the
+  // intervals come from the analytic map, so the horizontal edges are exact.
+  void draw_cobstacles() {
+    WorkspaceView& v = cspace_view_;
+    ImDrawList* dl = v.draw_list();
+    const float dpr = ImGui::GetIO().DisplayFramebufferScale.x > 0 ? ImGui::GetIO().DisplayFramebufferScale.x : 1.0f;
+    const ImVec2 lo = v.to_screen(Vec2(-kPi, -kPi)), hi = v.to_screen(Vec2(kPi, kPi));
+    const float x0 = std::max(lo.x, v.canvas_min().x), x1 = std::min(hi.x, v.canvas_max().x);
+    const float column = 1.0f / dpr;
+    std::vector<AngleInterval> blocked;
+    for (float x = x0; x < x1; x += column) {
+      const double theta1 = v.to_world(ImVec2(x + 0.5f * column, lo.y)).x();
+      map_->blocked_theta2(theta1, blocked);
+      for (const AngleInterval& b : blocked) {
+        const float ya = v.to_screen(Vec2(theta1, b.lo)).y, yb = v.to_screen(Vec2(theta1, b.hi)).y;
+        dl->AddRectFilled(ImVec2(x, yb), ImVec2(x + column, ya), kCObstacle);
+      }
+    }
+  }
+
+  void refresh_labels() {
+    if (labels_at_ == prm_->steps() && labels_version_ == version_) return;
+    labels_ = prm_->component_labels();
+    labels_at_ = prm_->steps();
+    labels_version_ = version_;
+  }
+
+  // --- the torus in 3-D: C-obstacles on its surface, the roadmap and path on it, the arm's point.
+  void torus(ImVec2 size) {
+    torus_view_.begin("##torus-3d", size, 1.5);
+    const ArmCSpaceMap& map = *map_;
+    torus_view_.draw_surface([](double u, double v) { return torus_point(u, v); }, 96, 40, [&](double u, double v) {
+      return map.blocked(-kPi + kTwoPi * u, -kPi + kTwoPi * v) ? theme::rgba(110, 110, 120) : theme::rgba(225, 228, 235);
+    });
+    const auto on_torus = [](const Config& q) { return torus_point((q[0] + kPi) / kTwoPi, (q[1] + kPi) / kTwoPi); };
+    const Space& space = world_->space();
+    const auto curve = [&](const Config& a, const Config& b, ImU32 c, float t) {
+      std::vector<SurfacePoint> pts;
+      const Config d = space.difference(a, b);
+      for (int i = 0; i <= 8; ++i) pts.push_back(on_torus(space.along(a, d, i / 8.0)));
+      torus_view_.draw_curve(pts, c, t);
+    };
+    const Roadmap& r = prm_->roadmap();
+    if (r.edges.size() <= 6000)
+      for (const RoadmapEdge& e : r.edges)
+        if (e.alive)
+          curve(r.vertices[static_cast<std::size_t>(e.a)], r.vertices[static_cast<std::size_t>(e.b)],
+                theme::with_alpha(theme::kBlue, r.edges.size() > 1500 ? 45 : 100), 1.0f);
+    for (std::size_t i = 0; i + 1 < prm_->path().size(); ++i)
+      curve(r.vertices[static_cast<std::size_t>(prm_->path()[i])], r.vertices[static_cast<std::size_t>(prm_->path()[i + 1])],
+            theme::kPath, 3.5f);
+    for (std::size_t i = 1; i < trail_.size(); ++i) curve(trail_[i - 1], trail_[i], theme::kCurrent, 2.5f);
+    const SurfacePoint p = on_torus(q_);
+    const ImVec2 s = torus_view_.project(p.p);
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    dl->AddCircleFilled(s, torus_view_.facing(p.n) ? 6.0f : 3.0f, world_->is_free(q_) ? theme::kRobot : theme::kHit, 16);
+    const ImVec2 corner = ImGui::GetItemRectMin();
+    dl->AddText(ImVec2(corner.x + 6, corner.y + 4), theme::kLabel, "theta1: around the hole, theta2: around the tube");
+  }
+
+  Scene scene_;
+  SceneEditor editor_;
+  WorkspaceView view_, cspace_view_;
+  SurfaceView torus_view_;
+  std::unique_ptr<CollisionWorld> world_;
+  std::unique_ptr<ArmCSpaceMap> map_;
+  double free_fraction_ = 0;
+  PrmParams params_;
+  std::unique_ptr<Prm> prm_;
+  RoadmapLayer roadmap_layer_;
+  std::vector<int> labels_;
+  long labels_at_ = -1;
+  int version_ = 0, labels_version_ = -1;
+  long logged_ = -1;
+  Config q_;
+  std::optional<Config> ghost_;
+  std::deque<Config> trail_;
+  int right_view_ = 0;
+  int dragging_link_ = 0;
+  int drag_marker_ = 0;
+  bool posing_ = false;
+  Scene marker_before_;
+  bool animate_ = false;
+  double phase_ = 0.0;
+  Exercise exercise_ = Exercise::None;
+  Config loop_origin_;
+};
+
+}  // namespace
+
+CSL_REGISTER_LESSON(TorusLesson, "torus", "2-link arm and the torus", "Configuration spaces");
+
+}  // namespace csl::app
