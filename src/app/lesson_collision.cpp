@@ -45,19 +45,26 @@ class CollisionLesson : public Lesson {
     if (ImGui::RadioButton("2-link arm", &robot, 1)) load(true);
     ImGui::Separator();
     bool changed = false;
-    ImGui::PushItemWidth(-60.0f);
     for (int which = 0; which < 2; ++which) {
       Config& c = which == 0 ? scene_.start : scene_.goal;
-      float v[2] = {static_cast<float>(c[0]), static_cast<float>(c[1])};
-      const float lo = arm_ ? -3.1416f : static_cast<float>(std::min(scene_.workspace_min.x(), scene_.workspace_min.y()));
-      const float hi = arm_ ? 3.1416f : static_cast<float>(std::max(scene_.workspace_max.x(), scene_.workspace_max.y()));
-      if (ImGui::SliderFloat2(which == 0 ? "p" : "q", v, lo, hi, "%.3f")) {
-        c[0] = static_cast<double>(v[0]);
-        c[1] = static_cast<double>(v[1]);
-        changed = true;
+      ImGui::PushID(which);
+      // Each coordinate within its own range: the workspace's for the point, (-pi, pi] for angles.
+      const float half = 0.5f * (ImGui::GetContentRegionAvail().x - 60.0f - ImGui::GetStyle().ItemSpacing.x);
+      for (int axis = 0; axis < 2; ++axis) {
+        float v = static_cast<float>(c[axis]);
+        const float lo = arm_ ? -3.1416f : static_cast<float>(scene_.workspace_min[axis]);
+        const float hi = arm_ ? 3.1416f : static_cast<float>(scene_.workspace_max[axis]);
+        ImGui::SetNextItemWidth(half);
+        if (axis == 1) ImGui::SameLine();
+        ImGui::PushID(axis);
+        if (ImGui::SliderFloat(axis == 1 ? (which == 0 ? "p" : "q") : "##x", &v, lo, hi, "%.3f")) {
+          c[axis] = std::clamp(static_cast<double>(v), static_cast<double>(lo), static_cast<double>(hi));
+          changed = true;
+        }
+        ImGui::PopID();
       }
+      ImGui::PopID();
     }
-    ImGui::PopItemWidth();
     if (arm_) ImGui::TextDisabled("p, q = (theta1, theta2) in radians");
     if (changed) recompute();
 
@@ -150,7 +157,12 @@ class CollisionLesson : public Lesson {
       } else if (it.key() == "p" || it.key() == "q") {
         if (!it->is_array() || it->size() != 2 || !(*it)[0].is_number() || !(*it)[1].is_number())
           throw ApiError(it.key() + ": [a, b]");
-        (it.key() == "p" ? p : q) = config({(*it)[0].get<double>(), (*it)[1].get<double>()});
+        const Config c = config({(*it)[0].get<double>(), (*it)[1].get<double>()});
+        if (!std::isfinite(c[0]) || !std::isfinite(c[1])) throw ApiError(it.key() + ": finite numbers");
+        if (!arm_ && (c[0] < scene_.workspace_min.x() || c[0] > scene_.workspace_max.x() ||
+                      c[1] < scene_.workspace_min.y() || c[1] > scene_.workspace_max.y()))
+          throw ApiError(it.key() + ": must lie inside the workspace");
+        (it.key() == "p" ? p : q) = c;
       } else {
         throw ApiError("unknown parameter \"" + it.key() + "\" (grid_n, p, q)");
       }
