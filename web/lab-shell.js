@@ -58,8 +58,8 @@
     /**
      * root: the [data-lab] element; canvas: its canvas; api: its CSpaceLabApi.
      * options: {config: query string, ui: 'full'|'minimal', storageId, scope, home: URL of the
-     * full lab (share links), base: URL of the folder with the lab's files, single: bool,
-     * autofocus: bool}
+     * full lab (share links), base: URL of the folder with the lab's files, single: bool
+     * (the single-file build), guardWheel: bool (the wheel scrolls the page until focused)}
      */
     constructor(root, canvas, api, options) {
       this.root = root;
@@ -234,10 +234,17 @@
       const known = new Set(this.lessons.map((l) => l.id));
       for (const [id, snapshot] of Object.entries(record.lessons).slice(0, 64)) {
         if (!known.has(id)) continue;  // a lesson this version does not have
+        if (!snapshot || typeof snapshot !== 'object') continue;
         try {
           this.api.restore(Object.assign({}, snapshot, { lesson: id }));
         } catch (e) {
           problems.push(`${this.lessonName(id)}: ${e.message}`);
+          // Parameters a newer version names differently must not cost the scene: keep what fits.
+          try {
+            if (snapshot.scene) this.api.restore({ lesson: id, scene: snapshot.scene });
+          } catch {
+            // the scene itself is bad: the lesson stays as it was
+          }
         }
       }
       if (known.has(record.current)) this.api.selectLesson(record.current);
@@ -588,7 +595,7 @@
       // SDL's wheel listener on the canvas cancels the event (no page scroll). Until the lab has
       // focus the event stops here, on the way down: SDL never sees it and the page scrolls.
       root.addEventListener('wheel', (e) => {
-        if (e.target !== canvas || this.focused()) return;
+        if (!this.options.guardWheel || e.target !== canvas || this.focused()) return;
         e.stopPropagation();
         this.hint('Click the lab first to zoom with the wheel');
       }, { capture: true, passive: true });

@@ -142,6 +142,8 @@
       home: root.getAttribute('data-lab-home') || (single || (fromUrl && ui === 'full') ? pageUrl : base + 'index.html'),
       base,
       single,
+      // A lab with a page of its own has nothing to scroll: the wheel always zooms there.
+      guardWheel: !fromUrl || window.top !== window,
     };
     root.classList.toggle('lab-minimal', ui === 'minimal');
     if (!fromUrl || window.top !== window) root.classList.add('lab-embedded');

@@ -100,6 +100,15 @@ test('storage that cannot be read is reported and replaced, not trusted', async 
     await openLab(page, url);
     assert.match((await api(page, 'status')).notice, /saved work: Step PRM: .*radius/);
     assert.equal((await api(page, 'get_scene')).obstacles.length, 5, 'the default scene instead');
+    // A parameter this version does not know (say, saved by another version): the scene stays.
+    await page.evaluate(() => localStorage.setItem('cspacelab:v1:/:main:work', JSON.stringify({
+      format: 'cspacelab-work', version: 1, current: 'step-prm',
+      lessons: { 'step-prm': { scene: { version: 1, obstacles: [{ type: 'disk', center: [0.5, 0.5], radius: 0.2 }] },
+                               params: { samples: 50, renamed: 3 }, steps: 4 } } })));
+    await page.reload();
+    await page.waitForFunction(() => window.cspacelab && window.cspacelab.status().frames >= 2);
+    assert.match((await api(page, 'status')).notice, /saved work: Step PRM: unknown parameter "renamed"/);
+    assert.deepEqual((await api(page, 'get_scene')).obstacles, [{ type: 'disk', center: [0.5, 0.5], radius: 0.2 }], 'the scene is kept');
     await page.evaluate(() => localStorage.setItem('cspacelab:v1:/:main:work', 'not json {'));
     await page.reload();
     await page.waitForFunction(() => window.cspacelab && window.cspacelab.status().frames >= 2);
