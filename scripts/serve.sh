@@ -9,5 +9,5 @@ source scripts/env.sh
 bash scripts/setup.sh --wasm
 echo "[serve] building the web app (build/wasm)"
 cmake --preset wasm >/dev/null
-cmake --build --preset wasm --target cspacelab_app cspacelab_web
+cmake --build --preset wasm --target cspacelab_app cspacelab_web cspacelab_single_file
 exec node scripts/static-server.mjs build/wasm/dist "${PORT:-8000}" 127.0.0.1

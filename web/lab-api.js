@@ -8,6 +8,9 @@ class CSpaceLabApi {
     this._module = module;
   }
 
+  /** The Emscripten module of this instance (its canvas, its memory). */
+  get module() { return this._module; }
+
   /** Runs a command of the app; returns its result or throws an Error with the app's message. */
   call(cmd, args = {}) {
     const m = this._module;
@@ -43,13 +46,22 @@ class CSpaceLabApi {
   reset() { return this.call('reset'); }
   getScene() { return this.call('get_scene'); }
   setScene(scene) { return this.call('set_scene', { scene }); }
-  /** {lesson, scene, params, steps}: enough to restore exactly this view (share links, autosave). */
-  snapshot() { return this.call('snapshot'); }
+  /**
+   * {lesson, scene, params, steps}: enough to restore exactly this view (share links, autosave);
+   * snapshot('collision') gives another open lesson's.
+   */
+  snapshot(lesson) { return this.call('snapshot', lesson === undefined ? {} : { lesson }); }
   /** Restores a snapshot; every part is checked first, and a bad one changes nothing. */
   restore(snapshot) { return this.call('restore', snapshot); }
   undo() { return this.call('undo'); }
   redo() { return this.call('redo'); }
   log() { return this.call('log'); }
+  /** Shows a one-line notice in the app for `seconds` (default 8). */
+  notify(text, seconds) { return this.call('notify', seconds === undefined ? { text } : { text, seconds }); }
+  /** The bundled scenes by name: what ?scene=NAME loads. */
+  bundledScenes() { return this.call('bundled_scenes'); }
+  /** The page state the app shows ({attached, minimal, previous}); pageState({...}) changes it. */
+  pageState(changes = {}) { return this.call('page_state', changes); }
   /** Canvas-relative CSS pixel positions of world points in a view ('workspace' or 'cspace'). */
   view(points = [], view = 'workspace') { return this.call('view', { points, view }); }
 }

@@ -1,32 +1,218 @@
-// Starts C-Space Lab in the page's [data-lab] element and exposes its API as window.cspacelab.
+// Starts C-Space Lab in every [data-lab] element of the page, one independent instance each.
+//
+//   <div id="my-lab" data-lab="lesson=collision&amp;scene=p12" style="height:600px"></div>
+//   <script src="https://your.site/cspacelab/lab.js" defer></script>
+//
+// data-lab holds the instance's configuration in a link's syntax (lab-url.js); with
+// data-lab-config="url" the page's own address is read instead (index.html, embed.html).
+// data-lab-ui="full|minimal" sets the default UI (a link's ui= wins); data-lab-home is where
+// Share links point (default: the full lab next to this script). The element's id keeps its
+// autosave apart from other labs on the page.
+//
+// This script loads the rest (cspacelab.js, lab-api.js, lab-url.js, lab-shell.js) from its own
+// folder unless the page already has them. Each lab's API is element.cspacelab once it has
+// started (the element then fires "cspacelab-ready"); window.cspacelab is the page's first lab's.
 'use strict';
 
-(function start() {
-  const root = document.querySelector('[data-lab]');
-  const canvas = root.querySelector('canvas');
-  const status = root.querySelector('.lab-status');
+(function () {
+  const script = document.currentScript;
+  const pageUrl = location.href.split(/[?#]/)[0];
+  // The folder of this script; an inlined copy (the single-file build) uses the page's.
+  const base = script && script.src ? new URL('.', script.src).href : new URL('.', pageUrl).href;
+  const PARTS = [['createCSpaceLab', 'cspacelab.js'], ['CSpaceLabApi', 'lab-api.js'],
+                 ['CSpaceLabUrl', 'lab-url.js'], ['CSpaceLabShell', 'lab-shell.js']];
+  const registry = window.CSpaceLab = window.CSpaceLab || { instances: [] };
 
-  function showError(message) {
-    status.hidden = false;
-    status.classList.add('error');
-    status.textContent = message;  // textContent: never parsed as HTML
+  function load(file) {
+    return new Promise((resolve, reject) => {
+      const s = document.createElement('script');
+      s.src = base + file;
+      s.async = false;  // run in order, fetch in parallel
+      s.onload = resolve;
+      s.onerror = () => reject(new Error('could not load ' + file));
+      document.head.appendChild(s);
+    });
   }
 
-  if (!document.createElement('canvas').getContext('webgl2')) {
-    showError('C-Space Lab needs WebGL2, which this browser does not offer. ' +
-              'Try a current Chrome, Firefox or Safari.');
-    return;
+  // The single-file build carries the wasm in the page: <script type="application/octet-stream"
+  // id="cspacelab-wasm" data-encoding="gzip-base64">.
+  let inlineWasm = null;
+  function wasmFromPage() {
+    const block = document.getElementById('cspacelab-wasm');
+    if (!block) return Promise.resolve(null);
+    if (!inlineWasm) {
+      inlineWasm = (async () => {
+        const binary = atob(block.textContent.trim());
+        const bytes = new Uint8Array(binary.length);
+        for (let i = 0; i < binary.length; ++i) bytes[i] = binary.charCodeAt(i);
+        if (block.dataset.encoding !== 'gzip-base64') return bytes;
+        if (typeof DecompressionStream !== 'function')
+          throw new Error('this browser cannot unpack the single-file build (it needs DecompressionStream)');
+        const stream = new Blob([bytes]).stream().pipeThrough(new DecompressionStream('gzip'));
+        return new Uint8Array(await new Response(stream).arrayBuffer());
+      })();
+    }
+    return inlineWasm;
   }
-  canvas.addEventListener('contextmenu', (e) => e.preventDefault());
 
-  createCSpaceLab({
-    canvas,
-    print: (text) => console.log(text),
-    printErr: (text) => console.warn(text),
-    onAbort: (what) => showError('C-Space Lab stopped: ' + what),
-  }).then((module) => {
-    window.cspacelab = new CSpaceLabApi(module);
+  // The wasm, fetched and compiled once, as early as possible, for every lab on the page
+  // (Module.instantiateWasm hands each instance the shared WebAssembly.Module).
+  let compiled = null;
+  function compileWasm() {
+    if (!compiled) {
+      compiled = (async () => {
+        if (document.getElementById('cspacelab-wasm')) return WebAssembly.compile(await wasmFromPage());
+        const url = base + 'cspacelab.wasm';
+        if (typeof WebAssembly.compileStreaming === 'function') {
+          try {
+            return await WebAssembly.compileStreaming(fetch(url, { credentials: 'same-origin' }));
+          } catch {
+            // a server that does not send application/wasm: compile from the bytes below
+          }
+        }
+        const response = await fetch(url, { credentials: 'same-origin' });
+        if (!response.ok) throw new Error(`${url}: HTTP ${response.status}`);
+        return WebAssembly.compile(await response.arrayBuffer());
+      })();
+      compiled.catch(() => {});  // reported by each lab that waits for it
+    }
+    return compiled;
+  }
+
+  function ensure(root, selector, make) {
+    let node = root.querySelector(selector);
+    if (!node) {
+      node = make();
+      root.appendChild(node);
+    }
+    return node;
+  }
+
+  // The lab's stylesheet, first in <head> so that the page's own rules win.
+  function ensureStyles() {
+    const links = Array.from(document.querySelectorAll('link[rel~="stylesheet"]'));
+    if (links.some((l) => /(^|\/)lab\.css([?#]|$)/.test(l.getAttribute('href') || '')) || document.querySelector('style[data-lab-css]')) return;
+    const link = document.createElement('link');
+    link.rel = 'stylesheet';
+    link.href = base + 'lab.css';
+    document.head.insertBefore(link, document.head.firstChild);
+  }
+
+  async function start(root, index) {
+    if (root.cspacelabStarted) return root.cspacelabStarted;
+    root.classList.add('lab');
+    const canvas = ensure(root, 'canvas', () => {
+      const c = document.createElement('canvas');
+      c.className = 'lab-canvas';
+      c.tabIndex = 0;
+      c.setAttribute('aria-label', 'C-Space Lab: interactive motion-planning canvas');
+      return c;
+    });
+    const status = ensure(root, '.lab-status', () => {
+      const s = document.createElement('div');
+      s.className = 'lab-status';
+      s.setAttribute('role', 'status');
+      s.textContent = 'Loading C-Space Lab…';
+      return s;
+    });
+    const showError = (message) => {
+      status.hidden = false;
+      status.classList.add('error');
+      status.textContent = message;  // textContent: never parsed as HTML
+    };
+
+    const U = window.CSpaceLabUrl;
+    const fromUrl = root.getAttribute('data-lab-config') === 'url';
+    const config = fromUrl ? location.search : (root.getAttribute('data-lab') || '');
+    const { values } = U.parseConfig(config);  // the shell reports this parse's problems
+    const uiAttr = root.getAttribute('data-lab-ui');
+    const ui = ['full', 'minimal'].includes(values.get('ui')) ? values.get('ui')
+             : ['full', 'minimal'].includes(uiAttr) ? uiAttr : fromUrl ? 'full' : 'minimal';
+    const single = !!document.getElementById('cspacelab-wasm');
+    let storageId = [values.get('id'), root.getAttribute('data-lab-id'), root.id].find((x) => x && U.ID.test(x));
+    if (!storageId) {
+      if (!fromUrl) storageId = 'lab-' + index;
+      else storageId = ui === 'minimal' && U.hasState(values) ? 'embed-' + U.stateKey(values).replace(':', '-') : 'main';
+    }
+    const options = {
+      config,
+      ui,
+      storageId,
+      scope: location.pathname.replace(/\/index\.html$/, '/'),
+      home: root.getAttribute('data-lab-home') || (single || (fromUrl && ui === 'full') ? pageUrl : base + 'index.html'),
+      base,
+      single,
+      // A lab with a page of its own has nothing to scroll: the wheel always zooms there.
+      guardWheel: !fromUrl || window.top !== window,
+    };
+    root.classList.toggle('lab-minimal', ui === 'minimal');
+    if (!fromUrl || window.top !== window) root.classList.add('lab-embedded');
+
+    // (Cheap: creating a WebGL context only to test for it would cost a context and ~100 ms.)
+    const noWebGl2 = 'C-Space Lab needs WebGL2, which this browser does not offer. Try a current Chrome, Firefox or Safari.';
+    if (typeof WebGL2RenderingContext === 'undefined') {
+      showError(noWebGl2);
+      return null;
+    }
+    let module;
+    try {
+      module = await window.createCSpaceLab({
+        canvas,
+        print: (text) => console.log(text),
+        printErr: (text) => {
+          if (/Could not create an OpenGL\/WebGL2 context/.test(text)) showError(noWebGl2);
+          else console.warn(text);
+        },
+        onAbort: (what) => showError('C-Space Lab stopped: ' + what),
+        instantiateWasm(imports, receive) {
+          compileWasm()
+            .then((m) => WebAssembly.instantiate(m, imports).then((instance) => receive(instance, m)))
+            .catch((err) => showError('C-Space Lab could not start: ' + (err && err.message ? err.message : err)));
+          return {};  // asynchronous
+        },
+      });
+    } catch (err) {
+      showError('C-Space Lab could not start: ' + (err && err.message ? err.message : err));
+      return null;
+    }
+    const api = new window.CSpaceLabApi(module);
+    const shell = new window.CSpaceLabShell(root, canvas, api, options);
+    api.shell = shell;
+    try {
+      await shell.init();
+    } catch (err) {
+      console.error('C-Space Lab: the page shell failed', err);
+    }
+    root.cspacelab = api;
+    registry.instances.push(api);
+    if (index === 0) window.cspacelab = api;  // the first lab in the page's order
     status.hidden = true;
-    canvas.focus();
-  }, (err) => showError('C-Space Lab could not start: ' + err));
+    if (fromUrl && ui === 'full' && window.top === window) canvas.focus({ preventScroll: true });
+    root.dispatchEvent(new CustomEvent('cspacelab-ready', { detail: api, bubbles: true }));
+    return api;
+  }
+
+  /** Starts every [data-lab] element not started yet; resolves to their APIs. */
+  registry.startAll = function startAll() {
+    ensureStyles();
+    const roots = Array.from(document.querySelectorAll('[data-lab]'));
+    return Promise.all(roots.map((root, i) => {
+      if (!root.cspacelabStarted) root.cspacelabStarted = start(root, i);
+      return root.cspacelabStarted;
+    }));
+  };
+
+  compileWasm();
+  const missing = PARTS.filter(([name]) => typeof window[name] === 'undefined').map(([, file]) => file);
+  const loaded = Promise.all(missing.map(load));
+  const domReady = document.readyState === 'loading'
+    ? new Promise((resolve) => document.addEventListener('DOMContentLoaded', resolve, { once: true }))
+    : Promise.resolve();
+  registry.ready = Promise.all([loaded, domReady]).then(registry.startAll, (err) => {
+    for (const root of document.querySelectorAll('[data-lab]')) {
+      const status = root.querySelector('.lab-status') || root.appendChild(document.createElement('div'));
+      status.className = 'lab-status error';
+      status.textContent = 'C-Space Lab could not start: ' + err.message;
+    }
+  });
 })();

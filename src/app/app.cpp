@@ -9,6 +9,7 @@
 #include "app/fonts.hpp"
 #include "app/js_api.hpp"
 #include "app/theme.hpp"
+#include "app/web_bridge.hpp"
 #include "core/version.hpp"
 
 namespace csl::app {
@@ -60,9 +61,10 @@ void App::register_api() {
                 {"vertices", f.vertices},
                 {"notice", ImGui::GetTime() < ctx_.notice_until ? ctx_.notice : ""}};
   });
-  api.add("lessons", "the lessons: [{id, name, category}]", [](const json&) {
+  api.add("lessons", "the lessons: [{id, name, category, open}] (open: started, has state)", [this](const json&) {
     json out = json::array();
-    for (const LessonInfo& l : lessons()) out.push_back({{"id", l.id}, {"name", l.name}, {"category", l.category}});
+    for (const LessonInfo& l : lessons())
+      out.push_back({{"id", l.id}, {"name", l.name}, {"category", l.category}, {"open", instances_.count(l.id) > 0}});
     return out;
   });
   api.add("select_lesson", "switch lesson: {id}", [this](const json& args) {
@@ -132,12 +134,16 @@ void App::register_api() {
                         {"points", points}};
           });
   // The whole state a link or an autosave needs to reproduce what is on screen exactly.
-  api.add("snapshot", "{lesson, scene, params, steps}: everything needed to restore this view exactly",
-          [this](const json&) {
-            return json{{"lesson", lesson_id_},
-                        {"scene", lesson_->scene() ? scene_to_json(*lesson_->scene()) : json(nullptr)},
-                        {"params", lesson_->params()},
-                        {"steps", lesson_->steps()}};
+  api.add("snapshot", "{lesson, scene, params, steps}: everything needed to restore this view exactly ({lesson: id}: an open lesson's)",
+          [this](const json& args) {
+            const std::string id = args.value("lesson", lesson_id_);
+            auto it = instances_.find(id);
+            if (it == instances_.end() || !it->second) throw ApiError("lesson: \"" + id + "\" is not open");
+            Lesson& l = *it->second;
+            return json{{"lesson", id},
+                        {"scene", l.scene() ? scene_to_json(*l.scene()) : json(nullptr)},
+                        {"params", l.params()},
+                        {"steps", l.steps()}};
           });
   api.add("restore", "restore a snapshot: {lesson, scene?, params?, steps?}; all checked before anything changes",
           [this](const json& args) {
@@ -157,6 +163,7 @@ void App::register_api() {
             select_lesson(id);
             return json{{"lesson", lesson_id_}, {"steps", lesson_->steps()}};
           });
+  web::register_api(api, ctx_);  // notify, page_state, bundled_scenes: the page around the app
   api.add("log", "the event log's lines", [this](const json&) {
     json out = json::array();
     for (const auto& [step, text] : ctx_.log.lines()) out.push_back({{"step", step}, {"text", text}});
@@ -165,6 +172,16 @@ void App::register_api() {
 }
 
 void App::top_bar() {
+  const LessonInfo* current_info = find_lesson(lesson_id_);
+  const std::string current_name = current_info ? current_info->name : lesson_id_;
+  if (web::page().minimal) {
+    // An embed shows one lesson: its name, and the page's actions.
+    ImGui::PushFont(fonts().title);
+    ImGui::TextUnformatted(current_name.c_str());
+    ImGui::PopFont();
+    web::top_bar_actions(ctx_, current_name);
+    return;
+  }
   ImGui::PushFont(fonts().title);
   ImGui::TextUnformatted("C-Space Lab");
   ImGui::PopFont();
@@ -184,9 +201,7 @@ void App::top_bar() {
     if (ImGui::Button(l.name.c_str())) select_lesson(l.id);
     if (current) ImGui::PopStyleColor();
   }
-  ImGui::SameLine(ImGui::GetWindowWidth() - 150);
-  ImGui::AlignTextToFramePadding();
-  ImGui::TextDisabled("v%s", kVersion);
+  web::top_bar_actions(ctx_, current_name);  // Share, Embed, File (or the version, without a page)
 }
 
 void App::playback_controls() {
@@ -240,7 +255,9 @@ void App::notice() {
   ImGui::Begin("##notice", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoFocusOnAppearing |
                    ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs);
+  ImGui::PushTextWrapPos(std::max(200.0f, vp->WorkSize.x * 0.7f));  // long notices wrap
   ImGui::TextColored(ImVec4(0.6f, 0.2f, 0.0f, 1.0f), "%s", ctx_.notice.c_str());
+  ImGui::PopTextWrapPos();
   ImGui::End();
 }
 

@@ -150,3 +150,28 @@ export async function inspectPng(browser, png, probes = []) {
     await page.close();
   }
 }
+
+/**
+ * Page coordinates of the centre of one of the app's page controls, by the name page_state
+ * reports (share, embed, file, import, export-scene, export-png, export-state, reset,
+ * reset-confirm, reset-cancel, restore-previous). `lab`: CSS selector of a [data-lab] element
+ * (default: window.cspacelab's). Null when the control is not on screen this frame.
+ */
+export async function pageButton(page, name, lab = null) {
+  const r = await page.evaluate(([n, sel]) => {
+    const a = sel ? document.querySelector(sel).cspacelab : window.cspacelab;
+    const rect = a.pageState().buttons[n];
+    const box = a.module.canvas.getBoundingClientRect();
+    return rect ? { x: box.left + (rect[0] + rect[2]) / 2, y: box.top + (rect[1] + rect[3]) / 2 } : null;
+  }, [name, lab]);
+  return r;
+}
+
+/** Waits for an instance on a page with several labs (`selector` of its [data-lab] element). */
+export async function openLabs(page, url, selectors) {
+  await page.goto(url);
+  await page.waitForFunction((sels) => sels.every((s) => {
+    const el = document.querySelector(s);
+    return el && el.cspacelab && el.cspacelab.status().frames >= 2;
+  }), selectors, { timeout: 30000 });
+}

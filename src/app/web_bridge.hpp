@@ -1,0 +1,34 @@
+#pragma once
+// The app's side of the page around it (web/lab-shell.js): the Share, Embed and File buttons
+// of the top bar, the "Reset lesson to default" confirmation, "Restore my previous work", and the
+// API commands the page answers through (notify, page_state, bundled_scenes).
+//
+// The buttons only ask; the page does the work (links, clipboard, downloads, file pickers,
+// localStorage): a button calls the page's Module.cslPageAction(name) (EM_JS). Until a page
+// shell has said hello through page_state (and always on the desktop) none of them is shown.
+#include <string>
+
+#include "app/context.hpp"
+#include "app/js_api.hpp"
+
+namespace csl::app::web {
+
+struct PageState {
+  bool attached = false;  ///< a page shell has announced itself (page_state {attached: true})
+  bool minimal = false;   ///< ui=minimal: an embed, no lesson menu
+  std::string previous;   ///< what the "previous work" slot holds (shown on its button), "" if empty
+};
+const PageState& page();
+
+/// Registers notify, page_state and bundled_scenes.
+void register_api(JsApi& api, LabContext& ctx);
+
+/// Draws the page's actions right-aligned on the top bar's current line (the version text
+/// alone when no page is attached), and the reset confirmation when it is open.
+void top_bar_actions(LabContext& ctx, const std::string& lesson_name);
+
+/// Asks the page to do `name` (share, embed, import, export-scene, export-png, export-state,
+/// reset, restore-previous, open-full); a no-op without a page.
+void page_action(const char* name);
+
+}  // namespace csl::app::web

@@ -1,0 +1,121 @@
+// web/lab-url.js under node (it runs unchanged there): strict parsing, exact round trips of
+// parameters and scenes through links, and the limits.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { createRequire } from 'node:module';
+import zlib from 'node:zlib';
+
+const require = createRequire(import.meta.url);
+const U = require('../../web/lab-url.js');
+
+// A small deterministic generator (xorshift32) for the property tests.
+function rng(seed) {
+  let s = seed >>> 0 || 1;
+  return () => {
+    s ^= s << 13; s >>>= 0;
+    s ^= s >>> 17;
+    s ^= s << 5; s >>>= 0;
+    return s / 4294967296;
+  };
+}
+
+function randomScene(r) {
+  const n = Math.floor(r() * 30);
+  const num = () => (r() < 0.2 ? Math.round(r() * 100) / 100 : r() * 2 - 0.5);  // short and full-precision values
+  const obstacles = [];
+  for (let i = 0; i < n; ++i) {
+    const k = r();
+    if (k < 0.4) obstacles.push({ type: 'disk', center: [num(), num()], radius: r() * 0.2 });
+    else if (k < 0.7) obstacles.push({ type: 'segment', a: [num(), num()], b: [num(), num()] });
+    else obstacles.push({ type: 'polygon', vertices: [[num(), num()], [num(), num()], [num(), num()]] });
+  }
+  return { version: 1, name: 'scène ' + Math.floor(r() * 1e6) + ' ✓ "q" <b>', workspace: { min: [0, 0], max: [1, 1] },
+           robot: { type: 'point' }, obstacles, start: [num(), num()], goal: [num(), num()] };
+}
+
+test('scenes survive encode/decode exactly, in both forms', async () => {
+  const r = rng(7);
+  for (let i = 0; i < 60; ++i) {
+    const scene = randomScene(r);
+    const z = await U.encodeScene(scene);
+    assert.match(z, /^z\.[A-Za-z0-9_-]+$/);
+    assert.deepEqual(await U.decodeScene(z), scene);
+    const j = 'j.' + U.toBase64Url(new TextEncoder().encode(JSON.stringify(scene)));
+    assert.deepEqual(await U.decodeScene(j), scene);
+    assert.ok(z.length < j.length, 'deflate makes it shorter');
+  }
+});
+
+test('decoding refuses what is not a scene, and stops zip bombs', async () => {
+  const bomb = 'z.' + zlib.deflateRawSync(Buffer.alloc(4 << 20, 32)).toString('base64url');
+  await assert.rejects(U.decodeScene(bomb), /more than 1\.0 MB once decompressed/);
+  await assert.rejects(U.decodeScene('x.abc'), /neither a bundled scene nor an encoded one/);
+  await assert.rejects(U.decodeScene('z.a'), /not base64url/);
+  await assert.rejects(U.decodeScene('z.a+b'), /not base64url/);
+  await assert.rejects(U.decodeScene('z.' + Buffer.from('junk').toString('base64url')), /not valid compressed data/);
+  await assert.rejects(U.decodeScene('j.' + Buffer.from([0xff, 0xfe]).toString('base64url')), /not UTF-8/);
+  await assert.rejects(U.decodeScene('j.' + Buffer.from('1').toString('base64url')), /not a JSON object/);
+  await assert.rejects(U.decodeScene('j.' + Buffer.from('{"a":').toString('base64url')), /not JSON/);
+  await assert.rejects(U.decodeScene('j.' + 'A'.repeat(70000)), /more than a link may carry/);
+});
+
+test('parseConfig: values by key, and every problem named', () => {
+  const { values, problems } = U.parseConfig('?lesson=step-prm&neighbors=k%3A8&p=0.5,1e-3&seed=7&seed=8&Bad=1&x%ZZ=2&&scene=' +
+                                              'z.' + 'A'.repeat(70000) + '&c=%E0%A4%A&name=a+b');
+  assert.deepEqual([...values], [['lesson', 'step-prm'], ['neighbors', 'k:8'], ['p', '0.5,1e-3'], ['name', 'a b']]);
+  assert.deepEqual(problems, ['seed is given more than once', '"Bad" is not a parameter', '"x%ZZ" is not a parameter',
+                              'scene: 68 KB is more than a link may carry (64 KB)', 'c: "%E0%A4%A" is not properly escaped']);
+  assert.deepEqual(U.parseConfig('').values.size, 0);
+  assert.deepEqual(U.parseConfig(null).values.size, 0);
+  const many = U.parseConfig(Array.from({ length: 100 }, (_, i) => `k${i}=1`).join('&'));
+  assert.equal(many.values.size, 64);
+  assert.match(many.problems[0], /100 parts; at most 64/);
+  assert.equal(U.parseConfig('a=' + 'x'.repeat(300)).problems[0], 'a: 300 characters is more than a link may carry (256 characters)');
+  assert.equal(U.hasState(U.parseConfig('ui=minimal&id=x').values), false);
+  assert.equal(U.hasState(U.parseConfig('ui=minimal&steps=3').values), true);
+});
+
+test('parseValue follows the type of the current value, strictly', () => {
+  assert.equal(U.parseValue('7', 1), 7);
+  assert.equal(U.parseValue('-0.25', 1), -0.25);
+  assert.equal(U.parseValue('1e-3', 1), 0.001);
+  for (const bad of ['', ' 7', '7 ', '0x10', '1e', '--1', 'NaN', 'Infinity', '1,2', '1'.repeat(41)])
+    assert.throws(() => U.parseValue(bad, 1), /not a number/, JSON.stringify(bad));
+  assert.throws(() => U.parseValue('1e999', 1), /out of range/);
+  assert.deepEqual(U.parseValue('0.5,-1', [0, 0]), [0.5, -1]);
+  assert.throws(() => U.parseValue('0.5', [0, 0]), /not 2 comma-separated numbers/);
+  assert.equal(U.parseValue('true', false), true);
+  assert.throws(() => U.parseValue('yes', false), /not true or false/);
+  assert.equal(U.parseValue('<script>', 'k:10'), '<script>', 'strings go to the app, which checks them');
+  assert.throws(() => U.parseValue('{}', { a: 1 }), /cannot be set from a link/);
+});
+
+test('buildQuery writes what parseConfig reads back, numbers to the last bit', async () => {
+  const r = rng(99);
+  for (let i = 0; i < 200; ++i) {
+    const params = { seed: Math.floor(r() * 2 ** 40), p: [r() * 10 - 5, r() / 3], radius: r() * 1e-7, neighbors: 'radius:' + r(), on: r() < 0.5 };
+    const snapshot = { lesson: 'step-prm', scene: null, params, steps: Math.floor(r() * 1e6) };
+    const { query, problems } = await U.buildQuery(snapshot);
+    assert.deepEqual(problems, []);
+    const { values, problems: p2 } = U.parseConfig(query);
+    assert.deepEqual(p2, []);
+    assert.equal(values.get('lesson'), 'step-prm');
+    assert.equal(Number(values.get('steps')), snapshot.steps);
+    for (const [k, v] of Object.entries(params)) assert.deepEqual(U.parseValue(values.get(k), v), v, k);
+  }
+  const bundled = { p12: { version: 1, name: 'P12' } };
+  assert.match((await U.buildQuery({ lesson: 'collision', scene: { version: 1, name: 'P12' }, params: {}, steps: 0 }, bundled)).query,
+               /^lesson=collision&scene=p12&steps=0$/);
+  const big = { version: 1, obstacles: Array.from({ length: 400 }, (_, i) => ({ type: 'disk', center: [Math.sin(i), Math.cos(i * 7)], radius: 0.01 + i / 1e4 })) };
+  const { problems } = await U.buildQuery({ lesson: 'x', scene: big, params: { obj: { a: 1 } }, steps: 1 });
+  assert.match(problems[0], /the scene takes \d+ KB in a link, more than the 6 KB links may hold/);
+  assert.match(problems[1], /obj cannot be written in a link/);
+});
+
+test('messages quote untrusted text short and printable', () => {
+  assert.equal(U.excerpt('abc'), '"abc"');
+  assert.equal(U.excerpt('a\u0000b\nc\u202e'), '"a?b?c\u202e"');
+  assert.equal(U.excerpt('x'.repeat(30)), '"' + 'x'.repeat(24) + '…"');
+  assert.equal(U.hash('lesson=p12'), U.hash('lesson=p12'));
+  assert.notEqual(U.hash('a'), U.hash('b'));
+});
