@@ -174,34 +174,61 @@ void App::register_api() {
 void App::top_bar() {
   const LessonInfo* current_info = find_lesson(lesson_id_);
   const std::string current_name = current_info ? current_info->name : lesson_id_;
-  if (web::page().minimal) {
-    // An embed shows one lesson: its name, and the page's actions.
-    ImGui::PushFont(fonts().title);
-    ImGui::TextUnformatted(current_name.c_str());
-    ImGui::PopFont();
-    web::top_bar_actions(ctx_, current_name);
-    return;
-  }
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float right = ImGui::GetWindowContentRegionMax().x;  // window-local, like the cursor
+  const float actions_w = web::top_bar_actions_width();
   ImGui::PushFont(fonts().title);
-  ImGui::TextUnformatted("C-Space Lab");
+  ImGui::TextUnformatted(web::page().minimal ? current_name.c_str() : "C-Space Lab");
   ImGui::PopFont();
   ImGui::SameLine(0, 24);
-  // One button per lesson, grouped by category.
-  std::string category;
-  for (const LessonInfo& l : lessons()) {
-    if (l.category != category) {
-      category = l.category;
-      ImGui::SameLine(0, 18);
-      ImGui::AlignTextToFramePadding();
-      ImGui::TextDisabled("%s:", category.c_str());
+  const ImVec2 first_row = ImGui::GetCursorPos();
+  if (!web::page().minimal) {
+    // One button per lesson, grouped by category, in rows under each other when the window is
+    // too narrow: the first row leaves room for the page's actions, so no button is ever
+    // pushed off the edge (a restore button appearing must not hide Share or a lesson).
+    const float indent = first_row.x;
+    bool first = true, on_first_row = true;
+    // Places the next `w` pixels wide: after the last item with `gap`, or at a new row.
+    auto place = [&](float w, float gap) {
+      if (first) {
+        first = false;
+        return;
+      }
+      const float x = ImGui::GetItemRectMax().x - ImGui::GetWindowPos().x + gap;
+      const float limit = on_first_row ? right - actions_w - 24 : right;
+      if (x + w <= limit) {
+        ImGui::SameLine(0, gap);
+      } else {
+        on_first_row = false;
+        ImGui::SetCursorPosX(indent);
+      }
+    };
+    std::string category;
+    for (const LessonInfo& l : lessons()) {
+      const float button_w = ImGui::CalcTextSize(l.name.c_str()).x + style.FramePadding.x * 2;
+      if (l.category != category) {
+        category = l.category;
+        const std::string label = category + ":";
+        // The label keeps its first lesson on the same row.
+        place(ImGui::CalcTextSize(label.c_str()).x + style.ItemSpacing.x + button_w, 18);
+        ImGui::AlignTextToFramePadding();
+        ImGui::TextDisabled("%s", label.c_str());
+        ImGui::SameLine();
+      } else {
+        place(button_w, style.ItemSpacing.x);
+      }
+      const bool current = l.id == lesson_id_;
+      if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+      if (ImGui::Button(l.name.c_str())) select_lesson(l.id);
+      if (current) ImGui::PopStyleColor();
     }
-    ImGui::SameLine();
-    const bool current = l.id == lesson_id_;
-    if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
-    if (ImGui::Button(l.name.c_str())) select_lesson(l.id);
-    if (current) ImGui::PopStyleColor();
   }
-  web::top_bar_actions(ctx_, current_name);  // Share, Embed, File (or the version, without a page)
+  // The page's actions (Share, Embed, File; or the version without a page), right-aligned on
+  // the first row; then the cursor goes back under the lowest row.
+  const ImVec2 below = ImGui::GetCursorPos();
+  ImGui::SetCursorPos(ImVec2(std::max(first_row.x, right - actions_w), first_row.y));
+  web::top_bar_actions(ctx_, current_name);
+  ImGui::SetCursorPos(ImVec2(ImGui::GetCursorStartPos().x, std::max(below.y, ImGui::GetCursorPos().y)));
 }
 
 void App::playback_controls() {

@@ -152,24 +152,31 @@ void register_api(JsApi& api, LabContext& ctx) {
   });
 }
 
+namespace {
+const char* const kRestore = "Restore my previous work";
+const char* const kActions[] = {"Share", "Embed", "File"};
+}  // namespace
+
+float top_bar_actions_width() {
+  const PageState& s = state();
+  const ImGuiStyle& style = ImGui::GetStyle();
+  if (!s.attached) return ImGui::CalcTextSize("v").x + ImGui::CalcTextSize(kVersion).x;
+  float width = -style.ItemSpacing.x;
+  for (const char* l : kActions) width += button_width(l) + style.ItemSpacing.x;
+  if (!s.previous.empty()) width += button_width(kRestore) + style.ItemSpacing.x;
+  return width;
+}
+
 void top_bar_actions(LabContext& ctx, const std::string& lesson_name) {
   (void)ctx;
   const PageState& s = state();
-  const ImGuiStyle& style = ImGui::GetStyle();
   rects().clear();
   if (!s.attached) {
-    ImGui::SameLine(ImGui::GetWindowWidth() - 150);
     ImGui::AlignTextToFramePadding();
     ImGui::TextDisabled("v%s", kVersion);
     return;
   }
-  const char* restore = "Restore my previous work";
-  const char* labels[] = {"Share", "Embed", "File"};
-  float width = 0;
-  for (const char* l : labels) width += button_width(l) + style.ItemSpacing.x;
-  if (!s.previous.empty()) width += button_width(restore) + style.ItemSpacing.x;
-  ImGui::SameLine(std::max(ImGui::GetCursorPosX(), ImGui::GetWindowWidth() - width - style.WindowPadding.x));
-
+  const char* restore = kRestore;
   if (!s.previous.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.98f, 0.86f, 0.55f, 1.0f));
     if (ImGui::Button(restore)) page_action("restore-previous");

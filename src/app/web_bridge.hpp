@@ -23,8 +23,11 @@ const PageState& page();
 /// Registers notify, page_state and bundled_scenes.
 void register_api(JsApi& api, LabContext& ctx);
 
-/// Draws the page's actions right-aligned on the top bar's current line (the version text
-/// alone when no page is attached), and the reset confirmation when it is open.
+/// The width top_bar_actions needs on one line (it grows by the restore button).
+float top_bar_actions_width();
+
+/// Draws the page's actions from the cursor on (the version text alone when no page is
+/// attached), and the reset confirmation when it is open. The caller places them.
 void top_bar_actions(LabContext& ctx, const std::string& lesson_name);
 
 /// Asks the page to do `name` (share, embed, import, export-scene, export-png, export-state,

@@ -34,12 +34,12 @@ test('garbage values: an in-app notice, the defaults, nothing else', async () =>
     const defaults = await api(clean, 'snapshot');
 
     const { page, errors, dialogs } = await fresh(browser);
-    await openLab(page, url + '?lesson=no-such-lesson&scene=%%%25&steps=12abc&ui=huge&id=a%20b&bogus=1&x%ZZ=1&BAD=2&&=&seed=3');
+    await openLab(page, url + '?lesson=no-such-lesson&scene=%%%25&steps=12abc&ui=huge&id=a%20b&bogus=1&x%ZZ=1&BAD=2&&=&grid_n=3');
     const notice = (await api(page, 'status')).notice;
     await screenshot(page, 'url-garbage.png');
     for (const part of [/lesson "no-such-lesson" \(there is no such lesson\)/, /scene: /, /steps "12abc"/, /ui "huge"/,
                         /id "a b"/, /bogus \(not a parameter/, /"x%ZZ" is not a parameter/, /"BAD" is not a parameter/,
-                        /seed \(not a parameter of /])
+                        /grid_n \(not a parameter of /])
       assert.match(notice, part);
     assert.deepEqual(await api(page, 'snapshot'), defaults, 'the first lesson, exactly as it starts');
     assert.equal(await dom(page), cleanDom, 'no element added');
