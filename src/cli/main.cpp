@@ -15,7 +15,8 @@ namespace csl::cli {
 namespace {
 
 const Command* const kCommands[] = {&kValidateCommand, &kCheckCommand,      &kDistanceCommand,   &kCspaceOfCommand,
-                                    &kPlanCommand,     &kBoundCommand,      &kVisibilityCommand, &kExperimentCommand};
+                                    &kPlanCommand,     &kBoundCommand,      &kVisibilityCommand, &kExperimentCommand,
+                                    &kPotentialCommand, &kDescendCommand};
 
 const Command* find_command(const std::string& name) {
   for (const Command* c : kCommands)
