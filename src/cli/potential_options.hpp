@@ -32,7 +32,7 @@ nlohmann::json vec2_json(const Vec2& v);
   "  --zeta Z      attractive gain (default 1)\n"                                                \
   "  --switch D    d, where the attraction turns from quadratic to conic (default 0.2)\n"        \
   "  --eta E       repulsive gain (default 0.0001: in a unit workspace the push matches the\n"   \
-  "                largest pull, d zeta = 0.2, at rho ~ 0.05, and is 10 at rho = 0.02)\n"       \
+  "                largest pull, d zeta = 0.2, at rho ~ 0.06, and is 10 at rho = 0.02)\n"       \
   "  --rho0 R      an obstacle's region of influence (default 0.1)\n"
 
 namespace csl::cli {

@@ -39,7 +39,7 @@ namespace csl {
 
 /// The field's constants, the same at every control point. Defaults suit a unit workspace: a
 /// control point feels at most d zeta = 0.2 of attraction; the repulsion matches that at about
-/// rho = 0.05 and is 10 at rho = 0.02 (and only within rho0 = 0.1 of an obstacle).
+/// rho = 0.06 and is 10 at rho = 0.02 (and only within rho0 = 0.1 of an obstacle).
 struct PotentialParams {
   double zeta = 1.0;             ///< attractive gain
   double switch_distance = 0.2;  ///< d: quadratic within d of the goal position, conic beyond

@@ -6,8 +6,8 @@
 //      (or, with a local connector, if the connector finds a path it proves free: section 2.4);
 //   4. if q_init and q_final are connected, that sequence of edges is the path; else no path.
 // step() does one unit of work and returns what it did: add one endpoint, draw one sample,
-// find one vertex's neighbours, check one candidate edge (with the chosen edge checker, run to
-// its end), or search the graph once. Budgets are counts, never time; nothing runs in threads.
+// find one vertex's neighbours, check one candidate edge (with the chosen edge checker or local
+// connector, run to its end), or search the graph once. Budgets are counts, never time; nothing runs in threads.
 // Steps are deterministic from (world, start, goal, params), so going back to step k is a
 // replay of k steps from the start and gives the identical state.
 #include <cstdint>
@@ -44,10 +44,10 @@ struct PrmParams {
   /// otherwise the connector's path, with seed pair_seed(seed, a, b) for the pair a < b.
   std::shared_ptr<const LocalConnector> connector;
 };
+inline constexpr int kMaxPrmSamples = 1000000;
 
 /// The seed a local connector gets for vertices a < b: splitmix64 of the PRM seed and the pair.
 std::uint64_t pair_seed(std::uint64_t seed, int a, int b);
-inline constexpr int kMaxPrmSamples = 1000000;
 
 enum class PrmPhase { Endpoints, Sampling, Connecting, Query, Done };
 const char* phase_name(PrmPhase p);
