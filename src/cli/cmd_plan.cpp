@@ -2,6 +2,7 @@
 #include <chrono>
 
 #include "cli/commands.hpp"
+#include "core/potential_connector.hpp"
 
 namespace csl::cli {
 namespace {
@@ -16,6 +17,9 @@ int run_plan(Args& args) {
   const auto samples = args.take("samples");
   const PlannerOptions options = take_planner_options(args);
   const bool roadmap_out = args.take_flag("roadmap");
+  const std::string connector = args.take("connector").value_or("straight");
+  if (connector != "straight" && connector != "potential")
+    throw UsageError("--connector: '" + connector + "' is not straight or potential");
   const std::string path = args.take_positional("SCENE.json");
   args.finish();
 
@@ -28,6 +32,7 @@ int run_plan(Args& args) {
   params.neighbors = options.neighbors;
   params.checker = options.checker;
   params.seed = options.seed;
+  if (connector == "potential") params.connector = std::make_shared<const PotentialConnector>();
   Prm prm(world, scene.start, scene.goal, params);
 
   const auto t0 = std::chrono::steady_clock::now();
@@ -39,7 +44,7 @@ int run_plan(Args& args) {
 
   const Roadmap& r = prm.roadmap();
   json path_json = json::array();
-  for (int v : prm.path()) path_json.push_back(config_to_json(r.vertices[static_cast<std::size_t>(v)]));
+  for (const Config& q : prm.path_configurations()) path_json.push_back(config_to_json(q));
   char hash[32];
   std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(roadmap_hash(r)));
   json out{{"solved", prm.solved()},
@@ -55,6 +60,7 @@ int run_plan(Args& args) {
            {"samples", params.samples},
            {"neighbors", params.neighbors.name()},
            {"checker", params.checker.name()},
+           {"connector", connector},
            {"seed", params.seed},
            {"steps", prm.steps()},
            {"roadmap_hash", hash}};
@@ -75,17 +81,25 @@ int run_plan(Args& args) {
 const Command kPlanCommand{
     "plan", "plan from start to goal with the probabilistic roadmap method",
     "Usage: cspacelab plan SCENE.json [--samples N] [--k K | --radius R | --prm-star]\n"
-    "                      [--checker bisection|grid:N|step:D] [--seed S] [--roadmap]\n\n"
+    "                      [--checker bisection|grid:N|step:D] [--seed S] [--roadmap]\n"
+    "                      [--connector straight|potential]\n\n"
     "Runs PRM as the homework states it: add start and goal to V; draw N samples (default 200)\n"
     "uniformly in the configuration space and keep the free ones; for each vertex, check the\n"
     "straight line to each close vertex (the K nearest, default 10; all within distance R; or\n"
     "PRM*'s k(n) = ceil(e (1 + 1/d) ln n)) with the chosen checker (default bisection, exact);\n"
     "then search the graph (A*). The path's edges are re-checked exactly; an edge that fails is\n"
     "removed and the search repeated. The same scene, options and seed (default 1) give the\n"
-    "same roadmap on every machine and in the browser.\n\n"
-    "Output: {\"solved\": bool, \"path\": [Q, ...], \"path_length\": x|null, \"nodes\": int,\n"
-    "  \"edges\": int, \"components\": int, \"edge_checks\": int, \"evaluations\": int,\n"
-    "  \"build_seconds\": x, \"query_seconds\": x, \"samples\", \"neighbors\", \"checker\", \"seed\",\n"
+    "same roadmap on every machine and in the browser.\n"
+    "--connector potential joins close vertices by gradient descent on the potential field\n"
+    "toward the other vertex instead of the straight line (homework section 2.4; see\n"
+    "`cspacelab help potential`; here a gentle field, eta = 1e-6 and rho0 = 0.05, steps of\n"
+    "0.01, at most 200, tolerance 0.02, no escapes): an edge exists if the descent gets there;\n"
+    "its pieces are proven free by the exact check (--checker then plays no part). The path\n"
+    "then runs through the descents' waypoints.\n\n"
+    "Output: {\"solved\": bool, \"path\": [Q, ...] (with any connector's waypoints),\n"
+    "  \"path_length\": x|null, \"nodes\": int, \"edges\": int, \"components\": int,\n"
+    "  \"edge_checks\": int, \"evaluations\": int, \"build_seconds\": x, \"query_seconds\": x,\n"
+    "  \"samples\", \"neighbors\", \"checker\", \"connector\", \"seed\",\n"
     "  \"steps\": the planner's step count, \"roadmap_hash\": 16 hex digits (FNV-1a of V and E)}\n"
     "With --roadmap also \"vertices\": [Q, ...] and \"edge_list\": [[a, b], ...] (indices into\n"
     "vertices; 0 is the start, 1 the goal).\n"

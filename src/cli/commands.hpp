@@ -26,6 +26,8 @@ extern const Command kBoundCommand;
 extern const Command kVisibilityCommand;
 extern const Command kExperimentCommand;
 extern const Command kCspaceCommand;
+extern const Command kPotentialCommand;
+extern const Command kDescendCommand;
 
 /// Reads a whole file; UsageError naming the path if it cannot be read.
 std::string read_file(const std::string& path);

@@ -1,5 +1,6 @@
 #include "core/prm.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -68,20 +69,34 @@ std::uint64_t roadmap_hash(const Roadmap& r) {
       h *= 0x100000001b3ull;
     }
   };
-  mix(r.vertices.size());
-  for (const Config& q : r.vertices)
+  const auto mix_config = [&mix](const Config& q) {
     for (Eigen::Index i = 0; i < q.size(); ++i) {
       std::uint64_t bits;
       std::memcpy(&bits, &q[i], sizeof bits);
       mix(bits);
     }
+  };
+  mix(r.vertices.size());
+  for (const Config& q : r.vertices) mix_config(q);
   mix(r.edges.size());
   for (const RoadmapEdge& e : r.edges) {
     mix(static_cast<std::uint64_t>(e.a));
     mix(static_cast<std::uint64_t>(e.b));
     mix(e.alive ? 1u : 0u);
+    if (e.waypoints.empty()) continue;  // straight lines: the hash of before connectors existed
+    mix(e.waypoints.size());
+    for (const Config& w : e.waypoints) mix_config(w);
   }
   return h;
+}
+
+std::uint64_t pair_seed(std::uint64_t seed, int a, int b) {
+  // splitmix64's finaliser over the seed and the pair packed into one word.
+  std::uint64_t z = seed + 0x9E3779B97F4A7C15ull * (1u + ((static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
+                                                          static_cast<std::uint32_t>(b)));
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
 }
 
 Prm::Prm(const CollisionWorld& world, Config start, Config goal, PrmParams params)
@@ -113,6 +128,7 @@ void Prm::reset() {
   candidates_.clear();
   next_candidate_ = 0;
   path_.clear();
+  path_edges_.clear();
   path_length_ = 0.0;
   edge_checks_ = evaluations_ = edges_alive_ = 0;
 }
@@ -244,6 +260,10 @@ void Prm::check_candidate() {
   const Neighbor candidate = candidates_[next_candidate_++];
   const int q = candidate.index;
   const auto up = static_cast<std::size_t>(p_), uq = static_cast<std::size_t>(q);
+  if (params_.connector) {
+    connect_candidate(q);
+    return;
+  }
   checker_.reset(roadmap_.vertices[up], roadmap_.vertices[uq], true, roadmap_.clearance[up], roadmap_.clearance[uq]);
   while (!checker_.done()) checker_.step();
   ++edge_checks_;
@@ -264,6 +284,60 @@ void Prm::check_candidate() {
   }
 }
 
+void Prm::connect_candidate(int q) {
+  const auto up = static_cast<std::size_t>(p_), uq = static_cast<std::size_t>(q);
+  const int a = std::min(p_, q), b = std::max(p_, q);
+  // From the vertex being connected toward its candidate, as the straight line is checked.
+  LocalPath path = params_.connector->connect(*world_, roadmap_.vertices[up], roadmap_.vertices[uq],
+                                              pair_seed(params_.seed, a, b));
+  ++edge_checks_;
+  evaluations_ += path.evaluations;
+  PrmEvent& e = event_;
+  e.vertex = p_;
+  e.other = q;
+  e.evaluations = static_cast<int>(std::min<long>(path.evaluations, std::numeric_limits<int>::max()));
+  if (!path.connected) {
+    e.kind = PrmEvent::Kind::EdgeRejected;
+    return;
+  }
+  e.kind = PrmEvent::Kind::EdgeAdded;
+  if (p_ > q) std::reverse(path.waypoints.begin(), path.waypoints.end());  // stored from a to b
+  roadmap_.edges.push_back({a, b, path.length, true, std::move(path.waypoints)});
+  ++edges_alive_;
+  components_.unite(p_, q);
+}
+
+bool Prm::verify_edge(const RoadmapEdge& r, double& collision_t) {
+  const Config* from = &roadmap_.vertices[static_cast<std::size_t>(r.a)];
+  for (std::size_t i = 0; i <= r.waypoints.size(); ++i) {
+    const Config& to = i < r.waypoints.size() ? r.waypoints[i] : roadmap_.vertices[static_cast<std::size_t>(r.b)];
+    exact_.reset(*from, to);
+    while (!exact_.done()) exact_.step();
+    if (exact_.verdict() != Verdict::Free) {
+      collision_t = *exact_.collision_t();
+      return false;
+    }
+    from = &to;
+  }
+  return true;
+}
+
+std::vector<Config> Prm::path_configurations() const {
+  std::vector<Config> out;
+  if (path_.empty()) return out;
+  out.push_back(roadmap_.vertices[static_cast<std::size_t>(path_.front())]);
+  for (std::size_t k = 0; k < path_edges_.size(); ++k) {
+    const RoadmapEdge& r = roadmap_.edges[static_cast<std::size_t>(path_edges_[k])];
+    const bool forward = r.a == path_[k];  // the waypoints run from a to b
+    if (forward)
+      out.insert(out.end(), r.waypoints.begin(), r.waypoints.end());
+    else
+      out.insert(out.end(), r.waypoints.rbegin(), r.waypoints.rend());
+    out.push_back(roadmap_.vertices[static_cast<std::size_t>(path_[k + 1])]);
+  }
+  return out;
+}
+
 void Prm::query() {
   std::vector<GraphEdge> graph;
   graph.reserve(roadmap_.edges.size());
@@ -282,12 +356,12 @@ void Prm::query() {
     return;
   }
   // Re-verify every edge of the path with the exact check (a grid checker may have let an edge
-  // through a thin obstacle). A failed edge is removed and the search runs again next step.
+  // through a thin obstacle; a connector's path is checked piece by piece). A failed edge is
+  // removed and the search runs again next step.
   for (int edge : via) {
     RoadmapEdge& r = roadmap_.edges[static_cast<std::size_t>(edge)];
-    exact_.reset(vertices[static_cast<std::size_t>(r.a)], vertices[static_cast<std::size_t>(r.b)]);
-    while (!exact_.done()) exact_.step();
-    if (exact_.verdict() == Verdict::Free) continue;
+    double collision_t = 0.0;
+    if (verify_edge(r, collision_t)) continue;
     r.alive = false;
     --edges_alive_;
     components_.reset(static_cast<int>(vertices.size()));
@@ -296,10 +370,11 @@ void Prm::query() {
     e.kind = PrmEvent::Kind::PathEdgeRemoved;
     e.vertex = r.a;
     e.other = r.b;
-    e.collision_t = *exact_.collision_t();
+    e.collision_t = collision_t;
     return;
   }
   path_ = path;
+  path_edges_ = via;
   path_length_ = 0.0;
   for (int edge : via) path_length_ += roadmap_.edges[static_cast<std::size_t>(edge)].length;
   e.kind = PrmEvent::Kind::PathFound;

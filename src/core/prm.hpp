@@ -2,20 +2,23 @@
 // The probabilistic roadmap method as the homework states it (section 2), as a stepper:
 //   1. add q_init and q_final to V;
 //   2. n times: sample q uniformly in Q, add it to V if it is free;
-//   3. for each p in V, for each q != p close to p: add (p, q) to E if the straight line is free;
+//   3. for each p in V, for each q != p close to p: add (p, q) to E if the straight line is free
+//      (or, with a local connector, if the connector finds a path it proves free: section 2.4);
 //   4. if q_init and q_final are connected, that sequence of edges is the path; else no path.
 // step() does one unit of work and returns what it did: add one endpoint, draw one sample,
-// find one vertex's neighbours, check one candidate edge (with the chosen edge checker, run to
-// its end), or search the graph once. Budgets are counts, never time; nothing runs in threads.
+// find one vertex's neighbours, check one candidate edge (with the chosen edge checker or local
+// connector, run to its end), or search the graph once. Budgets are counts, never time; nothing runs in threads.
 // Steps are deterministic from (world, start, goal, params), so going back to step k is a
 // replay of k steps from the start and gives the identical state.
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "core/edge_check.hpp"
 #include "core/graph.hpp"
+#include "core/local_connector.hpp"
 #include "core/nearest.hpp"
 
 namespace csl {
@@ -37,8 +40,14 @@ struct PrmParams {
   NeighborRule neighbors;
   EdgeCheckerSpec checker;  ///< default: exact bisection
   std::uint64_t seed = 1;
+  /// How close pairs are joined: null (the default) = the straight line, checked by `checker`;
+  /// otherwise the connector's path, with seed pair_seed(seed, a, b) for the pair a < b.
+  std::shared_ptr<const LocalConnector> connector;
 };
 inline constexpr int kMaxPrmSamples = 1000000;
+
+/// The seed a local connector gets for vertices a < b: splitmix64 of the PRM seed and the pair.
+std::uint64_t pair_seed(std::uint64_t seed, int a, int b);
 
 enum class PrmPhase { Endpoints, Sampling, Connecting, Query, Done };
 const char* phase_name(PrmPhase p);
@@ -52,8 +61,10 @@ struct PrmEvent {
     SampleRejected,       ///< sample q is in collision with `obstacle`
     Neighbors,            ///< `vertex` is being connected: `candidates` new pairs to check
     EdgeAdded,            ///< (vertex, other) proven free and added to E
-    EdgeRejected,         ///< (vertex, other) in collision at collision_t
+    EdgeRejected,         ///< (vertex, other) in collision at collision_t (NaN: the local
+                          ///< connector found no path)
     PathEdgeRemoved,      ///< an edge of the found path failed the exact re-check: removed
+                          ///< (collision_t: on the failing straight piece of the edge)
     PathFound,            ///< q_init and q_final connected: path_length
     NoPath,               ///< not connected: PRM declares no path
   };
@@ -65,7 +76,7 @@ struct PrmEvent {
   Config q;           ///< the sample or endpoint
   int obstacle = -1;  ///< the obstacle hit (rejected sample, endpoint in collision)
   int candidates = 0;
-  int evaluations = 0;  ///< configurations the edge check evaluated
+  int evaluations = 0;  ///< configurations the edge check (or the connector) evaluated
   double collision_t = std::numeric_limits<double>::quiet_NaN();
   double path_length = 0.0;
 };
@@ -73,8 +84,10 @@ const char* event_kind_name(PrmEvent::Kind k);
 
 struct RoadmapEdge {
   int a, b;  ///< vertex indices, a < b
-  double length;
+  double length;  ///< in the space's metric (of the whole polyline, for a connector's path)
   bool alive = true;  ///< false once removed by the path re-check
+  /// A local connector's path from a to b, endpoints excluded; empty: the straight line.
+  std::vector<Config> waypoints = {};
 };
 
 struct Roadmap {
@@ -83,7 +96,8 @@ struct Roadmap {
   std::vector<RoadmapEdge> edges;  ///< E in the order they were added
 };
 
-/// FNV-1a hash of the roadmap: vertex coordinates (bits), then edges (a, b, alive).
+/// FNV-1a hash of the roadmap: vertex coordinates (bits), then edges (a, b, alive, and for an
+/// edge with waypoints their number and bits: straight-line roadmaps hash as they always did).
 std::uint64_t roadmap_hash(const Roadmap& r);
 
 class Prm {
@@ -112,6 +126,11 @@ class Prm {
   bool solved() const { return !path_.empty(); }
   /// Vertex indices from q_init to q_final (empty unless solved()).
   const std::vector<int>& path() const { return path_; }
+  /// The roadmap edges of the path, in order from q_init (empty unless solved()).
+  const std::vector<int>& path_edges() const { return path_edges_; }
+  /// The path as configurations: its vertices with each edge's waypoints in between, in order
+  /// from q_init to q_final (the straight pieces between consecutive ones are all free).
+  std::vector<Config> path_configurations() const;
   double path_length() const { return path_length_; }
   /// Number of connected components of (V, E).
   int components() { return components_.sets(); }
@@ -130,7 +149,12 @@ class Prm {
   void begin_connecting();
   void find_candidates();
   void check_candidate();
+  // check_candidate() with params_.connector: the connector's path or nothing.
+  void connect_candidate(int q);
   void query();
+  // Whether every straight piece of edge r is free by the exact check; on failure, the
+  // collision's t on the failing piece.
+  bool verify_edge(const RoadmapEdge& r, double& collision_t);
 
   const CollisionWorld* world_;
   Config start_, goal_;
@@ -152,6 +176,7 @@ class Prm {
   std::size_t next_candidate_ = 0;
   std::vector<Neighbor> scratch_;
   std::vector<int> path_;
+  std::vector<int> path_edges_;
   double path_length_ = 0.0;
   long edge_checks_ = 0, evaluations_ = 0, edges_alive_ = 0;
 };
