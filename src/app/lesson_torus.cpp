@@ -12,6 +12,7 @@
 
 #include "app/bundled_scenes.hpp"
 #include "app/draw.hpp"
+#include "app/field_draw.hpp"
 #include "app/js_api.hpp"
 #include "app/lesson.hpp"
 #include "app/prm_controls.hpp"
@@ -364,7 +365,7 @@ class TorusLesson : public Lesson {
     ctx.views["cspace"] = &cspace_view_;
     cspace_view_.draw_grid("theta1", "theta2");
     cspace_view_.push_clip();
-    draw_cobstacles();
+    draw_arm_cobstacles(cspace_view_, *map_, kCObstacle);
     const Space& space = world_->space();
     refresh_labels();
     roadmap_layer_.draw(cspace_view_, space, prm_->roadmap(), labels_, (static_cast<long long>(version_) << 32) + prm_->steps());
@@ -406,26 +407,6 @@ class TorusLesson : public Lesson {
       exercise_ = Exercise::None;
       animate_ = false;
       push_trail();
-    }
-  }
-
-  // Columns of the square, one device pixel wide, each filled where theta2 is blocked; the
-  // intervals come from the analytic map, so the horizontal edges are exact.
-  void draw_cobstacles() {
-    WorkspaceView& v = cspace_view_;
-    ImDrawList* dl = v.draw_list();
-    const float dpr = ImGui::GetIO().DisplayFramebufferScale.x > 0 ? ImGui::GetIO().DisplayFramebufferScale.x : 1.0f;
-    const ImVec2 lo = v.to_screen(Vec2(-kPi, -kPi)), hi = v.to_screen(Vec2(kPi, kPi));
-    const float x0 = std::max(lo.x, v.canvas_min().x), x1 = std::min(hi.x, v.canvas_max().x);
-    const float column = 1.0f / dpr;
-    std::vector<AngleInterval> blocked;
-    for (float x = x0; x < x1; x += column) {
-      const double theta1 = v.to_world(ImVec2(x + 0.5f * column, lo.y)).x();
-      map_->blocked_theta2(theta1, blocked);
-      for (const AngleInterval& b : blocked) {
-        const float ya = v.to_screen(Vec2(theta1, b.lo)).y, yb = v.to_screen(Vec2(theta1, b.hi)).y;
-        dl->AddRectFilled(ImVec2(x, yb), ImVec2(x + column, ya), kCObstacle);
-      }
     }
   }
 
