@@ -34,18 +34,35 @@ ImU32 HeatScale::color(double value) const {
   return theme::rgba(mix(0), mix(1), mix(2));
 }
 
-void draw_heat_map(const WorkspaceView& view, const ScalarGrid& grid, const HeatScale& scale, unsigned alpha) {
-  ImDrawList* dl = view.draw_list();
-  std::vector<ImU32> colors(grid.values.size());
-  for (std::size_t k = 0; k < colors.size(); ++k) colors[k] = theme::with_alpha(scale.color(grid.values[k]), alpha);
-  const auto at = [&](int i, int j) { return colors[static_cast<std::size_t>(j) * static_cast<std::size_t>(grid.nx) + static_cast<std::size_t>(i)]; };
-  for (int j = 0; j + 1 < grid.ny; ++j) {
-    for (int i = 0; i + 1 < grid.nx; ++i) {
-      // Screen y grows downwards: the cell's top edge is row j + 1.
-      const ImVec2 a = view.to_screen(grid.node(i, j + 1)), b = view.to_screen(grid.node(i + 1, j));
-      dl->AddRectFilledMultiColor(a, b, at(i, j + 1), at(i + 1, j + 1), at(i + 1, j), at(i, j));
-    }
+HeatMap make_heat_map(ScalarGrid grid, int level_count) {
+  HeatMap m;
+  m.scale = HeatScale::of(grid);
+  m.colors.resize(grid.values.size());
+  for (std::size_t k = 0; k < m.colors.size(); ++k) m.colors[k] = m.scale.color(grid.values[k]);
+  for (double l : contour_levels(grid, level_count)) {
+    const auto segs = level_set(grid, l);
+    m.levels.insert(m.levels.end(), segs.begin(), segs.end());
+    ++m.level_count;
   }
+  m.grid = std::move(grid);
+  return m;
+}
+
+void draw_heat_map(const WorkspaceView& view, const HeatMap& map) {
+  ImDrawList* dl = view.draw_list();
+  const ScalarGrid& grid = map.grid;
+  if (grid.nx < 2 || grid.ny < 2) return;
+  const auto at = [&](int i, int j) { return map.colors[static_cast<std::size_t>(j) * static_cast<std::size_t>(grid.nx) + static_cast<std::size_t>(i)]; };
+  // Screen y grows downwards: a cell's top edge is row j + 1. Node positions are computed once
+  // per row and column, not per cell.
+  std::vector<float> xs(static_cast<std::size_t>(grid.nx)), ys(static_cast<std::size_t>(grid.ny));
+  for (int i = 0; i < grid.nx; ++i) xs[static_cast<std::size_t>(i)] = view.to_screen(grid.node(i, 0)).x;
+  for (int j = 0; j < grid.ny; ++j) ys[static_cast<std::size_t>(j)] = view.to_screen(grid.node(0, j)).y;
+  for (int j = 0; j + 1 < grid.ny; ++j)
+    for (int i = 0; i + 1 < grid.nx; ++i)
+      dl->AddRectFilledMultiColor(ImVec2(xs[static_cast<std::size_t>(i)], ys[static_cast<std::size_t>(j) + 1]),
+                                  ImVec2(xs[static_cast<std::size_t>(i) + 1], ys[static_cast<std::size_t>(j)]),
+                                  at(i, j + 1), at(i + 1, j + 1), at(i + 1, j), at(i, j));
 }
 
 void draw_level_set(const WorkspaceView& view, const std::vector<LevelSegment>& segments, ImU32 color, float thickness) {

@@ -20,8 +20,19 @@ struct HeatScale {
   ImU32 color(double value) const;
 };
 
-/// The grid as smoothly shaded cells (corner colours interpolated), `alpha` 0..255.
-void draw_heat_map(const WorkspaceView& view, const ScalarGrid& grid, const HeatScale& scale, unsigned alpha = 255);
+/// A grid ready to draw: its colour scale, the colour of every node and its level lines,
+/// computed once when the grid changes (a frame then only emits the cells).
+struct HeatMap {
+  ScalarGrid grid;
+  HeatScale scale;
+  std::vector<ImU32> colors;           ///< per node, as grid.values
+  std::vector<LevelSegment> levels;    ///< `level_count` level lines, all segments together
+  int level_count = 0;
+};
+HeatMap make_heat_map(ScalarGrid grid, int level_count);
+
+/// The grid as smoothly shaded cells (corner colours interpolated).
+void draw_heat_map(const WorkspaceView& view, const HeatMap& map);
 void draw_level_set(const WorkspaceView& view, const std::vector<LevelSegment>& segments, ImU32 color, float thickness);
 
 /// An arrow from world point `at` along `force`, `pixels_per_unit` long per unit of force and at

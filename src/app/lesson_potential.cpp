@@ -35,6 +35,7 @@ using json = nlohmann::json;
 
 constexpr int kGridNodes = 97;     // heat maps: 96 x 96 cells, recomputed only when they change
 constexpr int kLevels = 8;         // level lines per heat map
+constexpr double kSliceStep = 0.02;  // rad: how far the angle turns before a playing slice is redrawn
 constexpr float kForcePixels = 250.0f;  // arrow pixels per unit of force: the largest pull (0.2) is 50 px
 const ImU32 kAttract = theme::kGreen;
 const ImU32 kRepel = theme::kVermillion;
@@ -188,7 +189,7 @@ class PotentialLesson : public Lesson {
              {"tau", finite_config(r.tau)},
              {"field", {{"zeta", field_params_.zeta}, {"switch", field_params_.switch_distance}, {"eta", field_params_.eta}, {"rho0", field_params_.rho0}}},
              {"steps", descent_ ? descent_->steps() : 0},
-             {"heat_map", {{"nodes", kGridNodes}, {"level_segments", levels_.size()}, {"lo", scale_.lo}, {"hi", scale_.hi}}}};
+             {"heat_map", {{"nodes", kGridNodes}, {"levels", map_u_.level_count}, {"lo", map_u_.scale.lo}, {"hi", map_u_.scale.hi}}}};
     if (descent_) {
       json trajectory = json::array();
       for (const Config& c : descent_->trajectory()) trajectory.push_back(config_to_json(c));
@@ -363,39 +364,31 @@ class PotentialLesson : public Lesson {
       return best;
     });
     ws_rings_ = level_set(rho, fp.rho0);
-    ws_grid_ = sample_grid(kGridNodes, kGridNodes, s.workspace_min, s.workspace_max, [&](const Vec2& x) {
-      double u = 0.0;
-      for (const Obstacle& o : s.obstacles) u += repulsive_field(obstacle_distance(o, x), fp.eta, fp.rho0).U;
-      return u;
-    });
-    ws_scale_ = HeatScale::of(ws_grid_);
-    ws_levels_.clear();
-    for (double l : contour_levels(ws_grid_, kLevels)) {
-      const auto segs = level_set(ws_grid_, l);
-      ws_levels_.insert(ws_levels_.end(), segs.begin(), segs.end());
-    }
+    ws_map_ = make_heat_map(sample_grid(kGridNodes, kGridNodes, s.workspace_min, s.workspace_max, [&](const Vec2& x) {
+                              double u = 0.0;
+                              for (const Obstacle& o : s.obstacles) u += repulsive_field(obstacle_distance(o, x), fp.eta, fp.rho0).U;
+                              return u;
+                            }),
+                            kLevels);
   }
 
   // The C-space heat map of the total potential U: the workspace for the point robot, the
   // torus square for the arm, the slice at the robot's current angle for the polygon robot.
   // Recomputed when that angle changes.
-  void cspace_grids() {
+  // While the descent plays, the slice follows the angle in steps of kSliceStep (a 97 x 97 grid
+  // of potentials each frame would cost more than the rest of the frame); at rest it is exact.
+  void cspace_grids(bool playing) {
     const Kind kind = robot_kind();
     const double key = kind == Kind::Polygon ? shown()[2] : 0.0;
-    if (key == cspace_key_) return;
+    if (key == cspace_key_ || (playing && std::fabs(key - cspace_key_) < kSliceStep)) return;
     cspace_key_ = key;
     const Vec2 lo = kind == Kind::Arm ? Vec2(-kPi, -kPi) : scene_.workspace_min;
     const Vec2 hi = kind == Kind::Arm ? Vec2(kPi, kPi) : scene_.workspace_max;
-    grid_ = sample_grid(kGridNodes, kGridNodes, lo, hi, [&](const Vec2& p) {
-      const Config q = kind == Kind::Polygon ? config({p.x(), p.y(), key}) : config({p.x(), p.y()});
-      return field_->potential(q);
-    });
-    scale_ = HeatScale::of(grid_);
-    levels_.clear();
-    for (double l : contour_levels(grid_, kLevels)) {
-      const auto segs = level_set(grid_, l);
-      levels_.insert(levels_.end(), segs.begin(), segs.end());
-    }
+    map_u_ = make_heat_map(sample_grid(kGridNodes, kGridNodes, lo, hi, [&](const Vec2& p) {
+                             const Config q = kind == Kind::Polygon ? config({p.x(), p.y(), key}) : config({p.x(), p.y()});
+                             return field_->potential(q);
+                           }),
+                           kLevels);
   }
 
   void status_text() {
@@ -460,17 +453,17 @@ class PotentialLesson : public Lesson {
   // --- the workspace: field, rings, obstacles, robot with its forces; drag the robot.
   void workspace(LabContext& ctx, ImVec2 size) {
     const Kind kind = robot_kind();
-    if (kind == Kind::Point) cspace_grids();
+    if (kind == Kind::Point) cspace_grids(ctx.playback.playing);
     view_.begin("##potential-workspace", size, scene_.workspace_min, scene_.workspace_max);
     ctx.views["workspace"] = &view_;
     view_.draw_grid();
     view_.push_clip();
     if (kind == Kind::Point) {
-      draw_heat_map(view_, grid_, scale_);
-      draw_level_set(view_, levels_, kIso, 1.0f);
+      draw_heat_map(view_, map_u_);
+      draw_level_set(view_, map_u_.levels, kIso, 1.0f);
     } else {
-      draw_heat_map(view_, ws_grid_, ws_scale_);
-      draw_level_set(view_, ws_levels_, kIso, 1.0f);
+      draw_heat_map(view_, ws_map_);
+      draw_level_set(view_, ws_map_.levels, kIso, 1.0f);
     }
     draw_level_set(view_, ws_rings_, kRing, 2.0f);
     for (const Obstacle& o : scene_.obstacles) view_.draw_obstacle(o);
@@ -582,7 +575,7 @@ class PotentialLesson : public Lesson {
   // --- the C-space view: U over the torus square (arm) or the slice at the current angle
   // (polygon), level lines, the descent's trajectory; press and drag to place the robot.
   void cspace(LabContext& ctx, ImVec2 size) {
-    cspace_grids();
+    cspace_grids(ctx.playback.playing);
     const Kind kind = robot_kind();
     const bool arm = kind == Kind::Arm;
     cspace_view_.begin("##potential-cspace", size, arm ? Vec2(-kPi, -kPi) : scene_.workspace_min,
@@ -590,9 +583,9 @@ class PotentialLesson : public Lesson {
     ctx.views["cspace"] = &cspace_view_;
     cspace_view_.draw_grid(arm ? "theta1" : "x", arm ? "theta2" : "y");
     cspace_view_.push_clip();
-    draw_heat_map(cspace_view_, grid_, scale_);
+    draw_heat_map(cspace_view_, map_u_);
     if (arm) draw_arm_cobstacles(cspace_view_, *map_, theme::rgba(96, 96, 104, 170));
-    draw_level_set(cspace_view_, levels_, kIso, 1.0f);
+    draw_level_set(cspace_view_, map_u_.levels, kIso, 1.0f);
     const Space& space = world_->space();
     if (descent_) {
       const auto& t = descent_->trajectory();
@@ -606,7 +599,7 @@ class PotentialLesson : public Lesson {
     cspace_view_.pop_clip();
     const ImVec2 corner = cspace_view_.canvas_min();
     const std::string title = arm ? "U(theta1, theta2) on the torus; grey: C-obstacles"
-                                  : "U(x, y, theta) at theta = " + fmt("%.3f", q[2]) + "; grey: a vertex on an obstacle";
+                                  : "U(x, y, theta) at theta = " + fmt("%.3f", cspace_key_) + "; grey: a vertex on an obstacle";
     cspace_view_.draw_list()->AddText(ImVec2(corner.x + 6, corner.y + 4), theme::kLabel, title.c_str());
     if (cspace_view_.hovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) placing_ = true;
     if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) placing_ = false;
@@ -628,9 +621,8 @@ class PotentialLesson : public Lesson {
   Config from_;
   Config start_before_;
   std::string problem_;
-  ScalarGrid ws_grid_, grid_;
-  HeatScale ws_scale_, scale_;
-  std::vector<LevelSegment> ws_levels_, ws_rings_, levels_;
+  HeatMap ws_map_, map_u_;  // U_rep over the workspace; U over the C-space view
+  std::vector<LevelSegment> ws_rings_;
   double cspace_key_ = std::numeric_limits<double>::quiet_NaN();
   long logged_ = -1;
   int drag_ = 0;

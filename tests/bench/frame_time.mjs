@@ -1,6 +1,8 @@
 // Frame time in the browser (a benchmark, not a test).
 //   node tests/bench/frame_time.mjs roadmap [samples=5000]   Step PRM with a large roadmap on screen
 //   node tests/bench/frame_time.mjs torus-drag                 the torus lesson while an obstacle is dragged
+//   node tests/bench/frame_time.mjs potential                  P13's rectangle descending (its slice's heat
+//                                                              map, 97 x 97 potentials, redone every step)
 // Headless Chromium renders WebGL with SwiftShader, on the CPU: the browser's frame interval
 // here is far above what a GPU gives. The app's own CPU time per frame (building the UI and
 // its geometry, before GL) is the figure that carries over to students' machines.
@@ -69,6 +71,18 @@ try {
     await page.mouse.up();
     const moved = (await api(page, 'get_scene')).obstacles[0].center;
     console.log(`(the disk moved to ${moved.map((v) => v.toFixed(3))})`);
+  } else if (scenario === 'potential') {
+    await api(page, 'select_lesson', { id: 'potential' });
+    // Slow steps, so the descent (and its turning slice) lasts the whole measurement.
+    await api(page, 'set_params', { params: { step: 0.0005 } });
+    await waitFrames(page, 5);
+    await page.keyboard.press('Space');
+    // The app's statistics cover its last 120 frames (10 s at SwiftShader's rate): let the
+    // lesson's first frame (all its grids computed at once) leave the window first.
+    await page.waitForTimeout(10000);
+    console.log('potential fields: the rectangle descending at 20 steps/s, its C-space slice redrawn each step');
+    await measure(page);
+    console.log(`(descent at step ${(await api(page, 'state')).steps})`);
   }
 } finally {
   await browser.close();

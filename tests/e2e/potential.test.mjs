@@ -142,7 +142,7 @@ test('potential fields: forces, dragging, heat map, descent, local minimum and e
       assert.deepEqual(armState.descent.trajectory.at(-1), armDesc.final);
     }
     await screenshot(page, 'potential-arm.png');
-    assert.ok(s.heat_map.level_segments > 0, 'level lines on the torus');
+    assert.ok(s.heat_map.levels > 0, 'level lines on the torus');
     assert.deepEqual(errors, [], 'no console errors');
   } finally {
     await browser.close();
