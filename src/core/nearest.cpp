@@ -8,7 +8,7 @@
 namespace csl {
 namespace {
 
-constexpr int kLeafSize = 8;
+constexpr int kLeafSize = 16;  // measured: 16 beats 8 and 4 for k = 10 in 2-D
 // Lower bounds are scaled up a hair before pruning, so rounding never prunes a true neighbour.
 constexpr double kPruneSafety = 1.0 + 1e-12;
 constexpr double kInf = std::numeric_limits<double>::infinity();
