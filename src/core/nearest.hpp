@@ -41,14 +41,19 @@ class NeighborIndex {
   // Lower bound on the squared distance from q to anything in node n's bounding box.
   double box_lower_bound(int n, const double* q) const;
   const double* point(int i) const { return &pts_[static_cast<std::size_t>(i) * dim_]; }
-  template <bool kPlain, int kDim, class Visit>
+  // kMetric: 0 = the space's general metric, 1 = plain Euclidean (linear, weight 1),
+  // 2 = flat torus (angular, weight 1); kDim: the number of coordinates if known (2), else 0.
+  template <int kMetric, int kDim, class Visit>
   void search(int node, const double* q, Visit& visit) const;
+  template <int kMetric, int kDim>
+  double box_bound(int n, const double* q) const;
   template <class Visit>
   void search(const double* q, Visit& visit) const;
 
   Space space_;
   std::size_t dim_ = 0, count_ = 0;
   bool plain_ = false;  // all coordinates linear with weight 1: distances are plain Euclidean
+  bool torus_ = false;  // all coordinates angular with weight 1: the flat torus
   std::vector<double> pts_;  // count_ x dim_ coordinates, in leaf order (cache-friendly)
   std::vector<int> ids_;     // leaf order -> index given to build()
   std::vector<Node> nodes_;

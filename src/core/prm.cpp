@@ -7,6 +7,18 @@
 #include <stdexcept>
 
 namespace csl {
+namespace {
+
+// A hint to the cache (no effect on results): the object at p will be read soon.
+inline void prefetch(const void* p) {
+#if defined(__GNUC__) || defined(__clang__)
+  __builtin_prefetch(p);
+#else
+  (void)p;
+#endif
+}
+
+}  // namespace
 
 int NeighborRule::prm_star_k(int n, int d) {
   if (n < 2) return 1;
@@ -120,10 +132,14 @@ void Prm::reset() {
   event_ = PrmEvent{};
   steps_ = 0;
   roadmap_ = Roadmap{};
+  // Room for the endpoints and every sample (no regrowth while sampling).
+  roadmap_.vertices.reserve(static_cast<std::size_t>(params_.samples) + 2);
+  roadmap_.clearance.reserve(static_cast<std::size_t>(params_.samples) + 2);
   components_.reset(0);
   samples_drawn_ = 0;
   k_ = 0;
   knn_.clear();
+  seen_.clear();
   p_ = -1;
   candidates_.clear();
   next_candidate_ = 0;
@@ -222,6 +238,26 @@ void Prm::begin_connecting() {
     index_.k_nearest(roadmap_.vertices[static_cast<std::size_t>(v)], k_, v, scratch_);
     std::copy(scratch_.begin(), scratch_.end(), knn_.begin() + static_cast<std::ptrdiff_t>(v) * k_);
   }
+  // Being among the k nearest is not symmetric: the pair (p, q), q < p, is skipped when p is
+  // connected if q had p among its own k nearest, i.e. if the pair was checked from q's side.
+  // Flagged here once for all vertices; the rest are the candidates, at most one edge each.
+  seen_.assign(knn_.size(), 0);
+  std::size_t pairs = 0;
+  const auto uk = static_cast<std::size_t>(k_);
+  for (int p = 0; p < n; ++p) {
+    const std::size_t row = static_cast<std::size_t>(p) * uk;
+    for (std::size_t i = 0; i < uk && knn_[row + i].index >= 0; ++i) {
+      const int other = knn_[row + i].index;
+      bool seen = false;
+      if (other < p) {
+        const Neighbor* theirs = &knn_[static_cast<std::size_t>(other) * uk];
+        for (std::size_t j = 0; j < uk && !seen; ++j) seen = theirs[j].index == p;
+      }
+      seen_[row + i] = seen ? 1 : 0;
+      pairs += seen ? 0 : 1;
+    }
+  }
+  roadmap_.edges.reserve(roadmap_.edges.size() + pairs);
   p_ = -1;
   candidates_.clear();
   next_candidate_ = 0;
@@ -237,18 +273,19 @@ void Prm::find_candidates() {
     for (const Neighbor& nb : scratch_)
       if (nb.index > p_) candidates_.push_back(nb);
   } else {
-    // Being among the k nearest is not symmetric: skip (p, q) only if q < p already had p among
-    // its own k nearest, i.e. if the pair was checked from q's side.
-    const Neighbor* mine = &knn_[static_cast<std::size_t>(p_) * static_cast<std::size_t>(k_)];
-    for (int i = 0; i < k_ && mine[i].index >= 0; ++i) {
-      const Neighbor& nb = mine[i];
-      bool seen = false;
-      if (nb.index < p_) {
-        const Neighbor* theirs = &knn_[static_cast<std::size_t>(nb.index) * static_cast<std::size_t>(k_)];
-        for (int j = 0; j < k_ && !seen; ++j) seen = theirs[j].index == p_;
-      }
-      if (!seen) candidates_.push_back(nb);
-    }
+    // The k nearest but those already checked from the other side (see begin_connecting()).
+    const std::size_t row = static_cast<std::size_t>(p_) * static_cast<std::size_t>(k_);
+    const Neighbor* mine = &knn_[row];
+    const unsigned char* seen = &seen_[row];
+    for (int i = 0; i < k_ && mine[i].index >= 0; ++i)
+      if (!seen[i]) candidates_.push_back(mine[i]);
+  }
+  // The candidates' coordinates are read by the next steps, in the order of the samples,
+  // not of space: ask for them now.
+  for (const Neighbor& nb : candidates_) {
+    const Config* v = &roadmap_.vertices[static_cast<std::size_t>(nb.index)];
+    prefetch(v);  // the first coordinates, and the size at the end (another cache line, maybe)
+    prefetch(reinterpret_cast<const char*>(v) + sizeof(Config) - 1);
   }
   event_.kind = PrmEvent::Kind::Neighbors;
   event_.vertex = p_;
@@ -264,7 +301,11 @@ void Prm::check_candidate() {
     connect_candidate(q);
     return;
   }
-  checker_.reset(roadmap_.vertices[up], roadmap_.vertices[uq], true, roadmap_.clearance[up], roadmap_.clearance[uq]);
+  // Only bisection reads the clearances (the others' are NaN): no need to fetch them.
+  if (params_.checker.kind == EdgeCheckerSpec::Kind::Bisection)
+    checker_.reset(roadmap_.vertices[up], roadmap_.vertices[uq], true, roadmap_.clearance[up], roadmap_.clearance[uq]);
+  else
+    checker_.reset(roadmap_.vertices[up], roadmap_.vertices[uq], true);
   while (!checker_.done()) checker_.step();
   ++edge_checks_;
   evaluations_ += checker_.evaluations();

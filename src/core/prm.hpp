@@ -171,6 +171,9 @@ class Prm {
   int samples_drawn_ = 0;
   int k_ = 0;                     // neighbours per vertex for the k rules
   std::vector<Neighbor> knn_;     // the k_ nearest of every vertex (flat; index -1 pads short rows)
+  // Per entry of knn_: 1 if the pair was already a candidate of the smaller vertex (computed
+  // once in begin_connecting(), which also counts the candidates to size the edge list).
+  std::vector<unsigned char> seen_;
   int p_ = -1;                    // vertex being connected
   std::vector<Neighbor> candidates_;
   std::size_t next_candidate_ = 0;
