@@ -10,7 +10,7 @@ namespace {
 
 using json = nlohmann::json;
 
-int run_check(Args& args) {
+int run_check(Args& args, std::ostream& os) {
   const auto from = args.take("from");
   const auto to = args.take("to");
   const auto checker_text = args.take("checker");
@@ -30,7 +30,7 @@ int run_check(Args& args) {
     const int max_n = static_cast<int>(parse_count(max_text.value_or("1000"), "--max", 100000));
     if (max_n < 2) throw UsageError("--max: must be at least 2");
     const auto n = min_grid_resolution(world, p, q, max_n);
-    print_json({{"min_grid", n ? json(*n) : json(nullptr)}, {"max", max_n}});
+    print_json(os, {{"min_grid", n ? json(*n) : json(nullptr)}, {"max", max_n}});
     return 0;
   }
   if (max_text) throw UsageError("--max only goes with --min-grid");
@@ -50,7 +50,7 @@ int run_check(Args& args) {
   json out = edge_check_to_json(r, spec, trace);
   out["from"] = config_to_json(p);
   out["to"] = config_to_json(q);
-  print_json(out);
+  print_json(os, out);
   return 0;
 }
 
