@@ -81,8 +81,8 @@ const Command kCheckCommand{
     "    endpoints t0 = t1 = t and lambda = 0)\n"
     "  pieces (bisection with --trace): the pieces proven free, in order:\n"
     "    {\"t0\", \"t1\", \"lambda\", \"eta0\", \"eta1\", \"depth\", \"unresolved\"}; unresolved = a\n"
-    "    piece shorter than 1e-12 that could not be proven free (the edge grazes an obstacle),\n"
-    "    which counts as a collision\n\n"
+    "    piece shorter than 1e-12, or one left after 2^20 evaluations, that could not be\n"
+    "    proven free (the edge grazes an obstacle or runs along one): a collision\n\n"
     "With --min-grid: {\"min_grid\": N|null, \"max\": M}, the smallest N in [2, M] (default\n"
     "M = 1000, at most 100000) for which grid:N finds the collision.\n",
     run_check};
