@@ -271,7 +271,13 @@
         problems.push(`the parameter ${key} cannot be written in a link`);
         continue;
       }
-      parts.push(key + '=' + encodeValue(text));
+      const encoded = encodeValue(text);
+      if (encoded.length > LIMITS.value) {  // parseConfig would refuse it
+        problems.push(`the parameter ${key} takes ${sizeText(encoded.length)} in a link, ` +
+                      `more than the ${sizeText(LIMITS.value)} a value may`);
+        continue;
+      }
+      parts.push(key + '=' + encoded);
     }
     parts.push('steps=' + String(snapshot.steps || 0));
     for (const [key, value] of Object.entries(extra)) parts.push(key + '=' + encodeValue(String(value)));

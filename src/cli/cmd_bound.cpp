@@ -7,7 +7,7 @@
 namespace csl::cli {
 namespace {
 
-int run_bound(Args& args) {
+int run_bound(Args& args, std::ostream& os) {
   const bool tiling = args.take_flag("tiling");
   const auto length = args.take("length"), clearance = args.take("clearance"), dim = args.take("dim");
   const auto volume = args.take("free-volume"), samples = args.take("samples"), target = args.take("target");
@@ -24,24 +24,24 @@ int run_bound(Args& args) {
     if (tiling) {
       if (length || volume) throw UsageError("--tiling is for F = [0,1]^d: no --length or --free-volume");
       const TilingBound t = whole_space_tiling_bound(r, d, n);
-      print_json({{"balls", t.balls},
-                  {"covering_balls", t.covering_balls},
-                  {"sigma", t.sigma},
-                  {"failure_bound", t.bound},
-                  {"vacuous", t.vacuous},
-                  {"samples_for_target", t.samples_for(goal)},
-                  {"target", goal}});
+      print_json(os, {{"balls", t.balls},
+                      {"covering_balls", t.covering_balls},
+                      {"sigma", t.sigma},
+                      {"failure_bound", t.bound},
+                      {"vacuous", t.vacuous},
+                      {"samples_for_target", t.samples_for(goal)},
+                      {"target", goal}});
       return 0;
     }
     const FailureBound b = path_tiling_bound(parse_number(need(length, "length"), "--length"), r, d,
                                              parse_number(need(volume, "free-volume"), "--free-volume"), n);
-    print_json({{"balls", b.balls},
-                {"sigma", b.sigma},
-                {"failure_bound", b.bound},
-                {"vacuous", b.vacuous},
-                {"exponent", b.exponent},
-                {"samples_for_target", b.samples_for(goal)},
-                {"target", goal}});
+    print_json(os, {{"balls", b.balls},
+                    {"sigma", b.sigma},
+                    {"failure_bound", b.bound},
+                    {"vacuous", b.vacuous},
+                    {"exponent", b.exponent},
+                    {"samples_for_target", b.samples_for(goal)},
+                    {"target", goal}});
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
   }

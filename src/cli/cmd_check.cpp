@@ -10,7 +10,7 @@ namespace {
 
 using json = nlohmann::json;
 
-int run_check(Args& args) {
+int run_check(Args& args, std::ostream& os) {
   const auto from = args.take("from");
   const auto to = args.take("to");
   const auto checker_text = args.take("checker");
@@ -30,7 +30,7 @@ int run_check(Args& args) {
     const int max_n = static_cast<int>(parse_count(max_text.value_or("1000"), "--max", 100000));
     if (max_n < 2) throw UsageError("--max: must be at least 2");
     const auto n = min_grid_resolution(world, p, q, max_n);
-    print_json({{"min_grid", n ? json(*n) : json(nullptr)}, {"max", max_n}});
+    print_json(os, {{"min_grid", n ? json(*n) : json(nullptr)}, {"max", max_n}});
     return 0;
   }
   if (max_text) throw UsageError("--max only goes with --min-grid");
@@ -50,7 +50,7 @@ int run_check(Args& args) {
   json out = edge_check_to_json(r, spec, trace);
   out["from"] = config_to_json(p);
   out["to"] = config_to_json(q);
-  print_json(out);
+  print_json(os, out);
   return 0;
 }
 
@@ -81,8 +81,8 @@ const Command kCheckCommand{
     "    endpoints t0 = t1 = t and lambda = 0)\n"
     "  pieces (bisection with --trace): the pieces proven free, in order:\n"
     "    {\"t0\", \"t1\", \"lambda\", \"eta0\", \"eta1\", \"depth\", \"unresolved\"}; unresolved = a\n"
-    "    piece shorter than 1e-12 that could not be proven free (the edge grazes an obstacle),\n"
-    "    which counts as a collision\n\n"
+    "    piece shorter than 1e-12, or one left after 2^20 evaluations, that could not be\n"
+    "    proven free (the edge grazes an obstacle or runs along one): a collision\n\n"
     "With --min-grid: {\"min_grid\": N|null, \"max\": M}, the smallest N in [2, M] (default\n"
     "M = 1000, at most 100000) for which grid:N finds the collision.\n",
     run_check};

@@ -11,7 +11,7 @@
 namespace csl::cli {
 namespace {
 
-int run_cspace(Args& args) {
+int run_cspace(Args& args, std::ostream& os) {
   const auto resolution_text = args.take("resolution");
   const auto out = args.take("out");
   const std::string path = args.take_positional("SCENE.json");
@@ -47,7 +47,7 @@ int run_cspace(Args& args) {
   file.close();
   if (!file) throw UsageError(*out + ": write error");
 
-  print_json({{"free_fraction", free_fraction}, {"seconds", seconds}});
+  print_json(os, {{"free_fraction", free_fraction}, {"seconds", seconds}});
   return 0;
 }
 

@@ -1,6 +1,5 @@
 // cspacelab cspace-of "DESCRIPTION" [--check ANSWER]: a robot's configuration space in the
 // course's notation, and optionally a verdict on a written answer.
-#include <iostream>
 #include <nlohmann/json.hpp>
 #include <optional>
 
@@ -10,7 +9,7 @@
 namespace csl::cli {
 namespace {
 
-int run_cspace_of(Args& args) {
+int run_cspace_of(Args& args, std::ostream& os) {
   // --check first: take_positional would otherwise be free to grab its value.
   const std::optional<std::string> answer = args.take("check");
   const std::string description = args.take_positional("DESCRIPTION (e.g. \"joints=RRR\")");
@@ -39,7 +38,8 @@ int run_cspace_of(Args& args) {
     out["check"] = {{"correct", check.correct}, {"explanation", check.explanation}};
   }
   // Explanations may quote the answer, which may not be valid UTF-8: replace, do not fail.
-  std::cout << out.dump(-1, ' ', false, json::error_handler_t::replace) << "\n";
+  // (Not print_json: that takes a json, which would sort this ordered_json's keys.)
+  os << out.dump(-1, ' ', false, json::error_handler_t::replace) << "\n";
   return 0;
 }
 

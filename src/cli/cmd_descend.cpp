@@ -11,7 +11,7 @@ using json = nlohmann::json;
 
 constexpr long long kMaxDescentSteps = 100000;  // the trajectory is printed: keep it printable
 
-int run_descend(Args& args) {
+int run_descend(Args& args, std::ostream& os) {
   const auto from = args.take("from");
   const auto to = args.take("to");
   const PotentialParams field_params = take_potential_options(args);
@@ -76,7 +76,7 @@ int run_descend(Args& args) {
              {"walk_step", d.walk_step},
              {"seed", d.seed}}}};
   if (events) out["events"] = event_list;
-  print_json(out);
+  print_json(os, out);
   return 0;
 }
 

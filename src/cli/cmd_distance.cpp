@@ -10,7 +10,7 @@ using json = nlohmann::json;
 
 json point_json(const Vec2& p) { return json::array({p.x(), p.y()}); }
 
-int run_distance(Args& args) {
+int run_distance(Args& args, std::ostream& os) {
   std::string kind;
   auto p1 = args.take("p1"), p2 = args.take("p2"), center = args.take("center"), radius = args.take("radius");
   auto q1 = args.take("q1"), q2 = args.take("q2");
@@ -20,10 +20,10 @@ int run_distance(Args& args) {
     const double a = parse_number(args.take_positional("angle A"), "A");
     const double b = parse_number(args.take_positional("angle B"), "B");
     args.finish();
-    print_json({{"distance", s1_distance(a, b)},
-                {"modulus", s1_distance(a, b)},
-                {"rotation", s1_distance_rotation(a, b)},
-                {"signed_turn", angle_difference(a, b)}});
+    print_json(os, {{"distance", s1_distance(a, b)},
+                    {"modulus", s1_distance(a, b)},
+                    {"rotation", s1_distance_rotation(a, b)},
+                    {"signed_turn", angle_difference(a, b)}});
     return 0;
   }
   args.finish();
@@ -37,17 +37,17 @@ int run_distance(Args& args) {
     const Vec2 c = parse_point(need(center, "center"), "--center");
     const double r = parse_number(need(radius, "radius"), "--radius");
     if (r < 0.0) throw UsageError("--radius: must be >= 0");
-    print_json({{"distance", segment_disk_distance(a, b, c, r)},
-                {"signed", segment_disk_signed_distance(a, b, c, r)},
-                {"closest_point", point_json(closest_point_on_segment(c, a, b))},
-                {"closest_parameter", closest_parameter(c, a, b)}});
+    print_json(os, {{"distance", segment_disk_distance(a, b, c, r)},
+                    {"signed", segment_disk_signed_distance(a, b, c, r)},
+                    {"closest_point", point_json(closest_point_on_segment(c, a, b))},
+                    {"closest_parameter", closest_parameter(c, a, b)}});
     return 0;
   }
   if (kind == "segment-segment") {
     if (center || radius) throw UsageError("segment-segment takes --p1 --p2 --q1 --q2");
     const Vec2 a = parse_point(need(p1, "p1"), "--p1"), b = parse_point(need(p2, "p2"), "--p2");
     const Vec2 c = parse_point(need(q1, "q1"), "--q1"), d = parse_point(need(q2, "q2"), "--q2");
-    print_json({{"distance", segment_segment_distance(a, b, c, d)}, {"intersect", segments_intersect(a, b, c, d)}});
+    print_json(os, {{"distance", segment_segment_distance(a, b, c, d)}, {"intersect", segments_intersect(a, b, c, d)}});
     return 0;
   }
   throw UsageError("unknown distance kind '" + kind + "' (s1, segment-disk or segment-segment)");

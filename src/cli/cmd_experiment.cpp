@@ -11,7 +11,7 @@ using json = nlohmann::json;
 
 json number_or_null(bool has, double v) { return has ? json(v) : json(nullptr); }
 
-int run_experiment(Args& args) {
+int run_experiment(Args& args, std::ostream& os) {
   const auto list = args.take("samples-list"), trials = args.take("trials"), reference = args.take("reference-samples");
   const PlannerOptions options = take_planner_options(args);
   const std::string path = args.take_positional("SCENE.json");
@@ -54,19 +54,19 @@ int run_experiment(Args& args) {
                     {"bound", number_or_null(row.has_bound, row.bound.bound)},
                     {"bound_vacuous", row.has_bound ? json(row.bound.vacuous) : json(nullptr)}});
   }
-  print_json({{"reference",
-               {{"path_exists", ref.path_exists},
-                {"samples", ref.samples},
-                {"path_length", number_or_null(ref.path_exists, ref.path_length)},
-                {"workspace_clearance", number_or_null(ref.path_exists, ref.workspace_clearance)},
-                {"clearance", number_or_null(ref.path_exists, ref.clearance)},
-                {"free_fraction", ref.free_fraction},
-                {"free_volume", ref.free_volume},
-                {"dimension", ref.dimension}}},
-              {"neighbors", params.neighbors.name()},
-              {"checker", params.checker.name()},
-              {"seed", params.seed},
-              {"rows", rows}});
+  print_json(os, {{"reference",
+                   {{"path_exists", ref.path_exists},
+                    {"samples", ref.samples},
+                    {"path_length", number_or_null(ref.path_exists, ref.path_length)},
+                    {"workspace_clearance", number_or_null(ref.path_exists, ref.workspace_clearance)},
+                    {"clearance", number_or_null(ref.path_exists, ref.clearance)},
+                    {"free_fraction", ref.free_fraction},
+                    {"free_volume", ref.free_volume},
+                    {"dimension", ref.dimension}}},
+                  {"neighbors", params.neighbors.name()},
+                  {"checker", params.checker.name()},
+                  {"seed", params.seed},
+                  {"rows", rows}});
   return 0;
 }
 

@@ -13,7 +13,7 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
-int run_plan(Args& args) {
+int run_plan(Args& args, std::ostream& os) {
   const auto samples = args.take("samples");
   const PlannerOptions options = take_planner_options(args);
   const bool roadmap_out = args.take_flag("roadmap");
@@ -72,7 +72,7 @@ int run_plan(Args& args) {
     out["vertices"] = vertices;
     out["edge_list"] = edges;
   }
-  print_json(out);
+  print_json(os, out);
   return 0;
 }
 

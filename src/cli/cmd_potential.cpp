@@ -32,7 +32,7 @@ json named_generalized_force(const Robot& robot, const Config& tau) {
   return out;
 }
 
-int run_potential(Args& args) {
+int run_potential(Args& args, std::ostream& os) {
   const auto at = args.take("at");
   const auto goal_text = args.take("goal");
   const PotentialParams params = take_potential_options(args);
@@ -81,21 +81,21 @@ int run_potential(Args& args) {
   generalized["tau"] = config_to_json(r.tau);
   generalized["tau_att"] = config_to_json(r.tau_att);
   generalized["tau_rep"] = config_to_json(r.tau_rep);
-  print_json({{"robot", robot_type_name(scene.robot)},
-              {"q", config_to_json(q)},
-              {"goal", config_to_json(goal)},
-              {"params", potential_params_json(params)},
-              {"in_collision", !world.is_free(q)},
-              {"contact", r.contact},
-              {"control_points", points},
-              {"totals",
-               {{"U_att", r.U_att},
-                {"U_rep", r.U_rep},
-                {"U", r.U},
-                {"F_att", vec2_json(r.F_att)},
-                {"F_rep", vec2_json(r.F_rep)},
-                {"F", vec2_json(r.F)}}},
-              {"generalized_force", generalized}});
+  print_json(os, {{"robot", robot_type_name(scene.robot)},
+                  {"q", config_to_json(q)},
+                  {"goal", config_to_json(goal)},
+                  {"params", potential_params_json(params)},
+                  {"in_collision", !world.is_free(q)},
+                  {"contact", r.contact},
+                  {"control_points", points},
+                  {"totals",
+                   {{"U_att", r.U_att},
+                    {"U_rep", r.U_rep},
+                    {"U", r.U},
+                    {"F_att", vec2_json(r.F_att)},
+                    {"F_rep", vec2_json(r.F_rep)},
+                    {"F", vec2_json(r.F)}}},
+                  {"generalized_force", generalized}});
   return 0;
 }
 

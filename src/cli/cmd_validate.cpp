@@ -4,10 +4,10 @@
 namespace csl::cli {
 namespace {
 
-int run_validate(Args& args) {
+int run_validate(Args& args, std::ostream& os) {
   const std::string path = args.take_positional("SCENE.json");
   args.finish();
-  print_json({{"valid", true}, {"scene", scene_to_json(load_scene(path))}});
+  print_json(os, {{"valid", true}, {"scene", scene_to_json(load_scene(path))}});
   return 0;
 }
 

@@ -7,7 +7,7 @@
 namespace csl::cli {
 namespace {
 
-int run_visibility(Args& args) {
+int run_visibility(Args& args, std::ostream& os) {
   const auto x = args.take("x"), y = args.take("y"), gap = args.take("gap");
   const auto trials = args.take("trials"), seed = args.take("seed");
   args.finish();
@@ -22,12 +22,12 @@ int run_visibility(Args& args) {
   try {
     const double exact = visibility_probability(x1, y1, d);
     const Proportion mc = visibility_monte_carlo(x1, y1, d, t, rng);
-    print_json({{"exact", exact},
-                {"monte_carlo", mc.estimate},
-                {"trials", t},
-                {"ci_low", mc.low},
-                {"ci_high", mc.high},
-                {"within_ci", exact >= mc.low && exact <= mc.high}});
+    print_json(os, {{"exact", exact},
+                    {"monte_carlo", mc.estimate},
+                    {"trials", t},
+                    {"ci_low", mc.low},
+                    {"ci_high", mc.high},
+                    {"within_ci", exact >= mc.low && exact <= mc.high}});
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
   }

@@ -1,6 +1,7 @@
 #pragma once
-// The CLI's commands. Each lives in its own cmd_*.cpp; main.cpp lists them in kCommands.
+// The CLI's commands. Each lives in its own cmd_*.cpp; cli.cpp lists them in kCommands.
 #include <nlohmann/json.hpp>
+#include <ostream>
 #include <string>
 
 #include "cli/args.hpp"
@@ -14,7 +15,7 @@ struct Command {
   const char* name;
   const char* summary;  ///< one line for `cspacelab --help`
   const char* usage;    ///< full help for `cspacelab help NAME` / `cspacelab NAME --help`
-  int (*run)(Args& args);  ///< prints JSON on stdout; throws UsageError for bad input
+  int (*run)(Args& args, std::ostream& os);  ///< prints JSON on os (stdout); throws UsageError for bad input
 };
 
 extern const Command kValidateCommand;
@@ -48,7 +49,7 @@ struct PlannerOptions {
 PlannerOptions take_planner_options(Args& args);
 /// UsageError if q is not free in the scene ("where it matters": planning from it).
 void require_free(const CollisionWorld& world, const Config& q, const std::string& what);
-/// Prints JSON on stdout (one line).
-void print_json(const nlohmann::json& j);
+/// Prints JSON on os (one line; invalid UTF-8 in strings is replaced, not an error).
+void print_json(std::ostream& os, const nlohmann::json& j);
 
 }  // namespace csl::cli

@@ -1,7 +1,7 @@
 // Helpers shared by the CLI's commands: files, scenes, configurations, output.
 #include <fstream>
 #include <stdexcept>
-#include <iostream>
+#include <ostream>
 #include <sstream>
 
 #include "cli/commands.hpp"
@@ -79,8 +79,8 @@ void require_free(const CollisionWorld& world, const Config& q, const std::strin
                    obstacle_type_name(o) + ")");
 }
 
-void print_json(const nlohmann::json& j) {
-  std::cout << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+void print_json(std::ostream& os, const nlohmann::json& j) {
+  os << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
 }
 
 }  // namespace csl::cli

@@ -1,87 +1,10 @@
-// cspacelab: the headless command-line tool of C-Space Lab.
-// Output contract: JSON on stdout; errors are one line on stderr with exit status 2
-// (bad input or usage) or 1 (internal error).
-#include <cstdio>
-#include <exception>
+// cspacelab: the headless command-line tool of C-Space Lab (the commands live in cli.cpp).
 #include <iostream>
 #include <string>
 #include <vector>
 
-#include "cli/commands.hpp"
-#include "core/version.hpp"
-
-namespace csl::cli {
-
-namespace {
-
-const Command* const kCommands[] = {&kValidateCommand, &kCheckCommand,      &kDistanceCommand,   &kCspaceOfCommand,
-                                    &kPlanCommand,     &kBoundCommand,      &kVisibilityCommand, &kExperimentCommand,
-                                    &kCspaceCommand,   &kPotentialCommand,  &kDescendCommand};
-
-const Command* find_command(const std::string& name) {
-  for (const Command* c : kCommands)
-    if (name == c->name) return c;
-  return nullptr;
-}
-
-void print_help() {
-  std::cout << "cspacelab " << kVersion << " - C-Space Lab on the command line\n\n"
-            << "Usage: cspacelab COMMAND [ARGS...]\n"
-            << "       cspacelab help COMMAND    (or: cspacelab COMMAND --help)\n\n"
-            << "Commands:\n";
-  for (const Command* c : kCommands) {
-    std::string name = c->name;
-    name.resize(14, ' ');
-    std::cout << "  " << name << c->summary << "\n";
-  }
-  std::cout << "\nOptions:\n"
-            << "  --help        this text\n"
-            << "  --version     the version, as {\"version\": \"X.Y.Z\"}\n\n"
-            << "Output is JSON on stdout. Errors are one line on stderr, exit status 2 for bad\n"
-            << "input or usage, 1 for internal errors. Configurations Q are comma-separated\n"
-            << "numbers, e.g. --from 0,0. Scenes are JSON files (schema: cspacelab help validate).\n";
-}
-
-int run(const std::vector<std::string>& argv) {
-  if (argv.empty() || argv[0] == "--help" || argv[0] == "-h") {
-    print_help();
-    return argv.empty() ? 2 : 0;
-  }
-  if (argv[0] == "--version") {
-    std::cout << "{\"version\": \"" << kVersion << "\"}\n";
-    return 0;
-  }
-  if (argv[0] == "help") {
-    if (argv.size() < 2) {
-      print_help();
-      return 0;
-    }
-    const Command* c = find_command(argv[1]);
-    if (!c) throw UsageError("unknown command '" + argv[1] + "' (see cspacelab --help)");
-    std::cout << c->usage;
-    return 0;
-  }
-  const Command* c = find_command(argv[0]);
-  if (!c) throw UsageError("unknown command '" + argv[0] + "' (see cspacelab --help)");
-  Args args(std::vector<std::string>(argv.begin() + 1, argv.end()));
-  if (args.take_flag("help")) {
-    std::cout << c->usage;
-    return 0;
-  }
-  return c->run(args);
-}
-
-}  // namespace
-}  // namespace csl::cli
+#include "cli/cli.hpp"
 
 int main(int argc, char** argv) {
-  try {
-    return csl::cli::run(std::vector<std::string>(argv + 1, argv + argc));
-  } catch (const csl::cli::UsageError& e) {
-    std::cerr << "cspacelab: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "cspacelab: internal error: " << e.what() << "\n";
-    return 1;
-  }
+  return csl::cli::run_cli(std::vector<std::string>(argv + 1, argv + argc), std::cout, std::cerr);
 }

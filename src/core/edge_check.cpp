@@ -108,7 +108,7 @@ void EdgeChecker::step_bisection() {
   EdgeEvent& e = event_;
   if (lambda <= piece.eta0 + piece.eta1) {
     e.kind = EdgeEvent::Kind::Certify;
-  } else if (piece.t1 - piece.t0 < kMinBisectionPiece) {
+  } else if (piece.t1 - piece.t0 < kMinBisectionPiece || evaluations_ >= kMaxBisectionEvaluations) {
     e.kind = EdgeEvent::Kind::Unresolved;
     verdict_ = Verdict::Collision;
     collision_t_ = 0.5 * (piece.t0 + piece.t1);

@@ -1,7 +1,8 @@
 // cspacelab check and distance: the homework's P10-P12 numbers and every kind of bad input.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { json, fails, scene, tempScene } from './lib/cli.mjs';
+import { spawnSync } from 'node:child_process';
+import { CLI, json, fails, scene, tempScene } from './lib/cli.mjs';
 
 const P12 = scene('p12.json');
 
@@ -77,4 +78,15 @@ test('bad input: one line naming the problem, exit status 2', () => {
   fails(/--radius: must be >= 0/, 'distance', 'segment-disk', '--p1', '0,0', '--p2', '1,0', '--center', '0,0', '--radius', '-1');
   fails(/unknown distance kind 'l2'/, 'distance', 'l2');
   fails(/missing --center/, 'distance', 'segment-disk', '--p1', '0,0', '--p2', '1,0', '--radius', '1');
+});
+
+test('an edge along a wall at a hair\'s clearance ends, as a collision, at the bisection budget', () => {
+  // Found while bounding the CLI fuzzer's inputs: this ran on past 20 s and 1.4 GB (about 2^40
+  // midpoints, breadth first). A time limit makes a regression fail instead of hanging the run.
+  const args = ['check', scene('wall-gap.json'), '--from', '0.500001,0.05', '--to', '0.500001,0.4'];
+  const r = spawnSync(CLI, args, { encoding: 'utf8', timeout: 60000 });
+  assert.equal(r.status, 0, `cspacelab ${args.join(' ')}: ${r.error || r.stderr}`);
+  const out = JSON.parse(r.stdout);
+  assert.equal(out.collision, true);
+  assert.equal(out.evaluations, 2 ** 20);
 });

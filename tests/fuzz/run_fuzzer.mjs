@@ -1,25 +1,34 @@
 // Runs one libFuzzer target for a bounded time, from a seed corpus copied into a scratch
 // directory (the sources stay untouched), and reports its executions.
-//   node tests/fuzz/run_fuzzer.mjs FUZZER SECONDS
-// Seeds: assets/scenes/*.json plus tests/fuzz/corpus/<target>/* (regression inputs of past
-// findings). A finding's input is kept under $CSPACELAB_ARTIFACTS/fuzz/ and the run fails.
+//   node tests/fuzz/run_fuzzer.mjs FUZZER SECONDS [libFuzzer flags, which win over the defaults]
+// Seeds: tests/fuzz/corpus/<target>/* (valid inputs and regression inputs of past findings),
+// for fuzz_scene also assets/scenes/*.json. A finding's input is kept under
+// $CSPACELAB_ARTIFACTS/fuzz/ and the run fails.
 import { spawnSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 
-const [fuzzer, seconds = '30'] = process.argv.slice(2);
+const [fuzzer, seconds = '30', ...extra] = process.argv.slice(2);
 const source = process.env.CSPACELAB_SOURCE;
 const name = path.basename(fuzzer);
 const corpus = fs.mkdtempSync(path.join(os.tmpdir(), `${name}-`));
-const seeds = [path.join(source, 'assets', 'scenes'), path.join(source, 'tests', 'fuzz', 'corpus', name)];
+// Per target: more seed folders, and libFuzzer flags. fuzz_cli: a command line of 2 KB already
+// holds hundreds of options (Args erases per option, quadratic in their number: fine for real
+// command lines, not for 64 KB of them); a capped run takes milliseconds, so 5 s is a hang.
+const targets = {
+  fuzz_scene: { seeds: ['assets/scenes'], flags: [] },
+  fuzz_cli: { seeds: [], flags: ['-max_len=2048', '-timeout=5'] },
+};
+const target = targets[name] || { seeds: [], flags: [] };
+const seeds = [...target.seeds.map((d) => path.join(source, d)), path.join(source, 'tests', 'fuzz', 'corpus', name)];
 for (const dir of seeds)
   if (fs.existsSync(dir))
     for (const f of fs.readdirSync(dir)) fs.copyFileSync(path.join(dir, f), path.join(corpus, `${path.basename(dir)}-${f}`));
 const artifacts = path.join(process.env.CSPACELAB_ARTIFACTS || os.tmpdir(), 'fuzz') + path.sep;
 fs.mkdirSync(artifacts, { recursive: true });
 const args = [`-max_total_time=${seconds}`, `-artifact_prefix=${artifacts}${name}-`, '-print_final_stats=1',
-              '-max_len=65536', '-timeout=10', '-rss_limit_mb=2048', corpus];
+              '-max_len=65536', '-timeout=10', '-rss_limit_mb=2048', ...target.flags, ...extra, corpus];
 const dict = path.join(source, 'tests', 'fuzz', `${name.replace(/^fuzz_/, '')}.dict`);
 if (fs.existsSync(dict)) args.unshift(`-dict=${dict}`);
 const r = spawnSync(fuzzer, args, { encoding: 'utf8', maxBuffer: 256 << 20,

@@ -102,6 +102,21 @@ TEST_CASE("a path that only grazes an obstacle is not accepted") {
   CHECK(r.trace.back().kind != EdgeEvent::Kind::Certify);
 }
 
+TEST_CASE("a path along a wall at a hair's clearance: a collision within the budget, not a hang") {
+  // Found while bounding the CLI fuzzer's inputs (cspacelab check wall-gap.json --from
+  // 0.500001,0.05 --to 0.500001,0.4): eta ~ 1e-12 all along, so bisection would need ~10^11
+  // midpoints, breadth first (the queue alone grew past a gigabyte). It gives up at the budget.
+  const csl::CollisionWorld world(csl::PointRobot{}, {csl::Wall{{0.5, 0.0}, {0.5, 0.45}}}, {0, 0}, {1, 1});
+  const double x = 0.5 + csl::kWallTolerance + 1e-12;
+  const auto r = csl::check_edge(world, kBisection, config({x, 0.05}), config({x, 0.4}));
+  CHECK(r.collision);
+  CHECK(r.evaluations == csl::kMaxBisectionEvaluations);
+  // At a clearance of 1e-4 the same edge is proven free with a small part of the budget.
+  const auto free = csl::check_edge(world, kBisection, config({0.5001, 0.05}), config({0.5001, 0.4}));
+  CHECK_FALSE(free.collision);
+  CHECK(free.evaluations < 5000);
+}
+
 TEST_CASE("checker specs parse strictly") {
   CHECK(EdgeCheckerSpec::parse("grid:17").resolution == 17);
   CHECK(EdgeCheckerSpec::parse("grid:17").name() == "grid:17");

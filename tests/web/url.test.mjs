@@ -112,6 +112,18 @@ test('buildQuery writes what parseConfig reads back, numbers to the last bit', a
   assert.match(problems[1], /obj cannot be written in a link/);
 });
 
+test('buildQuery names a value too long for a link instead of writing one parseConfig refuses', async () => {
+  // Found by tests/fuzz/fuzz_url.mjs: a long string parameter was written without a problem,
+  // and the link then lost it ("description: 660 characters is more than a link may carry").
+  const snapshot = { lesson: 'notation', scene: null, params: { description: 'joints=' + 'R'.repeat(300), mode: 'build' }, steps: 0 };
+  const { query, problems } = await U.buildQuery(snapshot);
+  assert.deepEqual(problems, ['the parameter description takes 309 characters in a link, more than the 256 characters a value may']);
+  assert.equal(query, 'lesson=notation&mode=build&steps=0');
+  const spaces = ' '.repeat(86);  // 86 characters, 258 once percent-encoded
+  assert.match((await U.buildQuery({ ...snapshot, params: { description: spaces } })).problems[0], /258 characters in a link/);
+  assert.deepEqual((await U.buildQuery({ ...snapshot, params: { description: ' '.repeat(85) } })).problems, []);
+});
+
 test('messages quote untrusted text short and printable', () => {
   assert.equal(U.excerpt('abc'), '"abc"');
   assert.equal(U.excerpt('a\u0000b\nc\u202e'), '"a?b?c\u202e"');
