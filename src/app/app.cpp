@@ -191,7 +191,13 @@ void App::top_bar() {
     // Places the next `w` pixels wide: after the last item with `gap`, or at a new row.
     auto place = [&](float w, float gap) {
       if (first) {
+        // Right after the title; on a narrow window (a phone) already on a row of its own.
         first = false;
+        if (first_row.x + w > right - actions_w - 24) {
+          on_first_row = false;
+          ImGui::NewLine();
+          ImGui::SetCursorPosX(indent);
+        }
         return;
       }
       const float x = ImGui::GetItemRectMax().x - ImGui::GetWindowPos().x + gap;

@@ -356,7 +356,7 @@ class AnalysisLesson : public Lesson {
       }
     }
     ui::section("Obstacles");
-    editor_.toolbar(scene_, ctx);
+    if (editor_.toolbar(scene_, ctx)) measure();
   }
 
   void bound_plot(ImVec2 size) {

@@ -93,7 +93,7 @@ class CollisionLesson : public Lesson {
     trace_table();
     ImGui::Separator();
     ImGui::TextDisabled("Obstacles (drawn in the view)");
-    editor_.toolbar(scene_, ctx);
+    if (editor_.toolbar(scene_, ctx)) recompute();
   }
 
   void views(LabContext& ctx, ImVec2 size) override {

@@ -112,32 +112,46 @@ class PotentialLesson : public Lesson {
 
     ui::section("Field");
     bool changed = false;
-    changed |= slider("rho0", &field_params_.rho0, 0.02, 0.3, "region of influence of each obstacle");
-    changed |= slider("eta", &field_params_.eta, 1e-6, 1e-2, "repulsive gain", true);
-    changed |= slider("zeta", &field_params_.zeta, 0.1, 10.0, "attractive gain", true);
-    changed |= slider("switch d", &field_params_.switch_distance, 0.01, 1.0, "quadratic pull within d of the goal, conic beyond");
+    PotentialParams f = field_params_;
+    changed |= slider("rho0", &f.rho0, 0.02, 0.3, "region of influence of each obstacle");
+    changed |= slider("eta", &f.eta, 1e-6, 1e-2, "repulsive gain", true);
+    changed |= slider("zeta", &f.zeta, 0.1, 10.0, "attractive gain", true);
+    changed |= slider("switch d", &f.switch_distance, 0.01, 1.0, "quadratic pull within d of the goal, conic beyond");
     if (robot_kind() == Kind::Polygon) {
       double theta = from_[2];
       if (slider("theta", &theta, -kPi, kPi, "the robot's orientation (drag the robot to move it)")) set_from(config({from_[0], from_[1], theta}));
     }
-    if (changed) rebuild();
+    if (changed && f.problem().empty()) {
+      field_params_ = f;
+      rebuild();
+    }
 
     ui::section("Gradient descent");
     changed = false;
-    changed |= slider("step", &descent_params_.step, 0.001, 0.1, "alpha: the length of one descent step", true);
-    int escapes = descent_params_.escapes;
-    if (ImGui::SliderInt("escapes", &escapes, 0, 20)) descent_params_.escapes = escapes, changed = true;
+    DescentParams d = descent_params_;
+    changed |= slider("step", &d.step, 0.001, 0.1, "alpha: the length of one descent step", true);
+    int escapes = d.escapes;
+    if (ImGui::SliderInt("escapes", &escapes, 0, 20, "%d", ImGuiSliderFlags_AlwaysClamp)) {
+      d.escapes = escapes;
+      changed = true;
+    }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("random walks allowed out of local minima (0: plain descent)");
-    int seed = static_cast<int>(descent_params_.seed);
-    if (ImGui::InputInt("seed", &seed) && seed >= 0) descent_params_.seed = static_cast<std::uint64_t>(seed), changed = true;
-    if (changed) restart_descent();
+    int seed = static_cast<int>(std::min<std::uint64_t>(d.seed, 2147483647u));
+    if (ImGui::InputInt("seed", &seed) && seed >= 0) {
+      d.seed = static_cast<std::uint64_t>(seed);
+      changed = true;
+    }
+    if (changed && d.problem().empty()) {
+      descent_params_ = d;
+      restart_descent();
+    }
     if (ImGui::Button("Descend from the start")) set_from(scene_.start);
     status_text();
 
     ui::section("At the robot");
     forces_table();
     ui::section("Obstacles");
-    editor_.toolbar(scene_, ctx);
+    if (editor_.toolbar(scene_, ctx)) scene_changed();
   }
 
   void views(LabContext& ctx, ImVec2 size) override {
@@ -160,8 +174,8 @@ class PotentialLesson : public Lesson {
     load(s);
     return true;
   }
-  bool undo() override { return editor_.undo(scene_) && (load(Scene(scene_)), true); }
-  bool redo() override { return editor_.redo(scene_) && (load(Scene(scene_)), true); }
+  bool undo() override { return editor_.undo(scene_) && (scene_changed(), true); }
+  bool redo() override { return editor_.redo(scene_) && (scene_changed(), true); }
 
   json state(const json& args) const override {
     (void)args;
@@ -189,7 +203,8 @@ class PotentialLesson : public Lesson {
              {"tau", finite_config(r.tau)},
              {"field", {{"zeta", field_params_.zeta}, {"switch", field_params_.switch_distance}, {"eta", field_params_.eta}, {"rho0", field_params_.rho0}}},
              {"steps", descent_ ? descent_->steps() : 0},
-             {"heat_map", {{"nodes", kGridNodes}, {"levels", map_u_.level_count}, {"lo", map_u_.scale.lo}, {"hi", map_u_.scale.hi}}}};
+             {"heat_map", {{"nodes", kGridNodes}, {"levels", map_u_.level_count}, {"lo", map_u_.scale.lo}, {"hi", map_u_.scale.hi},
+                           {"slice_theta", robot_kind() == Kind::Polygon ? json(cspace_key_) : json(nullptr)}}}};
     if (descent_) {
       json trajectory = json::array();
       for (const Config& c : descent_->trajectory()) trajectory.push_back(config_to_json(c));
@@ -297,8 +312,9 @@ class PotentialLesson : public Lesson {
   }
 
   bool slider(const char* label, double* v, double lo, double hi, const char* tip, bool log = false) {
-    const bool changed = ImGui::SliderScalar(label, ImGuiDataType_Double, v, &lo, &hi, log ? "%.3g" : "%.3f",
-                                             log ? ImGuiSliderFlags_Logarithmic : 0);
+    // AlwaysClamp: a value typed with Ctrl+click stays in range too (0 for rho0 would be invalid).
+    const ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp | (log ? ImGuiSliderFlags_Logarithmic : 0);
+    const bool changed = ImGui::SliderScalar(label, ImGuiDataType_Double, v, &lo, &hi, log ? "%.3g" : "%.3f", flags);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tip);
     return changed;
   }
@@ -313,12 +329,33 @@ class PotentialLesson : public Lesson {
   void load(const Scene& s) {
     scene_ = s;
     from_ = scene_.start;
-    start_before_ = scene_.start;
+    rebuild();
+  }
+
+  // After the scene changed in place (an edit, a drag, undo, redo, delete), against built_, the
+  // scene the world was built from: another robot starts over; a moved start only moves the
+  // descent's start (the world and the fields do not depend on it); anything else rebuilds.
+  void scene_changed() {
+    json now = scene_to_json(scene_), before = scene_to_json(built_);
+    if (now["robot"] != before["robot"]) {
+      load(Scene(scene_));
+      return;
+    }
+    const bool start_moved = now["start"] != before["start"];
+    now.erase("start");
+    before.erase("start");
+    if (start_moved) from_ = scene_.start;
+    if (now == before) {
+      built_ = scene_;
+      set_from(from_);
+      return;
+    }
     rebuild();
   }
 
   // After the scene or the field changed: world, field, heat maps, and the descent from from_.
   void rebuild() {
+    built_ = scene_;
     descent_.reset();
     field_.reset();
     world_ = std::make_unique<CollisionWorld>(scene_);
@@ -328,11 +365,13 @@ class PotentialLesson : public Lesson {
     workspace_grids();
     cspace_key_ = std::numeric_limits<double>::quiet_NaN();
     restart_descent();
+    cspace_grids(false);
   }
 
   void set_from(const Config& q) {
     from_ = world_->space().wrap(q);
     restart_descent();
+    cspace_grids(false);  // the polygon's slice follows its angle (the state reports it)
   }
 
   // The descent from from_ with the current parameters, at step 0; none if from_ collides.
@@ -456,6 +495,7 @@ class PotentialLesson : public Lesson {
     if (kind == Kind::Point) cspace_grids(ctx.playback.playing);
     view_.begin("##potential-workspace", size, scene_.workspace_min, scene_.workspace_max);
     ctx.views["workspace"] = &view_;
+    if (kind == Kind::Point) ctx.views["cspace"] = &view_;  // the point's workspace is its C-space
     view_.draw_grid();
     view_.push_clip();
     if (kind == Kind::Point) {
@@ -487,14 +527,7 @@ class PotentialLesson : public Lesson {
     if (robot_drag(q)) return;
     SceneEditor::Options options;
     options.endpoints_are_points = kind != Kind::Arm;
-    if (editor_.edit(view_, scene_, ctx, options)) {
-      // The start moved (or an obstacle): the descent starts from the scene's start again only
-      // if the start itself was dragged.
-      const bool start_moved = (scene_.start - start_before_).norm() > 0;
-      if (start_moved) from_ = scene_.start;
-      rebuild();
-    }
-    start_before_ = scene_.start;
+    if (editor_.edit(view_, scene_, ctx, options)) scene_changed();
   }
 
   // Arrows at every control point: pull (green), push (red), their sum (dark); and for the
@@ -619,7 +652,7 @@ class PotentialLesson : public Lesson {
   PotentialParams field_params_;
   DescentParams descent_params_;
   Config from_;
-  Config start_before_;
+  Scene built_;  // the scene world_, field_ and the heat maps were built from
   std::string problem_;
   HeatMap ws_map_, map_u_;  // U_rep over the workspace; U over the C-space view
   std::vector<LevelSegment> ws_rings_;

@@ -37,7 +37,7 @@ class StepPrmLesson : public Lesson {
     stats();
     ImGui::Separator();
     ImGui::TextDisabled("Obstacles (drawn in the view)");
-    editor_.toolbar(scene_, ctx);
+    if (editor_.toolbar(scene_, ctx)) rebuild(prm_->steps());
   }
 
   void views(LabContext& ctx, ImVec2 size) override {

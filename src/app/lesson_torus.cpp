@@ -99,7 +99,7 @@ class TorusLesson : public Lesson {
       if (ImGui::SmallButton("stop the exercise")) exercise_ = Exercise::None;
     }
     ui::section("Obstacles");
-    editor_.toolbar(scene_, ctx);
+    if (editor_.toolbar(scene_, ctx)) rebuild(prm_->steps());
   }
 
   void views(LabContext& ctx, ImVec2 size) override {

@@ -343,7 +343,8 @@ void SceneEditor::draw_overlays(WorkspaceView& view, const Scene& scene) const {
   dl->PopClipRect();
 }
 
-void SceneEditor::toolbar(Scene& scene, LabContext&) {
+bool SceneEditor::toolbar(Scene& scene, LabContext&) {
+  bool changed = false;
   struct Item {
     Tool tool;
     const char* label;
@@ -365,11 +366,11 @@ void SceneEditor::toolbar(Scene& scene, LabContext&) {
   }
   ImGui::NewLine();
   ImGui::BeginDisabled(!can_undo());
-  if (ImGui::Button("Undo")) undo(scene);
+  if (ImGui::Button("Undo")) changed = undo(scene);
   ImGui::EndDisabled();
   ImGui::SameLine();
   ImGui::BeginDisabled(!can_redo());
-  if (ImGui::Button("Redo")) redo(scene);
+  if (ImGui::Button("Redo")) changed = redo(scene);
   ImGui::EndDisabled();
   ImGui::SameLine();
   ImGui::BeginDisabled(selected_ < 0);
@@ -377,10 +378,12 @@ void SceneEditor::toolbar(Scene& scene, LabContext&) {
     record(scene);
     scene.obstacles.erase(scene.obstacles.begin() + selected_);
     selected_ = -1;
+    changed = true;
   }
   ImGui::EndDisabled();
   ImGui::SameLine();
   if (ImGui::Button("Keys (?)")) show_help_ = !show_help_;
+  return changed;
 }
 
 void SceneEditor::help_window() {

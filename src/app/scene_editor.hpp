@@ -27,8 +27,9 @@ class SceneEditor {
   /// and draws the editing overlays. Returns true if `scene` changed this frame, including
   /// each frame of a drag (so views can follow live); each drag is one undo step.
   bool edit(WorkspaceView& view, Scene& scene, LabContext& ctx, const Options& options);
-  /// The tool buttons and undo/redo, for the side panel.
-  void toolbar(Scene& scene, LabContext& ctx);
+  /// The tool buttons and undo/redo, for the side panel. Returns true if `scene` changed
+  /// (Undo, Redo or Delete): the lesson must rebuild what it derives from the scene.
+  bool toolbar(Scene& scene, LabContext& ctx);
   /// The keyboard help as a window, when asked for (? key or the toolbar's button).
   void help_window();
 

@@ -134,15 +134,24 @@ test('potential fields: forces, dragging, heat map, descent, local minimum and e
     s = await api(page, 'state');
     const { scale: cs } = await page.evaluate(() => window.cspacelab.view([], 'cspace'));
     assert.ok(Math.abs(s.from[0] - 0.4) < 3 / cs && Math.abs(s.from[1] + 0.3) < 3 / cs, `placed at ${s.from}`);
-    if (s.from_free) {
-      await api(page, 'run_to', { steps: 100000 });
-      const armState = await api(page, 'state');
-      const armDesc = cli('descend', tempJson(bundled['arm-2link']), '--from', s.from.join(','));
-      assert.equal(armState.descent.outcome, armDesc.outcome);
-      assert.deepEqual(armState.descent.trajectory.at(-1), armDesc.final);
-    }
+    assert.equal(s.from_free, true, '(0.4, -0.3) is free in this scene');
+    await api(page, 'run_to', { steps: 100000 });
+    const armState = await api(page, 'state');
+    const armDesc = cli('descend', tempJson(bundled['arm-2link']), '--from', s.from.join(','));
+    assert.equal(armState.descent.outcome, armDesc.outcome);
+    assert.deepEqual(armState.descent.trajectory.at(-1), armDesc.final);
     await screenshot(page, 'potential-arm.png');
     assert.ok(s.heat_map.levels > 0, 'level lines on the torus');
+
+    // Undo goes back to the cup: another robot, so the lesson starts over on it (nothing of the
+    // arm's two angles is left in a point robot's state).
+    assert.equal(await api(page, 'undo'), true);
+    await waitFrames(page, 2);
+    s = await api(page, 'state');
+    assert.equal(s.robot, 'point');
+    assert.deepEqual(s.from, cup.start);
+    assert.equal(s.control_points.length, 1);
+    assert.equal(s.from.length, (await api(page, 'get_scene')).start.length);
     assert.deepEqual(errors, [], 'no console errors');
   } finally {
     await browser.close();

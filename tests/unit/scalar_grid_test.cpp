@@ -64,6 +64,15 @@ TEST_CASE("a saddle cell is resolved by its centre") {
   for (const auto& seg : high) CHECK(seg.a.x() * seg.b.x() > 0);  // each piece stays near one corner
   CHECK(high[0].a.isApprox(Vec2(-1, -0.5)));  // on the left edge, where x y = 0.5 by interpolation
   CHECK(high[0].b.isApprox(Vec2(-0.5, -1)));
+  // The other diagonal (mask 10: corners 1 and 3 above), f = -x y: centre 0 is below 0.5, so
+  // the level cuts off corners 1 and 3.
+  const auto g2 = csl::sample_grid(2, 2, Vec2(-1, -1), Vec2(1, 1), [](const Vec2& p) { return -p.x() * p.y(); });
+  const auto other = csl::level_set(g2, 0.5);
+  REQUIRE(other.size() == 2);
+  CHECK(other[0].a.isApprox(Vec2(0.5, -1)));  // edge 0, near corner 1 = (1, -1)
+  CHECK(other[0].b.isApprox(Vec2(1, -0.5)));  // edge 1
+  CHECK(other[1].a.isApprox(Vec2(-0.5, 1)));  // edge 2, near corner 3 = (-1, 1)
+  CHECK(other[1].b.isApprox(Vec2(-1, 0.5)));  // edge 3
   const auto low = csl::level_set(g, -0.5);  // centre above: it cuts off the two low corners
   REQUIRE(low.size() == 2);
   CHECK(low[0].a.isApprox(Vec2(0.5, -1)));
@@ -75,9 +84,11 @@ TEST_CASE("infinite values (inside an obstacle) stop level lines at the last fin
   const auto f = [&](const Vec2& p) { return p.norm() <= 0.3 ? inf : 1.0 / p.norm(); };
   const auto g = csl::sample_grid(41, 41, Vec2(-1, -1), Vec2(1, 1), f);
   for (double level : {2.0, 3.0, 3.3}) {
-    for (const auto& seg : csl::level_set(g, level)) {
-      CHECK(std::isfinite(seg.a.x()));
-      CHECK(std::isfinite(seg.b.y()));
+    const auto segs = csl::level_set(g, level);
+    REQUIRE(!segs.empty());
+    for (const auto& seg : segs) {
+      CHECK(seg.a.allFinite());
+      CHECK(seg.b.allFinite());
       CHECK(seg.a.norm() > 0.3 - 1e-12);
       CHECK(seg.b.norm() > 0.3 - 1e-12);
     }
