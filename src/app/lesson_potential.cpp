@@ -520,14 +520,21 @@ class PotentialLesson : public Lesson {
     draw_forces(q);
     view_.pop_clip();
     if (kind != Kind::Arm) view_.draw_marker(Vec2(scene_.goal[0], scene_.goal[1]), theme::kGoal, "G");  // the arm's goal is angles
-    const ImVec2 corner = view_.canvas_min();
-    view_.draw_list()->AddText(ImVec2(corner.x + 6, corner.y + 4), theme::kLabel,
-                               kind == Kind::Point ? "U(x, y): workspace = C-space" : "U_rep(x): what a control point feels from the obstacles");
+    title(view_, kind == Kind::Point ? "U(x, y): workspace = C-space" : "U_rep(x): what a control point feels from the obstacles");
 
     if (robot_drag(q)) return;
     SceneEditor::Options options;
     options.endpoints_are_points = kind != Kind::Arm;
     if (editor_.edit(view_, scene_, ctx, options)) scene_changed();
+  }
+
+  // A view's title in its top left corner, cut at its right edge (narrow windows put the views
+  // side by side with little room).
+  static void title(const WorkspaceView& v, const char* text) {
+    ImDrawList* dl = v.draw_list();
+    dl->PushClipRect(v.canvas_min(), v.canvas_max(), true);
+    dl->AddText(ImVec2(v.canvas_min().x + 6, v.canvas_min().y + 4), theme::kLabel, text);
+    dl->PopClipRect();
   }
 
   // Arrows at every control point: pull (green), push (red), their sum (dark); and for the
@@ -630,10 +637,9 @@ class PotentialLesson : public Lesson {
     cspace_view_.draw_list()->AddCircleFilled(at, 6.0f, world_->is_free(q) ? theme::kRobot : theme::kHit, 16);
     cspace_view_.draw_list()->AddCircle(at, 6.0f, theme::rgba(255, 255, 255), 16, 2.0f);
     cspace_view_.pop_clip();
-    const ImVec2 corner = cspace_view_.canvas_min();
-    const std::string title = arm ? "U(theta1, theta2) on the torus; grey: C-obstacles"
+    const std::string text = arm ? "U(theta1, theta2) on the torus; grey: C-obstacles"
                                   : "U(x, y, theta) at theta = " + fmt("%.3f", cspace_key_) + "; grey: a vertex on an obstacle";
-    cspace_view_.draw_list()->AddText(ImVec2(corner.x + 6, corner.y + 4), theme::kLabel, title.c_str());
+    title(cspace_view_, text.c_str());
     if (cspace_view_.hovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) placing_ = true;
     if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) placing_ = false;
     if (placing_) {
