@@ -62,8 +62,7 @@ std::string fmt(const char* f, double a) {
   return buf;
 }
 
-std::string describe(const DescentEvent& e, const Robot& robot) {
-  (void)robot;
+std::string describe(const DescentEvent& e) {
   const std::string at = format_config(e.q);
   switch (e.kind) {
     case DescentEvent::Kind::Descend:
@@ -91,7 +90,7 @@ class PotentialLesson : public Lesson {
     const long steps = descent_ ? descent_->steps() : 0;
     if (logged_ != steps) {
       if (steps == 0 || steps < logged_ || steps > logged_ + 1) ctx.log.clear();
-      if (steps > 0) ctx.log.add(steps, describe(descent_->last_event(), scene_.robot));
+      if (steps > 0) ctx.log.add(steps, describe(descent_->last_event()));
       logged_ = steps;
     }
   }
