@@ -51,15 +51,57 @@ void EdgeChecker::reset(const Config& p, const Config& q, bool endpoints_known_f
   queue_.clear();
   head_ = 0;
   const bool bisection = spec_.kind == EdgeCheckerSpec::Kind::Bisection;
-  if (spec_.kind == EdgeCheckerSpec::Kind::Grid) n_ = spec_.resolution;
-  if (spec_.kind == EdgeCheckerSpec::Kind::Step) {
-    const double segments = std::ceil(world_->space().norm(delta_) / spec_.step);
-    n_ = segments >= kMaxGridResolution ? kMaxGridResolution : std::max(2, static_cast<int>(segments) + 1);
-  }
+  if (!bisection) n_ = grid_configurations(world_->space().norm(delta_));
   // Known-free endpoints need no evaluation: start after them.
   next_ = known_free_ ? (bisection ? 2 : 1) : 0;
   if (known_free_ && bisection) queue_.push_back({0.0, eta_p_, 1.0, eta_q_, 0});
   if (known_free_ && !bisection && n_ <= 2) verdict_ = Verdict::Free;  // nothing in between
+}
+
+int EdgeChecker::grid_configurations(double length) const {
+  if (spec_.kind != EdgeCheckerSpec::Kind::Step) return spec_.resolution;
+  const double segments = std::ceil(length / spec_.step);
+  return segments >= kMaxGridResolution ? kMaxGridResolution : std::max(2, static_cast<int>(segments) + 1);
+}
+
+void EdgeChecker::check_known_free(const Config& p, const Config& q, double length, double eta_p, double eta_q) {
+  if (spec_.kind == EdgeCheckerSpec::Kind::Bisection) {
+    reset(p, q, true, eta_p, eta_q);
+    while (!done()) step();
+    return;
+  }
+  verdict_ = Verdict::Free;
+  evaluations_ = 0;
+  collision_t_.reset();
+  known_free_ = true;
+  queue_.clear();
+  head_ = 0;
+  n_ = grid_configurations(length);
+  next_ = n_;  // nothing left for step()
+  if (n_ <= 2) return;
+  const Space& space = world_->space();
+  const double last = static_cast<double>(n_ - 1);
+  // Configurations i < first and i > final are proven free by the endpoints' balls: the robot
+  // at q(t) is within lambda(p, q(t)) = t lambda of where it is at p, and eta_p clears that.
+  // The margins (relative and absolute) keep rounding in t, lambda and the pose on the safe side.
+  int first = 1, final = n_ - 2;
+  if (eta_p > 0.0 || eta_q > 0.0) {  // false for NaN: nothing skipped
+    const double lambda = world_->motion_bound(p, q) * (1.0 + 1e-6) + 1e-9;
+    const auto proven = [&](double t, double eta) { return t * lambda < eta * (1.0 - 1e-6) - 1e-9; };
+    while (first <= final && proven(static_cast<double>(first) / last, eta_p)) ++first;
+    while (final >= first && proven(1.0 - static_cast<double>(final) / last, eta_q)) --final;
+  }
+  if (first > final) return;
+  const Config delta = space.difference(p, q);
+  for (int i = first; i <= final; ++i) {
+    const double t = static_cast<double>(i) / last;  // as step_grid() computes it
+    ++evaluations_;
+    if (!world_->is_free(space.along(p, delta, t))) {
+      verdict_ = Verdict::Collision;
+      collision_t_ = t;
+      return;
+    }
+  }
 }
 
 void EdgeChecker::evaluate(double t, bool need_clearance) {

@@ -81,6 +81,17 @@ class EdgeChecker {
   /// free with clearances eta_p and eta_q (a roadmap's vertices): they are not evaluated again.
   void reset(const Config& p, const Config& q, bool endpoints_known_free = false, double eta_p = 0.0,
              double eta_q = 0.0);
+  /// The whole check of p -> q at once, without events, for roadmaps: p and q are known free
+  /// with clearances eta_p and eta_q (NaN: not known), and `length` is the space's distance from
+  /// p to q (what Space::distance computes). The verdict and collision_t are those of
+  /// reset(p, q, true, eta_p, eta_q) and step() to the end, and so are bisection's evaluations.
+  /// The grid and step checkers skip the configurations the endpoints' clearances prove free
+  /// (lambda(p, q(t)) = t lambda(p, q) < eta_p, likewise from q): the same verdict from fewer
+  /// evaluations, as the grid's configurations are only ever skipped, never replaced.
+  void check_known_free(const Config& p, const Config& q, double length, double eta_p, double eta_q);
+  /// Grid and step checkers: how many configurations (endpoints included) an edge of this
+  /// length gets.
+  int grid_configurations(double length) const;
   bool done() const { return verdict_ != Verdict::Pending; }
   /// One unit of work (see the file comment); call only while !done(). The event stays valid
   /// until the next step() or reset() (no copy per step: roadmaps check millions of edges).

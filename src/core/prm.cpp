@@ -1,5 +1,7 @@
 #include "core/prm.hpp"
 
+#include "core/nearest_grid.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -150,7 +152,35 @@ void Prm::reset() {
 }
 
 void Prm::run() {
-  while (!done()) step();
+  while (!done()) finish_phase();
+}
+
+void Prm::finish_phase() {
+  if (done()) return;
+  const PrmPhase phase = phase_;
+  // The bulk of the phase without events (the same units, in the same order, counted as
+  // steps); its last unit by step(), so that last_event() is the one stepping would leave.
+  if (phase == PrmPhase::Sampling) {
+    while (samples_drawn_ + 1 < params_.samples) {
+      ++steps_;
+      draw_sample<false>();
+    }
+  } else if (phase == PrmPhase::Connecting) {
+    const int n = static_cast<int>(roadmap_.vertices.size());
+    for (;;) {
+      if (next_candidate_ < candidates_.size()) {
+        ++steps_;
+        check_candidate<false>();
+      } else if (p_ + 2 < n) {  // not yet the last vertex (which step() finishes)
+        ++steps_;
+        ++p_;
+        find_candidates<false>();
+      } else {
+        break;
+      }
+    }
+  }
+  while (!done() && phase_ == phase) step();
 }
 
 void Prm::run_to(long steps) {
@@ -160,7 +190,6 @@ void Prm::run_to(long steps) {
 
 const PrmEvent& Prm::step() {
   if (done()) throw std::logic_error("Prm::step() after done()");
-  const bool bisection = params_.checker.kind == EdgeCheckerSpec::Kind::Bisection;
   PrmEvent& e = event_;
   e = PrmEvent{};
   e.step = ++steps_;
@@ -185,19 +214,7 @@ const PrmEvent& Prm::step() {
       break;
     }
     case PrmPhase::Sampling: {
-      e.q = world_->space().sample(rng_);
-      e.sample = ++samples_drawn_;
-      if (world_->is_free(e.q)) {
-        e.kind = PrmEvent::Kind::SampleAccepted;
-        e.vertex = static_cast<int>(roadmap_.vertices.size());
-        roadmap_.vertices.push_back(e.q);
-        // Bisection needs every vertex's clearance; the grid checkers do not.
-        roadmap_.clearance.push_back(bisection ? world_->clearance(e.q) : std::numeric_limits<double>::quiet_NaN());
-        components_.add();
-      } else {
-        e.kind = PrmEvent::Kind::SampleRejected;
-        e.obstacle = world_->nearest(e.q).obstacle;
-      }
+      draw_sample<true>();
       if (samples_drawn_ == params_.samples) {
         phase_ = PrmPhase::Connecting;
         begin_connecting();
@@ -206,10 +223,10 @@ const PrmEvent& Prm::step() {
     }
     case PrmPhase::Connecting:
       if (next_candidate_ < candidates_.size()) {
-        check_candidate();
+        check_candidate<true>();
       } else {
         ++p_;
-        find_candidates();
+        find_candidates<true>();
       }
       // The last vertex's last candidate done: the search is the next step.
       if (next_candidate_ == candidates_.size() && p_ + 1 == static_cast<int>(roadmap_.vertices.size()))
@@ -224,23 +241,51 @@ const PrmEvent& Prm::step() {
   return e;
 }
 
+template <bool kEmit>
+void Prm::draw_sample() {
+  const Config q = world_->space().sample(rng_);
+  ++samples_drawn_;
+  const bool free = world_->is_free(q);
+  if (free) {
+    roadmap_.vertices.push_back(q);
+    // Bisection needs every vertex's clearance; the grid checkers only some (check_candidate).
+    roadmap_.clearance.push_back(params_.checker.kind == EdgeCheckerSpec::Kind::Bisection
+                                     ? world_->clearance(q)
+                                     : std::numeric_limits<double>::quiet_NaN());
+    components_.add();
+  }
+  if constexpr (kEmit) {
+    PrmEvent& e = event_;
+    e.q = q;
+    e.sample = samples_drawn_;
+    if (free) {
+      e.kind = PrmEvent::Kind::SampleAccepted;
+      e.vertex = static_cast<int>(roadmap_.vertices.size()) - 1;
+    } else {
+      e.kind = PrmEvent::Kind::SampleRejected;
+      e.obstacle = world_->nearest(q).obstacle;
+    }
+  }
+}
+
 void Prm::begin_connecting() {
-  index_.build(roadmap_.vertices);
   const int n = static_cast<int>(roadmap_.vertices.size());
   const NeighborRule& rule = params_.neighbors;
   k_ = rule.kind == NeighborRule::Kind::Nearest  ? rule.k
        : rule.kind == NeighborRule::Kind::PrmStar ? NeighborRule::prm_star_k(n, world_->space().dim())
                                                   : 0;
-  // The k nearest of all vertices at once, queried in the tree's leaf order (cache-friendly);
-  // the answers do not depend on the order, so the roadmap is the same as asking one by one.
-  knn_.assign(static_cast<std::size_t>(n) * static_cast<std::size_t>(k_), Neighbor{-1, 0.0});
-  for (int v : index_.leaf_order()) {
-    index_.k_nearest(roadmap_.vertices[static_cast<std::size_t>(v)], k_, v, scratch_);
-    std::copy(scratch_.begin(), scratch_.end(), knn_.begin() + static_cast<std::ptrdiff_t>(v) * k_);
+  if (rule.kind == NeighborRule::Kind::Radius) {
+    index_.build(roadmap_.vertices);
+  } else {
+    // The k nearest of all vertices at once (the same answers as asking one by one).
+    all_k_nearest(world_->space(), roadmap_.vertices, k_, knn_);
   }
   // Being among the k nearest is not symmetric: the pair (p, q), q < p, is skipped when p is
   // connected if q had p among its own k nearest, i.e. if the pair was checked from q's side.
   // Flagged here once for all vertices; the rest are the candidates, at most one edge each.
+  // q's row is sorted: p is in it if p is nearer than its last entry or is that entry. The
+  // distance q measured to p may differ from p's to q in the last bit (angles wrap), so a
+  // comparison too close to call looks through q's row instead.
   seen_.assign(knn_.size(), 0);
   std::size_t pairs = 0;
   const auto uk = static_cast<std::size_t>(k_);
@@ -251,7 +296,17 @@ void Prm::begin_connecting() {
       bool seen = false;
       if (other < p) {
         const Neighbor* theirs = &knn_[static_cast<std::size_t>(other) * uk];
-        for (std::size_t j = 0; j < uk && !seen; ++j) seen = theirs[j].index == p;
+        const Neighbor& last = theirs[uk - 1];
+        const double d2 = knn_[row + i].squared_distance;
+        if (last.index < 0 || last.index == p) {
+          seen = true;  // q's row holds every other vertex, or ends with p
+        } else if (d2 < last.squared_distance * (1.0 - 1e-12)) {
+          seen = true;
+        } else if (d2 > last.squared_distance * (1.0 + 1e-12)) {
+          seen = false;
+        } else {
+          for (std::size_t j = 0; j < uk && !seen; ++j) seen = theirs[j].index == p;
+        }
       }
       seen_[row + i] = seen ? 1 : 0;
       pairs += seen ? 0 : 1;
@@ -263,6 +318,7 @@ void Prm::begin_connecting() {
   next_candidate_ = 0;
 }
 
+template <bool kEmit>
 void Prm::find_candidates() {
   const Config& q = roadmap_.vertices[static_cast<std::size_t>(p_)];
   candidates_.clear();
@@ -287,44 +343,52 @@ void Prm::find_candidates() {
     prefetch(v);  // the first coordinates, and the size at the end (another cache line, maybe)
     prefetch(reinterpret_cast<const char*>(v) + sizeof(Config) - 1);
   }
-  event_.kind = PrmEvent::Kind::Neighbors;
-  event_.vertex = p_;
-  event_.q = q;
-  event_.candidates = static_cast<int>(candidates_.size());
+  if constexpr (kEmit) {
+    event_.kind = PrmEvent::Kind::Neighbors;
+    event_.vertex = p_;
+    event_.q = q;
+    event_.candidates = static_cast<int>(candidates_.size());
+  }
 }
 
+template <bool kEmit>
 void Prm::check_candidate() {
   const Neighbor candidate = candidates_[next_candidate_++];
   const int q = candidate.index;
   const auto up = static_cast<std::size_t>(p_), uq = static_cast<std::size_t>(q);
   if (params_.connector) {
-    connect_candidate(q);
+    connect_candidate<kEmit>(q);
     return;
   }
-  // Only bisection reads the clearances (the others' are NaN): no need to fetch them.
-  if (params_.checker.kind == EdgeCheckerSpec::Kind::Bisection)
-    checker_.reset(roadmap_.vertices[up], roadmap_.vertices[uq], true, roadmap_.clearance[up], roadmap_.clearance[uq]);
-  else
-    checker_.reset(roadmap_.vertices[up], roadmap_.vertices[uq], true);
-  while (!checker_.done()) checker_.step();
+  // The index measured the same distance (same formula) as the checker would: the length.
+  const double length = std::sqrt(candidate.squared_distance);
+  double eta_p = roadmap_.clearance[up], eta_q = roadmap_.clearance[uq];
+  if (params_.checker.kind != EdgeCheckerSpec::Kind::Bisection && checker_.grid_configurations(length) > 2) {
+    // The grid checkers skip what the endpoints' clearances prove free: each vertex's is
+    // computed when an edge with configurations between its ends first needs it.
+    if (std::isnan(eta_p)) eta_p = roadmap_.clearance[up] = world_->clearance(roadmap_.vertices[up]);
+    if (std::isnan(eta_q)) eta_q = roadmap_.clearance[uq] = world_->clearance(roadmap_.vertices[uq]);
+  }
+  checker_.check_known_free(roadmap_.vertices[up], roadmap_.vertices[uq], length, eta_p, eta_q);
   ++edge_checks_;
   evaluations_ += checker_.evaluations();
-  PrmEvent& e = event_;
-  e.vertex = p_;
-  e.other = q;
-  e.evaluations = checker_.evaluations();
-  if (checker_.verdict() == Verdict::Free) {
-    e.kind = PrmEvent::Kind::EdgeAdded;
-    // The index measured the same distance (same formula): its square root is the length.
-    roadmap_.edges.push_back({std::min(p_, q), std::max(p_, q), std::sqrt(candidate.squared_distance), true});
+  const bool free = checker_.verdict() == Verdict::Free;
+  if (free) {
+    roadmap_.edges.push_back({std::min(p_, q), std::max(p_, q), length, true});
     ++edges_alive_;
     components_.unite(p_, q);
-  } else {
-    e.kind = PrmEvent::Kind::EdgeRejected;
-    e.collision_t = *checker_.collision_t();
+  }
+  if constexpr (kEmit) {
+    PrmEvent& e = event_;
+    e.vertex = p_;
+    e.other = q;
+    e.evaluations = checker_.evaluations();
+    e.kind = free ? PrmEvent::Kind::EdgeAdded : PrmEvent::Kind::EdgeRejected;
+    if (!free) e.collision_t = *checker_.collision_t();
   }
 }
 
+template <bool kEmit>
 void Prm::connect_candidate(int q) {
   const auto up = static_cast<std::size_t>(p_), uq = static_cast<std::size_t>(q);
   const int a = std::min(p_, q), b = std::max(p_, q);
@@ -333,19 +397,19 @@ void Prm::connect_candidate(int q) {
                                               pair_seed(params_.seed, a, b));
   ++edge_checks_;
   evaluations_ += path.evaluations;
-  PrmEvent& e = event_;
-  e.vertex = p_;
-  e.other = q;
-  e.evaluations = static_cast<int>(std::min<long>(path.evaluations, std::numeric_limits<int>::max()));
-  if (!path.connected) {
-    e.kind = PrmEvent::Kind::EdgeRejected;
-    return;
+  if (path.connected) {
+    if (p_ > q) std::reverse(path.waypoints.begin(), path.waypoints.end());  // stored from a to b
+    roadmap_.edges.push_back({a, b, path.length, true, std::move(path.waypoints)});
+    ++edges_alive_;
+    components_.unite(p_, q);
   }
-  e.kind = PrmEvent::Kind::EdgeAdded;
-  if (p_ > q) std::reverse(path.waypoints.begin(), path.waypoints.end());  // stored from a to b
-  roadmap_.edges.push_back({a, b, path.length, true, std::move(path.waypoints)});
-  ++edges_alive_;
-  components_.unite(p_, q);
+  if constexpr (kEmit) {
+    PrmEvent& e = event_;
+    e.vertex = p_;
+    e.other = q;
+    e.evaluations = static_cast<int>(std::min<long>(path.evaluations, std::numeric_limits<int>::max()));
+    e.kind = path.connected ? PrmEvent::Kind::EdgeAdded : PrmEvent::Kind::EdgeRejected;
+  }
 }
 
 bool Prm::verify_edge(const RoadmapEdge& r, double& collision_t) {

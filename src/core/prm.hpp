@@ -92,7 +92,9 @@ struct RoadmapEdge {
 
 struct Roadmap {
   std::vector<Config> vertices;  ///< V: 0 = q_init, 1 = q_final, then accepted samples in order
-  std::vector<double> clearance; ///< eta per vertex (bisection only; NaN otherwise)
+  /// eta per vertex: for bisection, of every vertex; for the grid checkers, of those an edge
+  /// needed it for (see EdgeChecker::check_known_free); NaN where not computed.
+  std::vector<double> clearance;
   std::vector<RoadmapEdge> edges;  ///< E in the order they were added
 };
 
@@ -109,8 +111,12 @@ class Prm {
   bool done() const { return phase_ == PrmPhase::Done; }
   /// One step (see the file comment); the event stays valid until the next step.
   const PrmEvent& step();
-  /// Steps to the end.
+  /// Steps to the end (phase by phase, see finish_phase()).
   void run();
+  /// Steps to the end of the current phase: the state and step count of step() repeated until
+  /// the phase changes (or done()), and last_event() that of its last step, but the steps before
+  /// the last build no events (roadmaps of many thousands of samples: the CLI, experiments).
+  void finish_phase();
   /// Back to the state before step 1.
   void reset();
   /// To the state after `steps` steps (replaying from the start if that is behind us).
@@ -146,10 +152,17 @@ class Prm {
   const std::vector<Neighbor>& candidates() const { return candidates_; }
 
  private:
+  // The units of work of step(); kEmit: describe it in event_ (finish_phase() runs most units
+  // without, and must leave the same state).
+  template <bool kEmit>
+  void draw_sample();
   void begin_connecting();
+  template <bool kEmit>
   void find_candidates();
+  template <bool kEmit>
   void check_candidate();
   // check_candidate() with params_.connector: the connector's path or nothing.
+  template <bool kEmit>
   void connect_candidate(int q);
   void query();
   // Whether every straight piece of edge r is free by the exact check; on failure, the

@@ -36,9 +36,11 @@ struct Result {
   double us_per_milestone() const { return 1e6 * seconds / static_cast<double>(milestones); }
 };
 
-// Our PRM up to the end of the connect phase (the roadmap), as the homework builds it.
+// Our PRM up to the end of the connect phase (the roadmap), as the homework builds it: phase by
+// phase as the CLI and experiments run it, or (`stepped`) one step() at a time with an event
+// per step, as the lessons animate it. Both build the identical roadmap.
 Result ours(const csl::CollisionWorld& world, const csl::Config& start, const csl::Config& goal, int samples,
-            double step, int repeats) {
+            double step, int repeats, bool stepped = false) {
   csl::PrmParams p;
   p.samples = samples;
   p.neighbors = csl::NeighborRule::parse("k:10");
@@ -49,7 +51,12 @@ Result ours(const csl::CollisionWorld& world, const csl::Config& start, const cs
   Result r;
   r.seconds = bench::best_of(repeats, [&] {
     csl::Prm prm(world, start, goal, p);
-    while (prm.phase() != csl::PrmPhase::Query && !prm.done()) prm.step();
+    while (prm.phase() != csl::PrmPhase::Query && !prm.done()) {
+      if (stepped)
+        prm.step();
+      else
+        prm.finish_phase();
+    }
     r.milestones = static_cast<long>(prm.roadmap().vertices.size());
     r.edges = prm.edges_alive();
   });
@@ -93,7 +100,7 @@ csl::Config first_free(const csl::CollisionWorld& world, std::uint64_t seed) {
 struct Row {
   std::string scene;
   int samples;
-  Result ours, ompl;
+  Result ours, stepped, ompl;
 };
 
 }  // namespace
@@ -125,7 +132,7 @@ int main(int argc, char** argv) {
 
   std::vector<Row> rows;
   for (int n : sizes) {
-    Row row{"point, 20 disks, R^2", n, {}, {}};
+    Row row{"point, 20 disks, R^2", n, {}, {}, {}};
     double step = 0.01 * std::sqrt(2.0);
 #ifdef CSPACELAB_WITH_OMPL
     auto space = std::make_shared<ob::RealVectorStateSpace>(2);
@@ -139,13 +146,14 @@ int main(int argc, char** argv) {
     step = si->getStateValidityCheckingResolution() * space->getMaximumExtent();
 #endif
     row.ours = ours(disks, point_start, point_goal, n, step, repeats);
+    row.stepped = ours(disks, point_start, point_goal, n, step, repeats, true);
 #ifdef CSPACELAB_WITH_OMPL
     row.ompl = ompl_prm(si, row.ours.milestones, repeats);
 #endif
     rows.push_back(row);
   }
   for (int n : sizes) {
-    Row row{"2-link arm, 6 disks, T^2", n, {}, {}};
+    Row row{"2-link arm, 6 disks, T^2", n, {}, {}, {}};
     double step = 0.01 * std::sqrt(2.0) * csl::kPi;  // OMPL: 1% of SO(2) x SO(2)'s extent, sqrt(2) pi
 #ifdef CSPACELAB_WITH_OMPL
     auto space = std::make_shared<ob::CompoundStateSpace>();
@@ -161,6 +169,7 @@ int main(int argc, char** argv) {
     step = si->getStateValidityCheckingResolution() * space->getMaximumExtent();
 #endif
     row.ours = ours(arm, arm_start, arm_goal, n, step, repeats);
+    row.stepped = ours(arm, arm_start, arm_goal, n, step, repeats, true);
 #ifdef CSPACELAB_WITH_OMPL
     row.ompl = ompl_prm(si, row.ours.milestones, repeats);
 #endif
@@ -170,24 +179,26 @@ int main(int argc, char** argv) {
   if (as_json) {
     std::printf("[");
     for (std::size_t i = 0; i < rows.size(); ++i)
-      std::printf("%s{\"scene\": \"%s\", \"samples\": %d, \"milestones\": %ld, \"ours_us\": %.4f, \"ompl_us\": %s}",
+      std::printf("%s{\"scene\": \"%s\", \"samples\": %d, \"milestones\": %ld, \"ours_us\": %.4f, \"stepped_us\": %.4f, \"ompl_us\": %s}",
                   i ? ", " : "", rows[i].scene.c_str(), rows[i].samples, rows[i].ours.milestones,
-                  rows[i].ours.us_per_milestone(),
+                  rows[i].ours.us_per_milestone(), rows[i].stepped.us_per_milestone(),
                   rows[i].ompl.milestones ? std::to_string(rows[i].ompl.us_per_milestone()).c_str() : "null");
     std::printf("]\n");
     return 0;
   }
   std::printf("Roadmap construction, k = 10, matching edge-check resolution, best of %d\n", repeats);
-  std::printf("%-26s %7s %10s %11s %11s %10s %10s %7s\n", "scene", "samples", "milestones", "ours us/ms",
+  std::printf("%-26s %7s %10s %11s %11s %11s %10s %10s %7s\n", "scene", "samples", "milestones", "ours us/ms", "stepped",
               "OMPL us/ms", "ours edges", "OMPL edges", "ratio");
   for (const Row& r : rows) {
-    std::printf("%-26s %7d %10ld %11.3f ", r.scene.c_str(), r.samples, r.ours.milestones, r.ours.us_per_milestone());
+    std::printf("%-26s %7d %10ld %11.3f %11.3f ", r.scene.c_str(), r.samples, r.ours.milestones, r.ours.us_per_milestone(),
+                r.stepped.us_per_milestone());
     if (r.ompl.milestones)
       std::printf("%11.3f %10ld %10ld %6.1fx\n", r.ompl.us_per_milestone(), r.ours.edges, r.ompl.edges,
                   r.ompl.us_per_milestone() / r.ours.us_per_milestone());
     else
       std::printf("%11s %10ld %10s %7s\n", "-", r.ours.edges, "-", "-");
   }
-  std::printf("(us/ms: microseconds per milestone; ratio: OMPL's time per milestone / ours)\n");
+  std::printf("(us/ms: microseconds per milestone; ours: phase by phase, as the CLI runs it; stepped: one step()\n"
+              " and its event at a time, as a lesson animates it; ratio: OMPL's time per milestone / ours)\n");
   return 0;
 }

@@ -187,3 +187,56 @@ TEST_CASE("point robot, random disk worlds: bisection agrees with the analytic a
   CHECK(grid_misses > 50);
   MESSAGE("grid:10 missed " << grid_misses << " of " << collisions << " colliding edges");
 }
+
+// check_known_free is what a roadmap uses: against the stepped check of the same edge, the same
+// verdict and collision t always; for bisection (or without clearances) the same evaluations;
+// for the grid checkers never more, as it only skips what the endpoints' clearances prove free.
+TEST_CASE("check_known_free = reset + step to the end, on random edges of every robot") {
+  const std::vector<csl::Obstacle> obstacles = {
+      csl::Disk{{0.3, 0.3}, 0.1}, csl::Disk{{0.7, 0.6}, 0.08},
+      csl::PolygonObstacle{{{0.45, 0.75}, {0.6, 0.8}, {0.5, 0.95}}},
+      csl::Wall{{0.1, 0.8}, {0.3, 0.95}}};
+  const std::vector<csl::CollisionWorld> worlds = {
+      csl::CollisionWorld(csl::PointRobot{}, obstacles, {0, 0}, {1, 1}),
+      csl::CollisionWorld(csl::ArmRobot{{0.5, 0.5}, 0.3, 0.2}, obstacles, {0, 0}, {1, 1}),
+      csl::CollisionWorld(csl::make_polygon_robot({{-0.03, -0.02}, {0.04, -0.02}, {0.0, 0.03}}), obstacles, {0, 0},
+                          {1, 1})};
+  csl::Rng rng(42);
+  long skipped = 0, collisions = 0;
+  for (const auto& world : worlds) {
+    const auto free_sample = [&] {
+      for (;;) {
+        const csl::Config q = world.space().sample(rng);
+        if (world.is_free(q)) return q;
+      }
+    };
+    for (const char* spec : {"grid:7", "step:0.01", "step:0.05", "bisection"}) {
+      csl::EdgeChecker stepped(world, EdgeCheckerSpec::parse(spec), false), whole(world, EdgeCheckerSpec::parse(spec), false);
+      const bool bisection = std::string(spec) == "bisection";
+      for (int trial = 0; trial < 400; ++trial) {
+        const csl::Config p = free_sample();
+        // Short edges as a roadmap has, and long ones.
+        csl::Config q = trial % 2 ? free_sample() : world.space().interpolate(p, free_sample(), 0.1);
+        if (!world.is_free(q)) continue;
+        const double eta_p = world.clearance(p), eta_q = world.clearance(q);
+        stepped.reset(p, q, true, eta_p, eta_q);
+        while (!stepped.done()) stepped.step();
+        const bool known = trial % 5 != 0;  // sometimes without clearances: nothing to skip
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        whole.check_known_free(p, q, world.space().distance(p, q), known || bisection ? eta_p : nan,
+                               known || bisection ? eta_q : nan);
+        REQUIRE(whole.done());
+        REQUIRE(whole.verdict() == stepped.verdict());
+        REQUIRE(whole.collision_t() == stepped.collision_t());
+        if (bisection || !known)
+          REQUIRE(whole.evaluations() == stepped.evaluations());
+        else
+          REQUIRE(whole.evaluations() <= stepped.evaluations());
+        skipped += stepped.evaluations() - whole.evaluations();
+        collisions += whole.verdict() == csl::Verdict::Collision ? 1 : 0;
+      }
+    }
+  }
+  CHECK(skipped > 1000);     // the clearances do spare work
+  CHECK(collisions > 300);   // and the edges are not all free
+}

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "core/angles.hpp"
+#include "core/potential_connector.hpp"
 #include "core/prm.hpp"
 
 using csl::config;
@@ -176,6 +177,63 @@ TEST_CASE("going back to step k gives the identical state") {
     REQUIRE(prm.steps() == k);
     REQUIRE(csl::roadmap_hash(prm.roadmap()) == hash_at[static_cast<std::size_t>(k - 1)]);
     REQUIRE(prm.edges_alive() == edges_at[static_cast<std::size_t>(k - 1)]);
+  }
+}
+
+TEST_CASE("finish_phase() and run() leave the state stepping leaves, phase by phase") {
+  const csl::CollisionWorld disks(csl::PointRobot{},
+                                  {csl::Disk{{0.3, 0.3}, 0.1}, csl::Disk{{0.7, 0.6}, 0.15}, csl::Wall{{0.6, 0.0}, {0.6, 0.3}}},
+                                  {0, 0}, {1, 1});
+  const csl::CollisionWorld arm(csl::ArmRobot{{0.5, 0.5}, 0.3, 0.2}, {csl::Disk{{0.8, 0.8}, 0.1}}, {0, 0}, {1, 1});
+  struct Case {
+    const csl::CollisionWorld* world;
+    csl::Config start, goal;
+    PrmParams params;
+  };
+  PrmParams with_connector = params(60, "k:5", "bisection", 4);
+  with_connector.connector = std::make_shared<csl::PotentialConnector>();
+  const std::vector<Case> cases = {
+      {&disks, config({0.05, 0.05}), config({0.95, 0.95}), params(300, "k:10", "step:0.02", 5)},
+      {&disks, config({0.05, 0.05}), config({0.95, 0.95}), params(300, "radius:0.1", "grid:5", 6)},
+      {&disks, config({0.05, 0.05}), config({0.95, 0.95}), params(200, "prm*", "bisection", 7)},
+      {&disks, config({0.05, 0.05}), config({0.95, 0.95}), params(1, "k:3", "bisection", 8)},
+      {&disks, config({0.05, 0.05}), config({0.95, 0.95}), params(0, "k:3", "bisection", 8)},
+      {&disks, config({0.05, 0.05}), config({0.95, 0.95}), with_connector},
+      {&arm, config({0.0, 0.0}), config({3.0, -1.0}), params(300, "k:8", "step:0.05", 9)},
+      {&disks, config({0.3, 0.3}), config({0.95, 0.95}), params(30, "k:3", "bisection", 8)},  // start in a disk
+  };
+  for (const Case& c : cases) {
+    Prm stepped(*c.world, c.start, c.goal, c.params), bulk(*c.world, c.start, c.goal, c.params);
+    while (!bulk.done()) {
+      const csl::PrmPhase phase = bulk.phase();
+      bulk.finish_phase();
+      while (!stepped.done() && stepped.phase() == phase) stepped.step();
+      REQUIRE(bulk.steps() == stepped.steps());
+      REQUIRE(bulk.phase() == stepped.phase());
+      REQUIRE(csl::roadmap_hash(bulk.roadmap()) == csl::roadmap_hash(stepped.roadmap()));
+      REQUIRE(bulk.samples_drawn() == stepped.samples_drawn());
+      REQUIRE(bulk.edge_checks() == stepped.edge_checks());
+      REQUIRE(bulk.evaluations() == stepped.evaluations());
+      REQUIRE(bulk.edges_alive() == stepped.edges_alive());
+      REQUIRE(bulk.components() == stepped.components());
+      REQUIRE(bulk.connecting_vertex() == stepped.connecting_vertex());
+      const PrmEvent &a = bulk.last_event(), &b = stepped.last_event();
+      REQUIRE(a.kind == b.kind);
+      REQUIRE(a.step == b.step);
+      REQUIRE(a.vertex == b.vertex);
+      REQUIRE(a.other == b.other);
+      REQUIRE(a.sample == b.sample);
+    }
+    REQUIRE(stepped.done());
+    REQUIRE(bulk.path() == stepped.path());
+    Prm ran(*c.world, c.start, c.goal, c.params);
+    ran.run();
+    REQUIRE(ran.steps() == stepped.steps());
+    REQUIRE(csl::roadmap_hash(ran.roadmap()) == csl::roadmap_hash(stepped.roadmap()));
+    // Stepping on from a finished phase, and going back into it, still agree.
+    ran.run_to(ran.steps() / 2);
+    stepped.run_to(stepped.steps() / 2);
+    REQUIRE(csl::roadmap_hash(ran.roadmap()) == csl::roadmap_hash(stepped.roadmap()));
   }
 }
 

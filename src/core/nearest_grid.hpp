@@ -1,0 +1,19 @@
+#pragma once
+// The k nearest neighbours of every point of a set at once, as the PRM's connect phase needs
+// them. In the plane and on the flat torus T^2 (the point robot, the 2-link arm) a uniform grid
+// of cells holding about two points each answers this several times faster than a k-d tree:
+// building it is a counting sort, and each query looks at the few cells around its own,
+// ring by ring, until no unvisited cell can hold a nearer point. Other spaces use the k-d tree.
+// Answers are exactly brute force's (same squared distances, ties by smaller index).
+#include <vector>
+
+#include "core/nearest.hpp"
+
+namespace csl {
+
+/// Row i (k entries, at out[i * k ..]) holds the k points nearest to points[i] among the others,
+/// nearest first, ties by smaller index: NeighborIndex::k_nearest(points[i], k, i) for every i.
+/// Rows of fewer (fewer than k + 1 points) are padded with {-1, 0}.
+void all_k_nearest(const Space& space, const std::vector<Config>& points, int k, std::vector<Neighbor>& out);
+
+}  // namespace csl

@@ -1,0 +1,98 @@
+// all_k_nearest (the grid for R^2 and T^2, the k-d tree elsewhere) answers, for every point,
+// exactly what brute force answers, in the same order, on the point sets a grid finds hard:
+// clusters, duplicates, a line, a thin box, points on the torus's seams, tiny sets.
+#include <doctest/doctest.h>
+
+#include "core/nearest_grid.hpp"
+
+using csl::Config;
+using csl::Space;
+
+namespace {
+
+void require_brute_force(const Space& space, const std::vector<Config>& points, int k) {
+  std::vector<csl::Neighbor> got;
+  csl::all_k_nearest(space, points, k, got);
+  REQUIRE(got.size() == points.size() * static_cast<std::size_t>(k));
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const auto want = csl::brute_force_k_nearest(space, points, points[i], k, static_cast<int>(i));
+    const csl::Neighbor* row = &got[i * static_cast<std::size_t>(k)];
+    for (std::size_t j = 0; j < static_cast<std::size_t>(k); ++j) {
+      if (j < want.size()) {
+        REQUIRE(row[j].index == want[j].index);
+        REQUIRE(row[j].squared_distance == want[j].squared_distance);
+      } else {
+        REQUIRE(row[j].index == -1);  // fewer points than k: padded
+      }
+    }
+  }
+}
+
+std::vector<Config> uniform(const Space& space, int n, std::uint64_t seed) {
+  csl::Rng rng(seed);
+  std::vector<Config> points;
+  for (int i = 0; i < n; ++i) points.push_back(space.sample(rng));
+  return points;
+}
+
+}  // namespace
+
+TEST_CASE("all_k_nearest = brute force on uniform points in R^2 and T^2") {
+  for (int k : {1, 10, 27}) {
+    require_brute_force(Space::box({0, 0}, {1, 1}), uniform(Space::box({0, 0}, {1, 1}), 1500, 1), k);
+    require_brute_force(Space::box({-5, 2}, {7, 2.5}), uniform(Space::box({-5, 2}, {7, 2.5}), 900, 2), k);
+    require_brute_force(Space::torus(2), uniform(Space::torus(2), 1500, 3), k);
+  }
+}
+
+TEST_CASE("all_k_nearest: clusters, duplicates and exact ties come out by index") {
+  csl::Rng rng(4);
+  std::vector<Config> points;
+  for (int i = 0; i < 800; ++i) {
+    if (i % 5 == 0 && i > 0) {
+      points.push_back(points[rng.below(points.size())]);  // a duplicate
+    } else if (i % 3 == 0) {
+      points.push_back(csl::config({0.5 + 1e-3 * rng.uniform01(), 0.5 + 1e-3 * rng.uniform01()}));  // a cluster
+    } else {
+      // On a lattice: many exactly equal distances.
+      points.push_back(csl::config({0.125 * static_cast<double>(rng.below(9)), 0.125 * static_cast<double>(rng.below(9))}));
+    }
+  }
+  require_brute_force(Space::box({0, 0}, {1, 1}), points, 10);
+  std::vector<Config> angles;
+  for (const Config& q : points) angles.push_back(csl::config({q[0] * 6.0 - csl::kPi, q[1] * 6.0 - csl::kPi}));
+  require_brute_force(Space::torus(2), angles, 10);
+}
+
+TEST_CASE("all_k_nearest: degenerate boxes (one point, a line, a thin strip, all equal)") {
+  const Space box = Space::box({0, 0}, {1, 1});
+  require_brute_force(box, {csl::config({0.3, 0.3})}, 5);
+  std::vector<Config> line, strip, same(40, csl::config({0.25, 0.75}));
+  csl::Rng rng(5);
+  for (int i = 0; i < 300; ++i) {
+    line.push_back(csl::config({rng.uniform01(), 0.5}));
+    strip.push_back(csl::config({rng.uniform01(), 0.5 + 1e-9 * rng.uniform01()}));
+  }
+  require_brute_force(box, line, 10);
+  require_brute_force(box, strip, 10);
+  require_brute_force(box, same, 10);
+  require_brute_force(box, uniform(box, 7, 6), 10);  // fewer than k + 1
+}
+
+TEST_CASE("all_k_nearest on T^2: neighbours across the seams and on them") {
+  std::vector<Config> points;
+  csl::Rng rng(7);
+  for (int i = 0; i < 600; ++i) {
+    // Crowded near the chart's edges -pi and (just below) pi, and on the edges themselves.
+    const double a = (i % 2 ? -csl::kPi : csl::kPi - 1e-3) + 1e-3 * rng.uniform01();
+    const double b = i % 7 == 0 ? -csl::kPi : rng.uniform(-csl::kPi, csl::kPi);
+    points.push_back(i % 3 ? csl::config({a, b}) : csl::config({b, a}));
+  }
+  require_brute_force(Space::torus(2), points, 10);
+}
+
+TEST_CASE("all_k_nearest in other spaces (the k-d tree) = brute force") {
+  require_brute_force(Space::se2(0, 0, 2, 1, 0.3), uniform(Space::se2(0, 0, 2, 1, 0.3), 600, 8), 10);
+  require_brute_force(Space::torus(3), uniform(Space::torus(3), 600, 9), 10);
+  require_brute_force(Space::box({0, 0}, {1, 1}), {}, 10);
+}
