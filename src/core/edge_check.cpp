@@ -70,13 +70,18 @@ void EdgeChecker::check_known_free(const Config& p, const Config& q, double leng
     while (!done()) step();
     return;
   }
+  check_grid_known_free(p, q, grid_configurations(length), eta_p, eta_q);
+}
+
+void EdgeChecker::check_grid_known_free(const Config& p, const Config& q, int configurations, double eta_p,
+                                        double eta_q) {
   verdict_ = Verdict::Free;
   evaluations_ = 0;
   collision_t_.reset();
   known_free_ = true;
   queue_.clear();
   head_ = 0;
-  n_ = grid_configurations(length);
+  n_ = configurations;
   next_ = n_;  // nothing left for step()
   if (n_ <= 2) return;
   const Space& space = world_->space();

@@ -89,6 +89,8 @@ class EdgeChecker {
   /// (lambda(p, q(t)) = t lambda(p, q) < eta_p, likewise from q): the same verdict from fewer
   /// evaluations, as the grid's configurations are only ever skipped, never replaced.
   void check_known_free(const Config& p, const Config& q, double length, double eta_p, double eta_q);
+  /// The same for the grid and step checkers with the edge's grid_configurations() known.
+  void check_grid_known_free(const Config& p, const Config& q, int configurations, double eta_p, double eta_q);
   /// Grid and step checkers: how many configurations (endpoints included) an edge of this
   /// length gets.
   int grid_configurations(double length) const;
