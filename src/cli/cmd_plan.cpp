@@ -99,6 +99,8 @@ const Command kPlanCommand{
     "Output: {\"solved\": bool, \"path\": [Q, ...] (with any connector's waypoints),\n"
     "  \"path_length\": x|null, \"nodes\": int, \"edges\": int, \"components\": int,\n"
     "  \"edge_checks\": int, \"evaluations\": int, \"build_seconds\": x, \"query_seconds\": x,\n"
+    "  (evaluations: configurations the collision checker tested; with grid:N or step:D a roadmap\n"
+    "  edge skips those its endpoints' clearances prove free, which changes no verdict),\n"
     "  \"samples\", \"neighbors\", \"checker\", \"connector\", \"seed\",\n"
     "  \"steps\": the planner's step count, \"roadmap_hash\": 16 hex digits (FNV-1a of V and E)}\n"
     "With --roadmap also \"vertices\": [Q, ...] and \"edge_list\": [[a, b], ...] (indices into\n"

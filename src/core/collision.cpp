@@ -1,7 +1,8 @@
 #include "core/collision.hpp"
 
-#include <limits>
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/scene.hpp"
 
@@ -34,8 +35,16 @@ CollisionWorld::CollisionWorld(Robot robot, std::vector<Obstacle> obstacles, con
       obstacles_(std::move(obstacles)),
       is_polygon_(std::holds_alternative<PolygonRobot>(robot_)),
       space_(robot_space(robot_, workspace_min, workspace_max)) {
+  const auto reach = [this](const Vec2& v) { scale_ = std::max({scale_, std::fabs(v.x()), std::fabs(v.y())}); };
+  reach(workspace_min);
+  reach(workspace_max);
+  if (const auto* arm = std::get_if<ArmRobot>(&robot_))
+    scale_ = std::max(scale_, std::fabs(arm->base.x()) + std::fabs(arm->base.y()) + arm->length1 + arm->length2);
+  if (const auto* poly = std::get_if<PolygonRobot>(&robot_)) scale_ += poly->radius;
   for (std::size_t i = 0; i < obstacles_.size(); ++i) {
     const Box box = obstacle_bounds(obstacles_[i]);
+    reach(box.min);
+    reach(box.max);
     if (const auto* d = std::get_if<Disk>(&obstacles_[i])) {
       const double far = d->radius * kSafe;
       disks_.push_back({d->center.x(), d->center.y(), d->radius, far * far * kSafe, box, static_cast<int>(i)});

@@ -36,6 +36,10 @@ class CollisionWorld {
   /// hit and mostly compares squared distances).
   bool is_free(const Config& q) const;
 
+  /// The largest coordinate magnitude the scene reaches (workspace, obstacles, the arm's reach):
+  /// rounding errors in poses and distances scale with it.
+  double scale() const { return scale_; }
+
   /// lambda(p, q) for this robot (see motion_bound in robot.hpp).
   double motion_bound(const Config& p, const Config& q) const { return csl::motion_bound(robot_, p, q); }
 
@@ -65,6 +69,7 @@ class CollisionWorld {
   std::vector<ShapeData> shapes_;
   bool is_polygon_ = false;
   Space space_;
+  double scale_ = 0.0;
   mutable Vec2 point_;           // point robot
   mutable Vec2 joints_[3];       // arm: base, elbow, tip
   mutable Polygon polygon_;      // polygon robot

@@ -44,6 +44,7 @@ void EdgeChecker::reset(const Config& p, const Config& q, bool endpoints_known_f
   delta_ = world_->space().difference(p, q);
   verdict_ = Verdict::Pending;
   evaluations_ = 0;
+  skipped_ = 0;
   collision_t_.reset();
   known_free_ = endpoints_known_free;
   eta_p_ = eta_p;
@@ -77,6 +78,7 @@ void EdgeChecker::check_grid_known_free(const Config& p, const Config& q, int co
                                         double eta_q) {
   verdict_ = Verdict::Free;
   evaluations_ = 0;
+  skipped_ = 0;
   collision_t_.reset();
   known_free_ = true;
   queue_.clear();
@@ -88,14 +90,17 @@ void EdgeChecker::check_grid_known_free(const Config& p, const Config& q, int co
   const double last = static_cast<double>(n_ - 1);
   // Configurations i < first and i > final are proven free by the endpoints' balls: the robot
   // at q(t) is within lambda(p, q(t)) = t lambda of where it is at p, and eta_p clears that.
-  // The margins (relative and absolute) keep rounding in t, lambda and the pose on the safe side.
+  // The margins keep rounding in t, lambda, eta and the pose on the safe side: relative ones,
+  // and an absolute one that grows with the scene's coordinates (poses round to ~1e-16 of them).
   int first = 1, final = n_ - 2;
   if (eta_p > 0.0 || eta_q > 0.0) {  // false for NaN: nothing skipped
-    const double lambda = world_->motion_bound(p, q) * (1.0 + 1e-6) + 1e-9;
-    const auto proven = [&](double t, double eta) { return t * lambda < eta * (1.0 - 1e-6) - 1e-9; };
+    const double slack = 1e-9 + 1e-13 * world_->scale();
+    const double lambda = world_->motion_bound(p, q) * (1.0 + 1e-6) + slack;
+    const auto proven = [&](double t, double eta) { return t * lambda < eta * (1.0 - 1e-6) - slack; };
     while (first <= final && proven(static_cast<double>(first) / last, eta_p)) ++first;
     while (final >= first && proven(1.0 - static_cast<double>(final) / last, eta_q)) --final;
   }
+  skipped_ = (first - 1) + (n_ - 2 - final);  // all n_ - 2 when the balls cover the edge
   if (first > final) return;
   const Config delta = space.difference(p, q);
   for (int i = first; i <= final; ++i) {

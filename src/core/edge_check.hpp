@@ -102,6 +102,9 @@ class EdgeChecker {
   Verdict verdict() const { return verdict_; }
   /// Configurations evaluated so far (clearance or freeness computations).
   int evaluations() const { return evaluations_; }
+  /// check_grid_known_free: the grid's configurations between the ends it did not test because
+  /// the endpoints' clearances prove them free (0 otherwise).
+  int skipped() const { return skipped_; }
   /// Where the collision was found (t of the configuration), once verdict() == Collision.
   std::optional<double> collision_t() const { return collision_t_; }
   const EdgeCheckerSpec& spec() const { return spec_; }
@@ -122,6 +125,7 @@ class EdgeChecker {
   Config p_, q_, delta_;  // delta_ = q - p the short way round
   Verdict verdict_ = Verdict::Free;
   int evaluations_ = 0;
+  int skipped_ = 0;
   std::optional<double> collision_t_;
   bool known_free_ = false;
   int n_ = 0;                 // grid/step: configurations on this edge

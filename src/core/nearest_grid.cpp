@@ -11,8 +11,10 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // A cell is pruned only if its lower bound exceeds the k-th distance by this factor (squared
 // distances), as the k-d tree prunes: rounding never drops a true neighbour.
 constexpr double kPruneSafety = 1.0 + 1e-12;
-// Measured on the PRM benchmark (k = 10): 2 points per cell beat 1 and 4.
+// Measured on the PRM benchmark (k = 10): 2 points per cell beat 1, 1.5, 3 and 4.
 constexpr double kPointsPerCell = 2.0;
+// Uniform points at 2 per cell put at most ~10 in one cell for n up to 10^6.
+constexpr int kCrowdedCell = 64;
 
 // Nearer first; equal distances by smaller index: the order brute force gives.
 inline bool closer(double d2, int index, const Neighbor& than) {
@@ -68,7 +70,10 @@ class Grid {
       cell[i] = cell_index(ax.cell_of(points[i][0]), ay.cell_of(points[i][1]));
       ++start_[static_cast<std::size_t>(cell[i]) + 1];
     }
-    for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
+    for (std::size_t c = 1; c < start_.size(); ++c) {
+      max_per_cell_ = std::max(max_per_cell_, start_[c]);
+      start_[c] += start_[c - 1];
+    }
     std::vector<int> fill(start_.begin(), start_.end() - 1);
     xy_.resize(2 * n);
     ids_.resize(n);
@@ -82,6 +87,10 @@ class Grid {
     const double scale = std::fabs(ax.lo) + std::fabs(ay.lo) + ax.width * ax.cells + ay.width * ay.cells;
     slack_ = 1e-9 * std::min(ax.width, ay.width) + 1e-14 * scale;
   }
+
+  /// Whether some cell holds far more points than uniform points would put in one (a cluster):
+  /// the grid would then compare most pairs in it, and a k-d tree is the better index.
+  bool crowded() const { return max_per_cell_ > kCrowdedCell; }
 
   void all_k_nearest(int k, std::vector<Neighbor>& out) const {
     // Queried in cell order, so the cells around consecutive queries stay in cache.
@@ -172,6 +181,7 @@ class Grid {
   std::vector<double> xy_;  // points sorted by cell, x and y interleaved
   std::vector<int> ids_;    // their indices in the input
   double slack_ = 0.0;
+  int max_per_cell_ = 0;
 };
 
 // An axis of `cells` cells over [lo, hi]; a zero-width extent gets one cell.
@@ -212,7 +222,9 @@ void all_k_nearest(const Space& space, const std::vector<Config>& points, int k,
     // the rings around a cell meet each other cell exactly once.
     int side = static_cast<int>(std::ceil(std::sqrt(cells)));
     side = std::max(3, side | 1);
-    Grid<true>(points, axis_over(-kPi, kPi, side), axis_over(-kPi, kPi, side)).all_k_nearest(k, out);
+    const Grid<true> grid(points, axis_over(-kPi, kPi, side), axis_over(-kPi, kPi, side));
+    if (grid.crowded()) return with_tree(space, points, k, out);
+    grid.all_k_nearest(k, out);
     return;
   }
   // The points' bounding box, cut into cells as square as the box allows (each side capped
@@ -230,7 +242,9 @@ void all_k_nearest(const Space& space, const std::vector<Config>& points, int k,
     if (!(size > 0.0)) return 1;
     return static_cast<int>(std::min(std::ceil(extent / size), static_cast<double>(n) + 1.0));
   };
-  Grid<false>(points, axis_over(lo[0], hi[0], count(w)), axis_over(lo[1], hi[1], count(h))).all_k_nearest(k, out);
+  const Grid<false> grid(points, axis_over(lo[0], hi[0], count(w)), axis_over(lo[1], hi[1], count(h)));
+  if (grid.crowded()) return with_tree(space, points, k, out);
+  grid.all_k_nearest(k, out);
 }
 
 }  // namespace csl

@@ -3,7 +3,8 @@
 // them. In the plane and on the flat torus T^2 (the point robot, the 2-link arm) a uniform grid
 // of cells holding about two points each answers this several times faster than a k-d tree:
 // building it is a counting sort, and each query looks at the few cells around its own,
-// ring by ring, until no unvisited cell can hold a nearer point. Other spaces use the k-d tree.
+// ring by ring, until no unvisited cell can hold a nearer point. Other spaces, and point sets
+// with a dense cluster (where a grid compares most pairs), use the k-d tree.
 // Answers are exactly brute force's (same squared distances, ties by smaller index).
 #include <vector>
 

@@ -388,6 +388,7 @@ void Prm::check_candidate() {
     e.vertex = p_;
     e.other = q;
     e.evaluations = checker_.evaluations();
+    e.skipped = checker_.skipped();
     e.kind = free ? PrmEvent::Kind::EdgeAdded : PrmEvent::Kind::EdgeRejected;
     if (!free) e.collision_t = *checker_.collision_t();
   }

@@ -77,6 +77,7 @@ struct PrmEvent {
   int obstacle = -1;  ///< the obstacle hit (rejected sample, endpoint in collision)
   int candidates = 0;
   int evaluations = 0;  ///< configurations the edge check (or the connector) evaluated
+  int skipped = 0;      ///< grid checkers: configurations the endpoints' clearances prove free, untested
   double collision_t = std::numeric_limits<double>::quiet_NaN();
   double path_length = 0.0;
 };

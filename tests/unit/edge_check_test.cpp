@@ -232,11 +232,34 @@ TEST_CASE("check_known_free = reset + step to the end, on random edges of every 
           REQUIRE(whole.evaluations() == stepped.evaluations());
         else
           REQUIRE(whole.evaluations() <= stepped.evaluations());
-        skipped += stepped.evaluations() - whole.evaluations();
+        // A free edge: every configuration between the ends either tested or proven free.
+        if (!bisection && whole.verdict() == csl::Verdict::Free)
+          REQUIRE(whole.evaluations() + whole.skipped() == stepped.evaluations());
+        if (bisection || !known) REQUIRE(whole.skipped() == 0);
+        skipped += whole.skipped();
         collisions += whole.verdict() == csl::Verdict::Collision ? 1 : 0;
       }
     }
   }
   CHECK(skipped > 1000);     // the clearances do spare work
   CHECK(collisions > 300);   // and the edges are not all free
+}
+
+// The skipping's margins grow with the scene's coordinates: at 4e6 a fixed 1e-9 let a
+// configuration the grid finds in collision be skipped (found by a reviewer).
+TEST_CASE("check_known_free on a scene of huge coordinates still agrees with stepping") {
+  const double th = 2.328610189229233, e = 8.5591574997336528e-08;
+  const csl::CollisionWorld arm(csl::ArmRobot{{2749340.8355822014, -2905361.4181027738}, 4e6, 4e6},
+                                {csl::Disk{{-2749340.8348949286, 2905361.4173763748}, 0.0}}, {-1e6, -1e6}, {1e6, 1e6});
+  const csl::Config p = config({th, 0.0}), q = config({csl::wrap_angle(th + 100.0 * e / 8e6), 0.0});
+  REQUIRE(arm.is_free(p));
+  REQUIRE(arm.is_free(q));
+  const EdgeCheckerSpec spec = EdgeCheckerSpec::parse("grid:5001");
+  csl::EdgeChecker stepped(arm, spec, false), whole(arm, spec, false);
+  stepped.reset(p, q, true, arm.clearance(p), arm.clearance(q));
+  while (!stepped.done()) stepped.step();
+  whole.check_known_free(p, q, arm.space().distance(p, q), arm.clearance(p), arm.clearance(q));
+  REQUIRE(stepped.verdict() == csl::Verdict::Collision);
+  CHECK(whole.verdict() == stepped.verdict());
+  CHECK(whole.collision_t() == stepped.collision_t());
 }

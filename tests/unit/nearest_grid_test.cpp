@@ -50,7 +50,7 @@ TEST_CASE("all_k_nearest: clusters, duplicates and exact ties come out by index"
   std::vector<Config> points;
   for (int i = 0; i < 800; ++i) {
     if (i % 5 == 0 && i > 0) {
-      points.push_back(points[rng.below(points.size())]);  // a duplicate
+      points.push_back(points[static_cast<std::size_t>(rng.below(points.size()))]);  // a duplicate
     } else if (i % 3 == 0) {
       points.push_back(csl::config({0.5 + 1e-3 * rng.uniform01(), 0.5 + 1e-3 * rng.uniform01()}));  // a cluster
     } else {
@@ -76,7 +76,16 @@ TEST_CASE("all_k_nearest: degenerate boxes (one point, a line, a thin strip, all
   require_brute_force(box, line, 10);
   require_brute_force(box, strip, 10);
   require_brute_force(box, same, 10);
+  // A dense cluster and two far corners: the grid hands over to the tree, same answers.
+  std::vector<Config> cluster = {csl::config({0, 0}), csl::config({1, 1})};
+  for (int i = 0; i < 500; ++i) cluster.push_back(csl::config({0.5 + 1e-6 * rng.uniform01(), 0.5 + 1e-6 * rng.uniform01()}));
+  require_brute_force(box, cluster, 10);
   require_brute_force(box, uniform(box, 7, 6), 10);  // fewer than k + 1
+  require_brute_force(box, {}, 10);
+  // The torus's smallest grids (3 x 3 cells, and 5 x 5): each cell visited once, none missed.
+  require_brute_force(Space::torus(2), uniform(Space::torus(2), 7, 10), 10);
+  require_brute_force(Space::torus(2), uniform(Space::torus(2), 17, 11), 20);
+  require_brute_force(Space::torus(2), uniform(Space::torus(2), 40, 12), 39);
 }
 
 TEST_CASE("all_k_nearest on T^2: neighbours across the seams and on them") {
@@ -94,5 +103,4 @@ TEST_CASE("all_k_nearest on T^2: neighbours across the seams and on them") {
 TEST_CASE("all_k_nearest in other spaces (the k-d tree) = brute force") {
   require_brute_force(Space::se2(0, 0, 2, 1, 0.3), uniform(Space::se2(0, 0, 2, 1, 0.3), 600, 8), 10);
   require_brute_force(Space::torus(3), uniform(Space::torus(3), 600, 9), 10);
-  require_brute_force(Space::box({0, 0}, {1, 1}), {}, 10);
 }
