@@ -126,38 +126,61 @@ class Grid {
     return g > 0.0 ? g : 0.0;
   }
 
-  void visit_cell(double qx, double qy, int ix, int iy, int dx, int dy, double ex, double ey, Best& best) const {
-    int cx = ix + dx, cy = iy + dy;
-    if constexpr (kTorus) {  // |offset| < cells: at most one turn (no division: 10% faster)
-      cx += cx < 0 ? ax_.cells : (cx >= ax_.cells ? -ax_.cells : 0);
+  // Points of the cells c0..c1 of row cy: contiguous in memory (cells are stored row by row).
+  void scan(double qx, double qy, int cy, int c0, int c1, Best& best) const {
+    if (c0 > c1) return;
+    const int end = start_[static_cast<std::size_t>(cell_index(c1, cy)) + 1];
+    for (int at = start_[static_cast<std::size_t>(cell_index(c0, cy))]; at < end; ++at)
+      best.offer(ids_[static_cast<std::size_t>(at)], squared_distance(qx, qy, static_cast<std::size_t>(at)));
+  }
+
+  // The run of cells dx0..dx1 (offsets from home) in the row dy offsets away: one loop over
+  // their points rather than one per cell (two where a run crosses the torus's seam).
+  void visit_run(double qx, double qy, int ix, int iy, int dx0, int dx1, int dy, double ex, double ey,
+                 Best& best) const {
+    int cy = iy + dy;
+    if constexpr (kTorus) {  // |offset| < cells: at most one turn (no division)
       cy += cy < 0 ? ay_.cells : (cy >= ay_.cells ? -ay_.cells : 0);
     } else {
-      if (cx < 0 || cx >= ax_.cells || cy < 0 || cy >= ay_.cells) return;
+      if (cy < 0 || cy >= ay_.cells) return;
     }
-    const double gx = gap(ax_, qx, ex, dx), gy = gap(ay_, qy, ey, dy);
+    const double gx = dx0 > 0 ? gap(ax_, qx, ex, dx0) : (dx1 < 0 ? gap(ax_, qx, ex, dx1) : 0.0);
+    const double gy = gap(ay_, qy, ey, dy);
     if (best.beyond(gx * gx + gy * gy)) return;
-    const int c = cell_index(cx, cy);
-    const int end = start_[static_cast<std::size_t>(c) + 1];
-    for (int at = start_[static_cast<std::size_t>(c)]; at < end; ++at)
-      best.offer(ids_[static_cast<std::size_t>(at)], squared_distance(qx, qy, static_cast<std::size_t>(at)));
+    int c0 = ix + dx0, c1 = ix + dx1;
+    if constexpr (kTorus) {  // a run is at most `cells` long: its pieces do not overlap
+      const int g = ax_.cells;
+      if (c0 < 0) {  // the part before the seam, wrapped
+        scan(qx, qy, cy, c0 + g, std::min(c1, -1) + g, best);
+        c0 = 0;
+      }
+      if (c1 >= g) {  // the part after it
+        scan(qx, qy, cy, std::max(c0, g) - g, c1 - g, best);
+        c1 = g - 1;
+      }
+    } else {
+      c0 = std::max(c0, 0);
+      c1 = std::min(c1, ax_.cells - 1);
+    }
+    scan(qx, qy, cy, c0, c1, best);
   }
 
   void query(double qx, double qy, Best& best) const {
     const int ix = ax_.cell_of(qx), iy = ay_.cell_of(qy);
     const double ex = ax_.lo + ix * ax_.width, ey = ay_.lo + iy * ay_.width;  // home cell's low edges
     const int rings = std::max(ax_.cells, ay_.cells);
-    for (int r = 0; r <= rings; ++r) {
+    for (int r = 1; r <= rings; ++r) {
       if (kTorus && 2 * r + 1 > std::min(ax_.cells, ay_.cells)) break;  // every cell seen once
-      if (r == 0) {
-        visit_cell(qx, qy, ix, iy, 0, 0, ex, ey, best);
-      } else {
-        for (int dx = -r; dx <= r; ++dx) {
-          visit_cell(qx, qy, ix, iy, dx, -r, ex, ey, best);
-          visit_cell(qx, qy, ix, iy, dx, r, ex, ey, best);
-        }
+      if (r == 1) {  // the 3 x 3 block around home, home's row first
+        visit_run(qx, qy, ix, iy, -1, 1, 0, ex, ey, best);
+        visit_run(qx, qy, ix, iy, -1, 1, -1, ex, ey, best);
+        visit_run(qx, qy, ix, iy, -1, 1, 1, ex, ey, best);
+      } else {  // ring r: its top and bottom rows, then its sides cell by cell
+        visit_run(qx, qy, ix, iy, -r, r, -r, ex, ey, best);
+        visit_run(qx, qy, ix, iy, -r, r, r, ex, ey, best);
         for (int dy = -r + 1; dy <= r - 1; ++dy) {
-          visit_cell(qx, qy, ix, iy, -r, dy, ex, ey, best);
-          visit_cell(qx, qy, ix, iy, r, dy, ex, ey, best);
+          visit_run(qx, qy, ix, iy, -r, -r, dy, ex, ey, best);
+          visit_run(qx, qy, ix, iy, r, r, dy, ex, ey, best);
         }
       }
       // Every point not yet seen lies outside the block of cells within r of home: at least
