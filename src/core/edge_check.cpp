@@ -61,6 +61,9 @@ void EdgeChecker::reset(const Config& p, const Config& q, bool endpoints_known_f
 
 int EdgeChecker::grid_configurations(double length) const {
   if (spec_.kind != EdgeCheckerSpec::Kind::Step) return spec_.resolution;
+  // No longer than a step: length / step rounds to at most 1 (division is monotone), so ceil
+  // gives at most 1 and the edge gets its two ends, without a division (most roadmap edges).
+  if (length <= spec_.step) return 2;
   const double segments = std::ceil(length / spec_.step);
   return segments >= kMaxGridResolution ? kMaxGridResolution : std::max(2, static_cast<int>(segments) + 1);
 }
@@ -97,6 +100,13 @@ void EdgeChecker::check_grid_known_free(const Config& p, const Config& q, int co
     const double slack = 1e-9 + 1e-13 * world_->scale();
     const double lambda = world_->motion_bound(p, q) * (1.0 + 1e-6) + slack;
     const auto proven = [&](double t, double eta) { return t * lambda < eta * (1.0 - 1e-6) - slack; };
+    // Balls that overlap along the edge prove every t (t lambda + (1 - t) lambda = lambda <
+    // both radii's sum): the common case, without walking the grid.
+    const double reach_p = eta_p * (1.0 - 1e-6) - slack, reach_q = eta_q * (1.0 - 1e-6) - slack;
+    if (lambda < reach_p + reach_q && reach_p > 0.0 && reach_q > 0.0) {
+      skipped_ = n_ - 2;
+      return;
+    }
     while (first <= final && proven(static_cast<double>(first) / last, eta_p)) ++first;
     while (final >= first && proven(1.0 - static_cast<double>(final) / last, eta_q)) --final;
   }

@@ -362,14 +362,18 @@ void Prm::check_candidate() {
   }
   // The index measured the same distance (same formula) as the checker would: the length.
   const double length = std::sqrt(candidate.squared_distance);
-  double eta_p = roadmap_.clearance[up], eta_q = roadmap_.clearance[uq];
   if (params_.checker.kind == EdgeCheckerSpec::Kind::Bisection) {
-    checker_.check_known_free(roadmap_.vertices[up], roadmap_.vertices[uq], length, eta_p, eta_q);
+    checker_.check_known_free(roadmap_.vertices[up], roadmap_.vertices[uq], length, roadmap_.clearance[up],
+                              roadmap_.clearance[uq]);
   } else {
     const int configurations = checker_.grid_configurations(length);
+    double eta_p = std::numeric_limits<double>::quiet_NaN(), eta_q = eta_p;
     if (configurations > 2) {
       // The grid checkers skip what the endpoints' clearances prove free: each vertex's is
-      // computed when an edge with configurations between its ends first needs it.
+      // computed when an edge with configurations between its ends first needs it. (Edges
+      // without such configurations, most in large roadmaps, read neither: a cache miss each.)
+      eta_p = roadmap_.clearance[up];
+      eta_q = roadmap_.clearance[uq];
       if (std::isnan(eta_p)) eta_p = roadmap_.clearance[up] = world_->clearance(roadmap_.vertices[up]);
       if (std::isnan(eta_q)) eta_q = roadmap_.clearance[uq] = world_->clearance(roadmap_.vertices[uq]);
     }
