@@ -227,10 +227,7 @@ class TorusLesson : public Lesson {
   void step_back() override {
     if (prm_->steps() > 0) prm_->run_to(prm_->steps() - 1);
   }
-  void finish_phase() override {
-    const PrmPhase phase = prm_->phase();
-    while (!prm_->done() && prm_->phase() == phase) prm_->step();
-  }
+  void finish_phase() override { prm_->finish_phase(); }
   void run_all() override { prm_->run(); }
   void reset() override { prm_->reset(); }
   void run_to(long steps) override { prm_->run_to(steps); }
