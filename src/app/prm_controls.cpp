@@ -32,14 +32,24 @@ bool prm_controls(PrmParams& p, int max_samples) {
   if (p.neighbors.kind == NeighborRule::Kind::PrmStar)
     ImGui::TextDisabled("k(n) = ceil(e (1 + 1/d) ln n)");
 
-  int checker = p.checker.kind == EdgeCheckerSpec::Kind::Bisection ? 0 : 1;
-  const char* checkers[] = {"bisection (exact)", "grid: N configurations"};
-  if (ImGui::Combo("edges", &checker, checkers, 2)) {
-    p.checker = checker == 0 ? EdgeCheckerSpec::parse("bisection") : EdgeCheckerSpec::parse("grid:5");
+  // The three checkers of the CLI (a share link or the page's API may set any of them).
+  int checker = p.checker.kind == EdgeCheckerSpec::Kind::Bisection ? 0
+                : p.checker.kind == EdgeCheckerSpec::Kind::Grid    ? 1
+                                                                   : 2;
+  const char* checkers[] = {"bisection (exact)", "grid: N configurations", "step: at most D apart"};
+  if (ImGui::Combo("edges", &checker, checkers, 3)) {
+    p.checker = EdgeCheckerSpec::parse(checker == 0 ? "bisection" : checker == 1 ? "grid:5" : "step:0.02");
     changed = true;
   }
   if (p.checker.kind == EdgeCheckerSpec::Kind::Grid)
     changed |= ImGui::SliderInt("N", &p.checker.resolution, 2, 200, "%d", ImGuiSliderFlags_Logarithmic);
+  if (p.checker.kind == EdgeCheckerSpec::Kind::Step) {
+    float d = static_cast<float>(p.checker.step);
+    if (ImGui::SliderFloat("D", &d, 0.001f, 0.5f, "%.4f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) {
+      p.checker.step = static_cast<double>(d);
+      changed = true;
+    }
+  }
 
   int seed = static_cast<int>(p.seed);
   if (ImGui::InputInt("seed", &seed)) {

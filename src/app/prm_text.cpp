@@ -5,10 +5,11 @@
 namespace csl::app {
 namespace {
 
-// The grid checkers in a roadmap test only what the endpoints' clearances leave unproven.
-std::string skipped_text(const PrmEvent& e) {
-  if (e.skipped == 0) return "";
-  return "; " + std::to_string(e.skipped) + " more proven free by the ends' clearances";
+// What an edge check cost: its evaluations, and for the grid checkers in a roadmap, which test
+// only what the endpoints' clearances leave unproven, how many they proved free.
+std::string checks_text(const PrmEvent& e) {
+  if (e.skipped == 0) return std::to_string(e.evaluations) + (e.evaluations == 1 ? " evaluation" : " evaluations");
+  return std::to_string(e.evaluations) + " tested, " + std::to_string(e.skipped) + " proven free by the ends' clearances";
 }
 
 }  // namespace
@@ -55,13 +56,12 @@ std::string describe(const PrmEvent& e, const Prm& prm, const Scene& scene) {
                     e.candidates == 1 ? "" : "s", prm.params().neighbors.name().c_str());
       break;
     case PrmEvent::Kind::EdgeAdded:
-      std::snprintf(buf, sizeof buf, "edge %d-%d: free (%s, %d evaluation%s%s), added", e.vertex, e.other,
-                    prm.params().checker.name().c_str(), e.evaluations, e.evaluations == 1 ? "" : "s",
-                    skipped_text(e).c_str());
+      std::snprintf(buf, sizeof buf, "edge %d-%d: free (%s, %s), added", e.vertex, e.other,
+                    prm.params().checker.name().c_str(), checks_text(e).c_str());
       break;
     case PrmEvent::Kind::EdgeRejected:
-      std::snprintf(buf, sizeof buf, "edge %d-%d: in collision at t = %.3f (%d evaluation%s%s)", e.vertex, e.other,
-                    e.collision_t, e.evaluations, e.evaluations == 1 ? "" : "s", skipped_text(e).c_str());
+      std::snprintf(buf, sizeof buf, "edge %d-%d: in collision at t = %.3f (%s)", e.vertex, e.other, e.collision_t,
+                    checks_text(e).c_str());
       break;
     case PrmEvent::Kind::PathEdgeRemoved:
       std::snprintf(buf, sizeof buf, "path edge %d-%d fails the exact check at t = %.3f: removed, searching again",
