@@ -1,5 +1,7 @@
 #include "core/nearest.hpp"
 
+#include "core/k_best.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -12,11 +14,6 @@ constexpr int kLeafSize = 16;  // measured: 16 beats 8 and 4 for k = 10 in 2-D
 // Lower bounds are scaled up a hair before pruning, so rounding never prunes a true neighbour.
 constexpr double kPruneSafety = 1.0 + 1e-12;
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// Nearer first; equal distances by smaller index: the order brute force gives.
-inline bool closer(double d2, int index, const Neighbor& than) {
-  return d2 < than.squared_distance || (d2 == than.squared_distance && index < than.index);
-}
 
 }  // namespace
 
@@ -207,33 +204,8 @@ void NeighborIndex::search(const double* q, Visit& visit) const {
 void NeighborIndex::k_nearest(const Config& q, int k, int exclude, std::vector<Neighbor>& out) const {
   out.clear();
   if (k <= 0 || nodes_.empty()) return;
-  // The best so far stay sorted, nearest first, at most k long, in `out`'s storage (sized k
-  // once, no push/pop per point): insertion beats a heap for small k. `worst` caches the bound.
-  struct Visitor {
-    Neighbor* best;
-    std::size_t k, count;
-    int exclude;
-    double worst;  // the k-th squared distance once there are k, else infinity
-    double bound() const { return worst; }
-    void operator()(int idx, double d2) {
-      if (d2 > worst || idx == exclude) return;  // cannot enter (d2 == worst: the index decides)
-      std::size_t at = count;
-      if (count == k) {
-        if (!closer(d2, idx, best[k - 1])) return;
-        at = k - 1;
-      } else {
-        ++count;
-      }
-      while (at > 0 && closer(d2, idx, best[at - 1])) {
-        best[at] = best[at - 1];
-        --at;
-      }
-      best[at] = {idx, d2};
-      if (count == k) worst = best[k - 1].squared_distance;
-    }
-  };
-  out.resize(static_cast<std::size_t>(k));
-  Visitor visitor{out.data(), static_cast<std::size_t>(k), 0, exclude, kInf};
+  out.resize(static_cast<std::size_t>(k));  // the best so far, in out's storage
+  KBest visitor{out.data(), static_cast<std::size_t>(k), exclude};
   search(q.data(), visitor);
   out.resize(visitor.count);
 }

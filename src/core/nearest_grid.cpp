@@ -1,5 +1,7 @@
 #include "core/nearest_grid.hpp"
 
+#include "core/k_best.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -16,35 +18,8 @@ constexpr double kPointsPerCell = 2.0;
 // Uniform points at 2 per cell put at most ~10 in one cell for n up to 10^6.
 constexpr int kCrowdedCell = 64;
 
-// Nearer first; equal distances by smaller index: the order brute force gives.
-inline bool closer(double d2, int index, const Neighbor& than) {
-  return d2 < than.squared_distance || (d2 == than.squared_distance && index < than.index);
-}
-
-// The k best so far, sorted, in a row of the output (insertion: small k).
-struct Best {
-  Neighbor* row;
-  int k, count, exclude;
-  double worst;  // the k-th squared distance once there are k, else infinity
-  void offer(int idx, double d2) {
-    if (d2 > worst || idx == exclude) return;
-    int at = count;
-    if (count == k) {
-      if (!closer(d2, idx, row[k - 1])) return;
-      at = k - 1;
-    } else {
-      ++count;
-    }
-    while (at > 0 && closer(d2, idx, row[at - 1])) {
-      row[at] = row[at - 1];
-      --at;
-    }
-    row[at] = {idx, d2};
-    if (count == k) worst = row[k - 1].squared_distance;
-  }
-  // Whether a cell or region at least `gap` away can be skipped.
-  bool beyond(double gap2) const { return count == k && gap2 > worst * kPruneSafety; }
-};
+// Whether a cell or region at least sqrt(gap2) from the query can be skipped.
+inline bool beyond(const KBest& best, double gap2) { return gap2 > best.bound() * kPruneSafety; }
 
 // One axis of the grid: `cells` cells of width `width` from `lo`; wraps on the torus.
 struct Axis {
@@ -96,7 +71,7 @@ class Grid {
     // Queried in cell order, so the cells around consecutive queries stay in cache.
     for (std::size_t at = 0; at < ids_.size(); ++at) {
       const int id = ids_[at];
-      Best best{&out[static_cast<std::size_t>(id) * static_cast<std::size_t>(k)], k, 0, id, kInf};
+      KBest best{&out[static_cast<std::size_t>(id) * static_cast<std::size_t>(k)], static_cast<std::size_t>(k), id};
       query(xy_[2 * at], xy_[2 * at + 1], best);
     }
   }
@@ -127,17 +102,17 @@ class Grid {
   }
 
   // Points of the cells c0..c1 of row cy: contiguous in memory (cells are stored row by row).
-  void scan(double qx, double qy, int cy, int c0, int c1, Best& best) const {
+  void scan(double qx, double qy, int cy, int c0, int c1, KBest& best) const {
     if (c0 > c1) return;
     const int end = start_[static_cast<std::size_t>(cell_index(c1, cy)) + 1];
     for (int at = start_[static_cast<std::size_t>(cell_index(c0, cy))]; at < end; ++at)
-      best.offer(ids_[static_cast<std::size_t>(at)], squared_distance(qx, qy, static_cast<std::size_t>(at)));
+      best(ids_[static_cast<std::size_t>(at)], squared_distance(qx, qy, static_cast<std::size_t>(at)));
   }
 
   // The run of cells dx0..dx1 (offsets from home) in the row dy offsets away: one loop over
   // their points rather than one per cell (two where a run crosses the torus's seam).
   void visit_run(double qx, double qy, int ix, int iy, int dx0, int dx1, int dy, double ex, double ey,
-                 Best& best) const {
+                 KBest& best) const {
     int cy = iy + dy;
     if constexpr (kTorus) {  // |offset| < cells: at most one turn (no division)
       cy += cy < 0 ? ay_.cells : (cy >= ay_.cells ? -ay_.cells : 0);
@@ -146,7 +121,7 @@ class Grid {
     }
     const double gx = dx0 > 0 ? gap(ax_, qx, ex, dx0) : (dx1 < 0 ? gap(ax_, qx, ex, dx1) : 0.0);
     const double gy = gap(ay_, qy, ey, dy);
-    if (best.beyond(gx * gx + gy * gy)) return;
+    if (beyond(best, gx * gx + gy * gy)) return;
     int c0 = ix + dx0, c1 = ix + dx1;
     if constexpr (kTorus) {  // a run is at most `cells` long: its pieces do not overlap
       const int g = ax_.cells;
@@ -165,7 +140,7 @@ class Grid {
     scan(qx, qy, cy, c0, c1, best);
   }
 
-  void query(double qx, double qy, Best& best) const {
+  void query(double qx, double qy, KBest& best) const {
     const int ix = ax_.cell_of(qx), iy = ay_.cell_of(qy);
     const double ex = ax_.lo + ix * ax_.width, ey = ay_.lo + iy * ay_.width;  // home cell's low edges
     const int rings = std::max(ax_.cells, ay_.cells);
@@ -195,7 +170,7 @@ class Grid {
       consider(iy + r < ay_.cells - 1, ey + (r + 1) * ay_.width - qy);
       if (side == kInf) break;  // the block covers the grid
       side -= slack_;
-      if (side > 0.0 && best.beyond(side * side)) break;
+      if (side > 0.0 && beyond(best, side * side)) break;
     }
   }
 
