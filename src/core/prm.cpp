@@ -382,11 +382,7 @@ void Prm::check_candidate() {
   ++edge_checks_;
   evaluations_ += checker_.evaluations();
   const bool free = checker_.verdict() == Verdict::Free;
-  if (free) {
-    roadmap_.edges.push_back({std::min(p_, q), std::max(p_, q), length, true});
-    ++edges_alive_;
-    components_.unite(p_, q);
-  }
+  if (free) add_edge(q, {std::min(p_, q), std::max(p_, q), length, true});
   if constexpr (kEmit) {
     PrmEvent& e = event_;
     e.vertex = p_;
@@ -396,6 +392,12 @@ void Prm::check_candidate() {
     e.kind = free ? PrmEvent::Kind::EdgeAdded : PrmEvent::Kind::EdgeRejected;
     if (!free) e.collision_t = *checker_.collision_t();
   }
+}
+
+void Prm::add_edge(int q, RoadmapEdge edge) {
+  roadmap_.edges.push_back(std::move(edge));
+  ++edges_alive_;
+  components_.unite(p_, q);
 }
 
 template <bool kEmit>
@@ -409,9 +411,7 @@ void Prm::connect_candidate(int q) {
   evaluations_ += path.evaluations;
   if (path.connected) {
     if (p_ > q) std::reverse(path.waypoints.begin(), path.waypoints.end());  // stored from a to b
-    roadmap_.edges.push_back({a, b, path.length, true, std::move(path.waypoints)});
-    ++edges_alive_;
-    components_.unite(p_, q);
+    add_edge(q, {a, b, path.length, true, std::move(path.waypoints)});
   }
   if constexpr (kEmit) {
     PrmEvent& e = event_;

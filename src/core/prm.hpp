@@ -162,6 +162,8 @@ class Prm {
   void find_candidates();
   template <bool kEmit>
   void check_candidate();
+  // E gets (p_, q), proven free (a straight line, or a connector's path).
+  void add_edge(int q, RoadmapEdge edge);
   // check_candidate() with params_.connector: the connector's path or nothing.
   template <bool kEmit>
   void connect_candidate(int q);
