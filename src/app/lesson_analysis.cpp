@@ -89,9 +89,7 @@ class AnalysisLesson : public Lesson {
       why = "the analysis lesson uses point and polygon robots";
       return false;
     }
-    editor_.record(scene_);
-    editor_.deselect();
-    scene_ = s;
+    editor_.replace(scene_, s);
     measure();
     return true;
   }

@@ -122,9 +122,7 @@ class CollisionLesson : public Lesson {
       why = "this lesson shows the point robot and the 2-link arm";
       return false;
     }
-    editor_.record(scene_);
-    editor_.deselect();
-    scene_ = s;
+    editor_.replace(scene_, s);
     arm_ = std::holds_alternative<ArmRobot>(s.robot);
     recompute();
     return true;

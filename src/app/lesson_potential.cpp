@@ -168,8 +168,7 @@ class PotentialLesson : public Lesson {
   Scene* scene() override { return &scene_; }
   bool accept_scene(const Scene& s, std::string& why) override {
     (void)why;  // every robot type has control points
-    editor_.record(scene_);
-    editor_.deselect();
+    editor_.replace(scene_, s);
     load(s);
     return true;
   }

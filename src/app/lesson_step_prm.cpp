@@ -69,9 +69,7 @@ class StepPrmLesson : public Lesson {
       why = "this lesson plans for a point robot; the scene has a '" + std::string(robot_type_name(s.robot)) + "' robot";
       return false;
     }
-    editor_.record(scene_);
-    editor_.deselect();
-    scene_ = s;
+    editor_.replace(scene_, s);
     rebuild(0);
     return true;
   }

@@ -124,9 +124,7 @@ class TorusLesson : public Lesson {
       why = "this lesson is about the 2-link arm (robot type 'arm2')";
       return false;
     }
-    editor_.record(scene_);
-    editor_.deselect();
-    scene_ = s;
+    editor_.replace(scene_, s);
     q_ = scene_.start;
     trail_.clear();
     rebuild(0);

@@ -52,6 +52,7 @@ void SceneEditor::record(const Scene& before) {
 }
 
 bool SceneEditor::undo(Scene& scene) {
+  end_drag(scene);  // a drag in progress becomes its own step, and this undoes it
   if (undo_.empty()) return false;
   redo_.push_back(scene);
   scene = undo_.back();
@@ -61,6 +62,7 @@ bool SceneEditor::undo(Scene& scene) {
 }
 
 bool SceneEditor::redo(Scene& scene) {
+  end_drag(scene);
   if (redo_.empty()) return false;
   undo_.push_back(scene);
   scene = redo_.back();
@@ -73,6 +75,29 @@ void SceneEditor::clear_history() {
   undo_.clear();
   redo_.clear();
   selected_ = -1;
+  drop_drag();  // the scene is a new one: nothing to commit
+}
+
+void SceneEditor::replace(Scene& scene, const Scene& next) {
+  end_drag(scene);
+  record(scene);
+  scene = next;
+  selected_ = -1;
+}
+
+void SceneEditor::end_drag(Scene& scene) {
+  // A move or resize is one undo step; a new disk's or wall's preview is dropped.
+  if (before_drag_ && drag_ != Drag::NewDisk && drag_ != Drag::NewWall &&
+      scene_to_json(*before_drag_) != scene_to_json(scene))
+    record(*before_drag_);
+  drop_drag();
+}
+
+void SceneEditor::drop_drag() {
+  before_drag_.reset();
+  drag_ = Drag::None;
+  target_ = -1;
+  handle_ = -1;
 }
 
 bool SceneEditor::add_obstacle(Scene& scene, Obstacle o, LabContext& ctx) {
@@ -118,8 +143,18 @@ bool SceneEditor::handle_keys(Scene& scene, LabContext& ctx) {
     if (!changed) ctx.notify("Nothing to redo.", 2.0);
   }
   if (key_pressed(ImGuiKey_Escape)) {
-    if (!polygon_.empty()) polygon_.clear();
-    else selected_ = -1;
+    if (drag_ != Drag::None) {
+      // Esc in the middle of a drag puts everything back as it was before the press.
+      if (before_drag_) {
+        changed = true;
+        scene = *before_drag_;
+      }
+      drop_drag();
+    } else if (!polygon_.empty()) {
+      polygon_.clear();
+    } else {
+      selected_ = -1;
+    }
   }
   if (key_pressed(ImGuiKey_Enter) && tool_ == Tool::Polygon) changed |= finish_polygon(scene, ctx);
   if (key_pressed(ImGuiKey_Delete) || key_pressed(ImGuiKey_Backspace)) {
@@ -167,19 +202,20 @@ bool SceneEditor::begin_drag(WorkspaceView& view, Scene& scene, const Options& o
   if (selected_ >= 0 && selected_ < static_cast<int>(scene.obstacles.size())) {
     const Obstacle& o = scene.obstacles[static_cast<std::size_t>(selected_)];
     if (const auto* d = std::get_if<Disk>(&o)) {
-      if (std::fabs(length(m - d->center) - d->radius) <= grab) return drag_ = Drag::DiskRim, true;
+      if (std::fabs(length(m - d->center) - d->radius) <= grab) return target_ = selected_, drag_ = Drag::DiskRim, true;
     } else if (const auto* g = std::get_if<PolygonObstacle>(&o)) {
       for (std::size_t i = 0; i < g->vertices.size(); ++i)
-        if (length(g->vertices[i] - m) <= grab) return handle_ = static_cast<int>(i), drag_ = Drag::Vertex, true;
+        if (length(g->vertices[i] - m) <= grab)
+          return target_ = selected_, handle_ = static_cast<int>(i), drag_ = Drag::Vertex, true;
     } else {
       const Wall& w = std::get<Wall>(o);
-      if (length(w.a - m) <= grab) return handle_ = 0, drag_ = Drag::WallEnd, true;
-      if (length(w.b - m) <= grab) return handle_ = 1, drag_ = Drag::WallEnd, true;
+      if (length(w.a - m) <= grab) return target_ = selected_, handle_ = 0, drag_ = Drag::WallEnd, true;
+      if (length(w.b - m) <= grab) return target_ = selected_, handle_ = 1, drag_ = Drag::WallEnd, true;
     }
   }
   for (int i = static_cast<int>(scene.obstacles.size()) - 1; i >= 0; --i)
     if (hits(scene.obstacles[static_cast<std::size_t>(i)], m, view.pixels(4.0f))) {
-      selected_ = i;
+      selected_ = target_ = i;
       return drag_ = Drag::Obstacle, true;
     }
   selected_ = -1;
@@ -202,19 +238,19 @@ bool SceneEditor::continue_drag(WorkspaceView& view, Scene& scene, LabContext& c
       break;
     }
     case Drag::Obstacle: {
-      translate(scene.obstacles[static_cast<std::size_t>(selected_)], m - grab_);
+      translate(scene.obstacles[static_cast<std::size_t>(target_)], m - grab_);
       grab_ = m;
       changed = true;
       break;
     }
     case Drag::DiskRim: {
-      Disk& d = std::get<Disk>(scene.obstacles[static_cast<std::size_t>(selected_)]);
+      Disk& d = std::get<Disk>(scene.obstacles[static_cast<std::size_t>(target_)]);
       d.radius = std::max(view.pixels(2.0f), length(m - d.center));
       changed = true;
       break;
     }
     case Drag::Vertex: {
-      auto& verts = std::get<PolygonObstacle>(scene.obstacles[static_cast<std::size_t>(selected_)]).vertices;
+      auto& verts = std::get<PolygonObstacle>(scene.obstacles[static_cast<std::size_t>(target_)]).vertices;
       const Vec2 old = verts[static_cast<std::size_t>(handle_)];
       verts[static_cast<std::size_t>(handle_)] = m;
       // A move that would make the polygon cross itself is not taken.
@@ -228,7 +264,7 @@ bool SceneEditor::continue_drag(WorkspaceView& view, Scene& scene, LabContext& c
       break;
     }
     case Drag::WallEnd: {
-      Wall& w = std::get<Wall>(scene.obstacles[static_cast<std::size_t>(selected_)]);
+      Wall& w = std::get<Wall>(scene.obstacles[static_cast<std::size_t>(target_)]);
       (handle_ == 0 ? w.a : w.b) = m;
       changed = true;
       break;
@@ -255,15 +291,7 @@ bool SceneEditor::continue_drag(WorkspaceView& view, Scene& scene, LabContext& c
     case Drag::None:
       break;
   }
-  if (!down) {
-    // One undo step per drag, if it changed anything.
-    if (before_drag_ && drag_ != Drag::NewDisk && drag_ != Drag::NewWall &&
-        scene_to_json(*before_drag_) != scene_to_json(scene))
-      record(*before_drag_);
-    before_drag_.reset();
-    drag_ = Drag::None;
-    handle_ = -1;
-  }
+  if (!down) end_drag(scene);  // one undo step per drag, if it changed anything
   return changed;
 }
 
@@ -398,7 +426,7 @@ void SceneEditor::help_window() {
         {"click (Polygon)", "add a vertex; double-click or Enter closes"},
         {"Backspace", "remove the last polygon vertex, or the selection"},
         {"Delete", "delete the selected obstacle"},
-        {"Esc", "cancel the polygon, or deselect"},
+        {"Esc", "cancel a drag or the polygon, or deselect"},
         {"Ctrl+Z / Ctrl+Y", "undo / redo (Ctrl+Shift+Z redoes too)"},
         {"wheel / right drag", "zoom about the cursor / pan"},
         {"F", "fit the view"},

@@ -37,7 +37,6 @@ class SceneEditor {
   void set_tool(Tool t);
   /// The selected obstacle, or -1.
   int selected() const { return selected_; }
-  void deselect() { selected_ = -1; }
   /// Whether a drag (of an obstacle, handle or endpoint) is in progress.
   bool dragging() const { return drag_ != Drag::None; }
 
@@ -47,7 +46,11 @@ class SceneEditor {
   bool redo(Scene& scene);
   bool can_undo() const { return !undo_.empty(); }
   bool can_redo() const { return !redo_.empty(); }
+  /// Ends the history: the scene is a new one (any drag in progress is dropped).
   void clear_history();
+  /// Replaces `scene` by `next`, a scene from elsewhere (the API, a file): one undo step. A drag
+  /// in progress ends first, as its own undo step: it must not go on in the new scene.
+  void replace(Scene& scene, const Scene& next);
 
  private:
   enum class Drag { None, Obstacle, DiskRim, Vertex, WallEnd, Start, Goal, NewDisk, NewWall };
@@ -57,10 +60,14 @@ class SceneEditor {
   bool finish_polygon(Scene& scene, LabContext& ctx);
   void draw_overlays(WorkspaceView& view, const Scene& scene) const;
   bool add_obstacle(Scene& scene, Obstacle o, LabContext& ctx);
+  // Undo, redo and a new scene end a drag first: it holds an index into the scene it began in.
+  void end_drag(Scene& scene);  // as if released: a move becomes one undo step
+  void drop_drag();             // forgets it, keeping the scene as it is
 
   Tool tool_ = Tool::Select;
   int selected_ = -1;
   Drag drag_ = Drag::None;
+  int target_ = -1;            // the obstacle being dragged (the selection may change meanwhile)
   int handle_ = -1;            // vertex or wall end being dragged
   Vec2 grab_{0, 0};            // where the drag started (world)
   std::optional<Scene> before_drag_;

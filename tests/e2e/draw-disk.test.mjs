@@ -67,3 +67,114 @@ test('dragging on the workspace canvas creates a disk obstacle', async () => {
     server.close();
   }
 });
+
+// Undo, redo or a new scene may arrive while the mouse still holds an obstacle (the keys and
+// the release can even land in the same frame). The edit in progress must end there: before,
+// the drag went on with the undone scene's index and crashed the app (found by the monkey).
+test('undo or a new scene in the middle of a drag ends the drag and undoes it', async () => {
+  const { server, url } = await startServer();
+  const browser = await launchBrowser();
+  try {
+    const page = await browser.newPage({ viewport: { width: 1100, height: 720 } });
+    const errors = collectErrors(page);
+    await openLab(page, url);
+    const base = {
+      version: 1, start: [0.05, 0.05], goal: [0.95, 0.95],
+      obstacles: [{ type: 'polygon', vertices: [[0.1, 0.6], [0.3, 0.6], [0.2, 0.8]] },
+                  { type: 'disk', center: [0.6, 0.4], radius: 0.1 }],
+    };
+    await page.evaluate((s) => {
+      window.cspacelab.selectLesson('step-prm');
+      window.cspacelab.setScene({ version: 1, start: [0.05, 0.05], goal: [0.95, 0.95] });
+      window.cspacelab.setScene(s);  // undoable: one step back is the empty scene
+    }, base);
+    await waitFrames(page, 2);
+    const scene = () => page.evaluate(() => window.cspacelab.getScene());
+    const undoKeys = async (key) => {
+      await page.keyboard.down('Control');
+      await page.keyboard.press(key);
+      await page.keyboard.up('Control');
+      await waitFrames(page, 2);
+    };
+    const [centre, rim, rimOut, moved] = await worldToPage(page, [[0.6, 0.4], [0.7, 0.4], [0.8, 0.4], [0.6, 0.3]]);
+
+    // Drag the disk's rim outwards, and undo with the button still down.
+    await click(page, centre);  // select the disk (the select tool is the default)
+    await page.mouse.move(rim.x, rim.y);
+    await waitFrames(page, 2);
+    await page.mouse.down();
+    await waitFrames(page, 2);
+    await page.mouse.move(rimOut.x, rimOut.y, { steps: 4 });
+    await waitFrames(page, 2);
+    assert.ok((await scene()).obstacles[1].radius > 0.15, 'the rim drag is live');
+    await undoKeys('z');
+    assert.deepEqual((await scene()).obstacles, base.obstacles, 'undo undid the drag');
+    await page.mouse.move(moved.x, moved.y, { steps: 4 });  // the button is still down: no drag any more
+    await page.mouse.up();
+    await waitFrames(page, 2);
+    assert.deepEqual((await scene()).obstacles, base.obstacles, 'the rest of the gesture changed nothing');
+    await undoKeys('y');
+    assert.ok((await scene()).obstacles[1].radius > 0.15, 'redo brings the drag back');
+    await undoKeys('z');
+
+    // Move the whole disk, and undo and release within one frame.
+    await page.mouse.move(centre.x, centre.y);
+    await waitFrames(page, 2);
+    await page.mouse.down();
+    await waitFrames(page, 2);
+    await page.mouse.move(moved.x, moved.y, { steps: 4 });
+    await waitFrames(page, 2);
+    await page.keyboard.down('Control');
+    await page.keyboard.press('z');
+    await page.mouse.up();
+    await page.keyboard.up('Control');
+    await waitFrames(page, 3);
+    assert.deepEqual((await scene()).obstacles, base.obstacles);
+
+    // Esc in the middle of a drag puts the disk back; a tool key only changes the tool.
+    await page.mouse.move(centre.x, centre.y);
+    await waitFrames(page, 2);
+    await page.mouse.down();
+    await waitFrames(page, 2);
+    await page.mouse.move(moved.x, moved.y, { steps: 4 });
+    await waitFrames(page, 2);
+    await keys(page, 'Escape');
+    assert.deepEqual((await scene()).obstacles, base.obstacles, 'Esc cancelled the move');
+    await page.mouse.up();
+    await waitFrames(page, 2);
+    await page.mouse.move(centre.x, centre.y, { steps: 4 });
+    await waitFrames(page, 2);
+    await page.mouse.down();  // at the centre again: a move that a tool key does not break
+    await waitFrames(page, 2);
+    await page.mouse.move(moved.x, moved.y, { steps: 4 });
+    await waitFrames(page, 2);
+    await keys(page, 'w');
+    await page.mouse.up();
+    await waitFrames(page, 2);
+    const after = (await scene()).obstacles[1];
+    assert.ok(Math.abs(after.center[1] - 0.3) < 0.02, `the move went on to its end: ${JSON.stringify(after)}`);
+    await keys(page, 'v');
+    await undoKeys('z');
+    assert.deepEqual((await scene()).obstacles, base.obstacles);
+
+    // A new scene through the API while a drag is in progress replaces the scene; the drag ends.
+    await page.mouse.move(centre.x, centre.y);
+    await waitFrames(page, 2);
+    await page.mouse.down();
+    await waitFrames(page, 2);
+    await page.mouse.move(moved.x, moved.y, { steps: 4 });
+    await waitFrames(page, 2);
+    const single = { ...base, obstacles: [{ type: 'polygon', vertices: [[0.5, 0.1], [0.7, 0.1], [0.6, 0.2]] }] };
+    await page.evaluate((s) => window.cspacelab.setScene(s), single);
+    await page.mouse.move(centre.x, centre.y, { steps: 4 });
+    await page.mouse.up();
+    await waitFrames(page, 2);
+    assert.deepEqual((await scene()).obstacles, single.obstacles);
+
+    assert.equal((await page.evaluate(() => window.cspacelab.status())).lesson, 'step-prm');
+    assert.deepEqual(errors, []);
+  } finally {
+    await browser.close();
+    server.close();
+  }
+});

@@ -34,53 +34,63 @@ test(`monkey: ${EVENTS_PER_LESSON} random events per lesson, seed ${SEED}`, asyn
     const pick = (list) => list[Math.floor(random() * list.length)];
     const point = () => ({ x: 5 + random() * (W - 10), y: 5 + random() * (H - 10) });
     let total = 0;
-    for (const lesson of await api(page, 'lessons')) {
-      await api(page, 'select_lesson', { id: lesson.id });
-      for (let i = 0; i < EVENTS_PER_LESSON; ++i, ++total) {
-        const r = random();
-        if (r < 0.30) {
-          const p = point();
-          await page.mouse.move(p.x, p.y);
-        } else if (r < 0.50) {
-          const p = point();
-          await page.mouse.click(p.x, p.y, { button: random() < 0.85 ? 'left' : 'right' });
-        } else if (r < 0.65) {
-          const a = point(), b = point();
-          await page.mouse.move(a.x, a.y);
-          await page.mouse.down();
-          await page.mouse.move((a.x + b.x) / 2, (a.y + b.y) / 2);
-          await page.mouse.move(b.x, b.y);
-          await page.mouse.up();
-        } else if (r < 0.72) {
-          await page.mouse.wheel(0, (random() - 0.5) * 600);
-        } else if (r < 0.80) {
-          const p = point();
-          await page.mouse.dblclick(p.x, p.y);
-        } else if (r < 0.95) {
-          await page.keyboard.press(pick(KEYS));
-        } else {
-          const mod = random() < 0.5 ? 'Control' : 'Shift';
-          await page.keyboard.down(mod);
-          await page.keyboard.press(pick(['z', 'y', 'a', 'Tab']));
-          await page.keyboard.up(mod);
+    let where = 'opening';
+    try {
+      for (const lesson of await api(page, 'lessons')) {
+        await api(page, 'select_lesson', { id: lesson.id });
+        for (let i = 0; i < EVENTS_PER_LESSON; ++i, ++total) {
+          where = `lesson ${lesson.id}, event ${i}`;
+          const r = random();
+          if (r < 0.30) {
+            const p = point();
+            await page.mouse.move(p.x, p.y);
+          } else if (r < 0.50) {
+            const p = point();
+            await page.mouse.click(p.x, p.y, { button: random() < 0.85 ? 'left' : 'right' });
+          } else if (r < 0.65) {
+            const a = point(), b = point();
+            await page.mouse.move(a.x, a.y);
+            await page.mouse.down();
+            await page.mouse.move((a.x + b.x) / 2, (a.y + b.y) / 2);
+            await page.mouse.move(b.x, b.y);
+            await page.mouse.up();
+          } else if (r < 0.72) {
+            await page.mouse.wheel(0, (random() - 0.5) * 600);
+          } else if (r < 0.80) {
+            const p = point();
+            await page.mouse.dblclick(p.x, p.y);
+          } else if (r < 0.95) {
+            await page.keyboard.press(pick(KEYS));
+          } else {
+            const mod = random() < 0.5 ? 'Control' : 'Shift';
+            await page.keyboard.down(mod);
+            await page.keyboard.press(pick(['z', 'y', 'a', 'Tab']));
+            await page.keyboard.up(mod);
+          }
+          if (i % 25 === 0) await waitFrames(page, 1);
         }
-        if (i % 25 === 0) await waitFrames(page, 1);
+        await page.mouse.up();
+        await waitFrames(page, 3);
+        // Still alive, still answering, and its work still exportable and importable.
+        // The monkey may have clicked another lesson's button: check whichever is on screen.
+        const status = await api(page, 'status');
+        assert.ok(status.frames > 0 && typeof status.lesson === 'string');
+        const snapshot = await api(page, 'snapshot');
+        if (snapshot.scene) {
+          const scene = await api(page, 'get_scene');
+          assert.equal(typeof JSON.stringify(scene), 'string');
+          await api(page, 'set_scene', { scene }).catch((e) => { throw new Error(`${status.lesson}: ${e.message}`); });
+          assert.deepEqual(await api(page, 'get_scene'), scene);
+        }
+        await api(page, 'restore', snapshot);
+        await screenshot(page, `monkey-${lesson.id}.png`);
       }
-      await page.mouse.up();
-      await waitFrames(page, 3);
-      // Still alive, still answering, and its work still exportable and importable.
-      // The monkey may have clicked another lesson's button: check whichever is on screen.
-      const status = await api(page, 'status');
-      assert.ok(status.frames > 0 && typeof status.lesson === 'string');
-      const snapshot = await api(page, 'snapshot');
-      if (snapshot.scene) {
-        const scene = await api(page, 'get_scene');
-        assert.equal(typeof JSON.stringify(scene), 'string');
-        await api(page, 'set_scene', { scene }).catch((e) => { throw new Error(`${status.lesson}: ${e.message}`); });
-        assert.deepEqual(await api(page, 'get_scene'), scene);
-      }
-      await api(page, 'restore', snapshot);
-      await screenshot(page, `monkey-${lesson.id}.png`);
+    } catch (e) {
+      // Say where the run was, and keep a picture of it: a replay needs both.
+      await screenshot(page, 'monkey-failure.png').catch(() => {});
+      // A wasm abort stops the frames, so a timeout may really be an error: show them too.
+      e.message = `${where}: ${e.message}${errors.length ? `; page errors: ${errors.join(' | ')}` : ''}`;
+      throw e;
     }
     console.log(`monkey: ${total} events over ${(await api(page, 'lessons')).length} lessons, seed ${SEED}`);
     assert.deepEqual(errors, [], 'no console errors and no aborts');
