@@ -32,7 +32,7 @@ class StepPrmLesson : public Lesson {
     ImGui::TextWrapped("PRM as the course states it: add q_init and q_final; draw n samples and keep the "
                        "free ones; connect close pairs whose straight line is free; search the graph.");
     ImGui::Spacing();
-    if (prm_controls(params_)) rebuild(0);
+    if (prm_controls(params_, world_->space())) rebuild(0);
     ImGui::Separator();
     stats();
     ImGui::Separator();
@@ -109,7 +109,7 @@ class StepPrmLesson : public Lesson {
   }
 
   void set_params(const json& j) override {
-    params_ = prm_params_from_json(j, params_);
+    params_ = prm_params_from_json(j, params_, world_->space());
     rebuild(0);
   }
 
@@ -134,6 +134,7 @@ class StepPrmLesson : public Lesson {
   // edit keeps the student at the same step, with the same seed).
   void rebuild(long steps) {
     world_ = std::make_unique<CollisionWorld>(scene_);
+    keep_within_budget(params_, world_->space());  // a smaller workspace makes the same r cover more pairs
     prm_ = std::make_unique<Prm>(*world_, scene_.start, scene_.goal, params_);
     prm_->run_to(steps);
     labels_at_ = -1;

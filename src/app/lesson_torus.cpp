@@ -75,7 +75,7 @@ class TorusLesson : public Lesson {
     ImGui::RadioButton("both", &right_view_, 2);
 
     ui::section("PRM on the torus");
-    if (prm_controls(params_, 5000)) rebuild(0);
+    if (prm_controls(params_, world_->space(), 5000)) rebuild(0);
     ImGui::Text("|V| = %zu  |E| = %ld  components %d", prm_->roadmap().vertices.size(), prm_->edges_alive(),
                 prm_->components());
     ImGui::Text("edges across a seam: %d", seam_edges());
@@ -196,7 +196,7 @@ class TorusLesson : public Lesson {
         throw ApiError("unknown parameter \"" + k + "\"");
       }
     }
-    const PrmParams p = prm_params_from_json(prm_part, params_, 5000);
+    const PrmParams p = prm_params_from_json(prm_part, params_, world_->space(), 5000);
     right_view_ = view;
     if (q) {
       q_ = world_->space().wrap(*q);

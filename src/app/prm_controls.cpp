@@ -1,6 +1,8 @@
 #include "app/prm_controls.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "app/js_api.hpp"
@@ -8,7 +10,21 @@
 
 namespace csl::app {
 
-bool prm_controls(PrmParams& p, int max_samples) {
+namespace {
+constexpr float kMinStep = 0.001f;  // the D slider's least: finer steps only cost time
+}  // namespace
+
+double max_radius(const Space& space, int samples) { return radius_for_pairs(space, samples, kMaxCandidatePairs); }
+
+bool keep_within_budget(PrmParams& p, const Space& space) {
+  if (p.neighbors.kind != NeighborRule::Kind::Radius) return false;
+  const double most = max_radius(space, p.samples);
+  if (p.neighbors.radius <= most) return false;
+  p.neighbors.radius = most;
+  return true;
+}
+
+bool prm_controls(PrmParams& p, const Space& space, int max_samples) {
   bool changed = false;
   ImGui::PushItemWidth(-90.0f);
   changed |= ImGui::SliderInt("samples n", &p.samples, 0, max_samples, "%d", ImGuiSliderFlags_Logarithmic);
@@ -23,10 +39,19 @@ bool prm_controls(PrmParams& p, int max_samples) {
   if (p.neighbors.kind == NeighborRule::Kind::Nearest)
     changed |= ImGui::SliderInt("k", &p.neighbors.k, 1, 50);
   if (p.neighbors.kind == NeighborRule::Kind::Radius) {
+    // The slider ends where the pairs budget does; a float rounded up must not pass it.
+    const float most = std::min(1.0f, std::nextafter(static_cast<float>(max_radius(space, p.samples)), 0.0f));
+    const float least = std::min(0.01f, most / 10.0f);
     float r = static_cast<float>(p.neighbors.radius);
-    if (ImGui::SliderFloat("r", &r, 0.01f, 1.0f, "%.3f", ImGuiSliderFlags_Logarithmic)) {
+    if (ImGui::SliderFloat("r", &r, least, most, "%.3f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) {
       p.neighbors.radius = static_cast<double>(r);
       changed = true;
+    }
+    if (most < 1.0f) {
+      ImGui::TextDisabled("r <= %.3f with n = %d: about %.0f pairs at most", static_cast<double>(most), p.samples,
+                          kMaxCandidatePairs);
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Pairs within r grow with n^2: the lab keeps a run within seconds and memory.");
     }
   }
   if (p.neighbors.kind == NeighborRule::Kind::PrmStar)
@@ -45,7 +70,7 @@ bool prm_controls(PrmParams& p, int max_samples) {
     changed |= ImGui::SliderInt("N", &p.checker.resolution, 2, 200, "%d", ImGuiSliderFlags_Logarithmic);
   if (p.checker.kind == EdgeCheckerSpec::Kind::Step) {
     float d = static_cast<float>(p.checker.step);
-    if (ImGui::SliderFloat("D", &d, 0.001f, 0.5f, "%.4f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) {
+    if (ImGui::SliderFloat("D", &d, kMinStep, 0.5f, "%.4f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) {
       p.checker.step = static_cast<double>(d);
       changed = true;
     }
@@ -58,6 +83,7 @@ bool prm_controls(PrmParams& p, int max_samples) {
   }
   ImGui::PopItemWidth();
   p.checker.resolution = std::max(p.checker.resolution, 2);
+  changed |= keep_within_budget(p, space);  // more samples may have made r too large
   return changed;
 }
 
@@ -65,7 +91,7 @@ nlohmann::json prm_params_json(const PrmParams& p) {
   return {{"samples", p.samples}, {"neighbors", p.neighbors.name()}, {"checker", p.checker.name()}, {"seed", p.seed}};
 }
 
-PrmParams prm_params_from_json(const nlohmann::json& j, PrmParams p, int max_samples) {
+PrmParams prm_params_from_json(const nlohmann::json& j, PrmParams p, const Space& space, int max_samples) {
   if (!j.is_object()) throw ApiError("params must be an object");
   for (auto it = j.begin(); it != j.end(); ++it) {
     const std::string& key = it.key();
@@ -79,8 +105,10 @@ PrmParams prm_params_from_json(const nlohmann::json& j, PrmParams p, int max_sam
         if (!v.is_string()) throw ApiError("neighbors: \"k:K\", \"radius:R\" or \"prm*\"");
         p.neighbors = NeighborRule::parse(v.get<std::string>());
       } else if (key == "checker") {
-        if (!v.is_string()) throw ApiError("checker: \"bisection\" or \"grid:N\"");
+        if (!v.is_string()) throw ApiError("checker: \"bisection\", \"grid:N\" or \"step:D\"");
         p.checker = EdgeCheckerSpec::parse(v.get<std::string>());
+        if (p.checker.kind == EdgeCheckerSpec::Kind::Step && p.checker.step < static_cast<double>(kMinStep))
+          throw ApiError("checker: D must be at least 0.001 in the lab");
       } else if (key == "seed") {
         if (!v.is_number_integer() || v.get<long long>() < 0) throw ApiError("seed: an integer >= 0");
         p.seed = v.get<std::uint64_t>();
@@ -90,6 +118,15 @@ PrmParams prm_params_from_json(const nlohmann::json& j, PrmParams p, int max_sam
     } catch (const std::invalid_argument& e) {
       throw ApiError(key + ": " + e.what());
     }
+  }
+  if (p.neighbors.kind == NeighborRule::Kind::Radius && p.neighbors.radius > max_radius(space, p.samples)) {
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "neighbors: radius:%g with %d samples means about %.0f candidate pairs; the lab checks at most "
+                  "%.0f (r at most %.4g with this n)",
+                  p.neighbors.radius, p.samples, expected_candidate_pairs(space, p.neighbors, p.samples),
+                  kMaxCandidatePairs, max_radius(space, p.samples));
+    throw ApiError(text);
   }
   return p;
 }

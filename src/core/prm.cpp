@@ -1,5 +1,6 @@
 #include "core/prm.hpp"
 
+#include "core/analysis.hpp"
 #include "core/nearest_grid.hpp"
 
 #include <algorithm>
@@ -61,6 +62,35 @@ std::string NeighborRule::name() const {
   char text[48];
   std::snprintf(text, sizeof text, "radius:%.17g", radius);
   return text;
+}
+
+namespace {
+double vertex_pairs(int samples) {
+  const double n = static_cast<double>(samples) + 2.0;  // with q_init and q_final
+  return n * (n - 1.0) / 2.0;
+}
+}  // namespace
+
+double expected_candidate_pairs(const Space& space, const NeighborRule& rule, int samples) {
+  const double n = static_cast<double>(samples) + 2.0;
+  const int d = space.dim();
+  switch (rule.kind) {
+    case NeighborRule::Kind::Nearest:
+      return std::min(n * rule.k, vertex_pairs(samples));
+    case NeighborRule::Kind::PrmStar:
+      return std::min(n * NeighborRule::prm_star_k(samples + 2, d), vertex_pairs(samples));
+    case NeighborRule::Kind::Radius:
+      break;
+  }
+  // The ball in the space's (weighted) metric against the space's (weighted) volume.
+  const double ball = unit_ball_volume(d) * std::pow(rule.radius, d);
+  return vertex_pairs(samples) * std::min(1.0, ball / space.volume());
+}
+
+double radius_for_pairs(const Space& space, int samples, double pairs) {
+  const int d = space.dim();
+  const double ball = std::min(1.0, pairs / vertex_pairs(samples)) * space.volume();
+  return std::pow(ball / unit_ball_volume(d), 1.0 / d);
 }
 
 const char* phase_name(PrmPhase p) {

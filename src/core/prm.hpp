@@ -46,6 +46,15 @@ struct PrmParams {
 };
 inline constexpr int kMaxPrmSamples = 1000000;
 
+/// How many candidate pairs PRM is expected to check with `rule` and `samples` samples in
+/// `space`, counting every sample as free (obstacles only lower it). A rule of k: each of the
+/// n + 2 vertices proposes at most k others. A radius r: each of the (n+2)(n+1)/2 pairs is within
+/// r with probability mu(B_r) / mu(Q), less where a ball sticks out of Q. A radius makes the work
+/// grow with n^2, so a UI checks this before it lets a run take minutes and gigabytes.
+double expected_candidate_pairs(const Space& space, const NeighborRule& rule, int samples);
+/// The radius whose expected_candidate_pairs() for `samples` is `pairs` (inverse of the above).
+double radius_for_pairs(const Space& space, int samples, double pairs);
+
 /// The seed a local connector gets for vertices a < b: splitmix64 of the PRM seed and the pair.
 std::uint64_t pair_seed(std::uint64_t seed, int a, int b);
 

@@ -93,3 +93,51 @@ test('Step PRM: edit with the mouse, step, step back, run, and match the CLI', a
     server.close();
   }
 });
+
+// A radius rule's pairs grow with n^2: the lab keeps a run's expected pairs within a million
+// (what k = 50 with the most samples checks), refusing more through the API with the reason and
+// lowering r when a smaller workspace would make the same r cover more pairs.
+test('Step PRM: parameters that would check too many pairs are refused or brought within bounds', async () => {
+  const { server, url } = await startServer();
+  const browser = await launchBrowser();
+  try {
+    const page = await browser.newPage();
+    const errors = collectErrors(page);
+    await openLab(page, url);
+    await api(page, 'select_lesson', { id: 'step-prm' });
+    const setParams = (params) => page.evaluate((p) => {
+      try { window.cspacelab.setParams(p); } catch (e) { return e.message; }
+      return null;
+    }, params);
+    assert.equal(await setParams({ samples: 2000, neighbors: 'radius:0.1' }), null);
+    const before = await api(page, 'state');
+    // pi 0.3^2 of the 20002 * 20001 / 2 pairs: 56557150.
+    assert.equal(await setParams({ samples: 20000, neighbors: 'radius:0.3' }),
+                 'neighbors: radius:0.3 with 20000 samples means about 56557150 candidate pairs; the lab checks at ' +
+                 'most 1000000 (r at most 0.03989 with this n)');
+    assert.match(await setParams({ samples: 20000 }), /radius:0\.1 with 20000 samples/, 'n alone can be too many');
+    assert.equal(await setParams({ checker: 'step:0.0001' }), 'checker: D must be at least 0.001 in the lab');
+    const same = await api(page, 'state');
+    assert.deepEqual(same.params, before.params, 'refusals change nothing');
+    assert.equal(same.roadmap_hash, before.roadmap_hash);
+    assert.equal(await setParams({ samples: 20000, neighbors: 'radius:0.0398' }), null);
+    await api(page, 'run');
+    const full = await api(page, 'state');
+    assert.equal(full.done, true);
+    // Below the bound: obstacles take samples and cut pairs, and balls stick out of the square.
+    assert.ok(full.edge_checks <= 1e6 && full.edge_checks > 0.5e6, `edge checks ${full.edge_checks}`);
+
+    // The same r in a workspace of a quarter the side covers 16 times the pairs: r is lowered.
+    assert.equal(await setParams({ samples: 2000, neighbors: 'radius:0.1' }), null);
+    await api(page, 'set_scene', { scene: { version: 1, workspace: { min: [0, 0], max: [0.25, 0.25] },
+                                            start: [0.01, 0.01], goal: [0.24, 0.24] } });
+    const lowered = (await api(page, 'state')).params.neighbors;
+    const r = Number(lowered.split(':')[1]);
+    // C(2002, 2) pi r^2 / 0.0625 = 1e6
+    assert.ok(Math.abs(r - Math.sqrt(1e6 * 0.0625 / (2002 * 2001 / 2) / Math.PI)) < 1e-9, lowered);
+    assert.deepEqual(errors, []);
+  } finally {
+    await browser.close();
+    server.close();
+  }
+});

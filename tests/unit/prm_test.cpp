@@ -162,6 +162,37 @@ TEST_CASE("PRM*'s k(n) = ceil(e (1 + 1/d) ln n)") {
   CHECK_THROWS_AS(csl::NeighborRule::parse("nearest"), std::invalid_argument);
 }
 
+TEST_CASE("the expected number of candidate pairs, against the pairs PRM checks") {
+  const csl::CollisionWorld empty(csl::PointRobot{}, {}, {0, 0}, {1, 1});
+  const csl::Space& square = empty.space();
+  CHECK(csl::expected_candidate_pairs(square, csl::NeighborRule::parse("k:10"), 998) == 10000);
+  CHECK(csl::expected_candidate_pairs(square, csl::NeighborRule::parse("k:10"), 3) == 10);  // all 5 * 4 / 2 pairs
+  CHECK(csl::expected_candidate_pairs(square, csl::NeighborRule::parse("prm*"), 998) == 1000 * csl::NeighborRule::prm_star_k(1000, 2));
+  // Radius: C(1000, 2) pairs, each within r with probability pi r^2 (the unit square).
+  const double pi = 3.141592653589793;
+  CHECK(csl::expected_candidate_pairs(square, csl::NeighborRule::parse("radius:0.1"), 998) ==
+        doctest::Approx(499500 * pi * 0.01));
+  CHECK(csl::expected_candidate_pairs(square, csl::NeighborRule::parse("radius:3"), 998) == 499500);
+  // PRM's own count is below it only by the balls that stick out of the square: for r = 0.1,
+  // the exact probability is pi r^2 - 8 r^3 / 3 + r^4 / 2, 8.3% less.
+  for (const std::uint64_t seed : {1u, 2u, 3u}) {
+    Prm prm(empty, config({0.5, 0.5}), config({0.25, 0.75}), params(998, "radius:0.1", "bisection", seed));
+    prm.run();
+    const double expected = 499500 * (pi * 0.01 - 8e-3 / 3 + 1e-4 / 2);
+    CHECK(static_cast<double>(prm.edge_checks()) == doctest::Approx(expected).epsilon(0.05));
+  }
+  // The inverse, on the square and on the arm's torus (volume 4 pi^2).
+  const csl::Space torus = csl::robot_space(csl::ArmRobot{}, {0, 0}, {1, 1});
+  for (const csl::Space* space : {&square, &torus}) {
+    const double r = csl::radius_for_pairs(*space, 20000, 1e6);
+    csl::NeighborRule rule;
+    rule.kind = csl::NeighborRule::Kind::Radius;
+    rule.radius = r;
+    CHECK(csl::expected_candidate_pairs(*space, rule, 20000) == doctest::Approx(1e6));
+  }
+  CHECK(csl::radius_for_pairs(square, 20000, 1e6) == doctest::Approx(std::sqrt(1e6 / (20002.0 * 20001 / 2) / pi)));
+}
+
 TEST_CASE("going back to step k gives the identical state") {
   const auto world = wall_with_gap();
   Prm prm(world, config({0.1, 0.5}), config({0.9, 0.5}), params(200));
