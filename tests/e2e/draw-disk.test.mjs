@@ -97,33 +97,35 @@ test('undo or a new scene in the middle of a drag ends the drag and undoes it', 
       await waitFrames(page, 2);
     };
     const [centre, rim, rimOut, moved] = await worldToPage(page, [[0.6, 0.4], [0.7, 0.4], [0.8, 0.4], [0.6, 0.3]]);
+    // Presses at `from` and moves to `to`, frames between, and keeps the button down.
+    const hold = async (from, to) => {
+      await page.mouse.move(from.x, from.y);
+      await waitFrames(page, 2);
+      await page.mouse.down();
+      await waitFrames(page, 2);
+      await page.mouse.move(to.x, to.y, { steps: 4 });
+      await waitFrames(page, 2);
+    };
+    const release = async () => {
+      await page.mouse.up();
+      await waitFrames(page, 2);
+    };
 
     // Drag the disk's rim outwards, and undo with the button still down.
     await click(page, centre);  // select the disk (the select tool is the default)
-    await page.mouse.move(rim.x, rim.y);
-    await waitFrames(page, 2);
-    await page.mouse.down();
-    await waitFrames(page, 2);
-    await page.mouse.move(rimOut.x, rimOut.y, { steps: 4 });
-    await waitFrames(page, 2);
+    await hold(rim, rimOut);
     assert.ok((await scene()).obstacles[1].radius > 0.15, 'the rim drag is live');
     await undoKeys('z');
     assert.deepEqual((await scene()).obstacles, base.obstacles, 'undo undid the drag');
     await page.mouse.move(moved.x, moved.y, { steps: 4 });  // the button is still down: no drag any more
-    await page.mouse.up();
-    await waitFrames(page, 2);
+    await release();
     assert.deepEqual((await scene()).obstacles, base.obstacles, 'the rest of the gesture changed nothing');
     await undoKeys('y');
     assert.ok((await scene()).obstacles[1].radius > 0.15, 'redo brings the drag back');
     await undoKeys('z');
 
     // Move the whole disk, and undo and release within one frame.
-    await page.mouse.move(centre.x, centre.y);
-    await waitFrames(page, 2);
-    await page.mouse.down();
-    await waitFrames(page, 2);
-    await page.mouse.move(moved.x, moved.y, { steps: 4 });
-    await waitFrames(page, 2);
+    await hold(centre, moved);
     await page.keyboard.down('Control');
     await page.keyboard.press('z');
     await page.mouse.up();
@@ -132,25 +134,13 @@ test('undo or a new scene in the middle of a drag ends the drag and undoes it', 
     assert.deepEqual((await scene()).obstacles, base.obstacles);
 
     // Esc in the middle of a drag puts the disk back; a tool key only changes the tool.
-    await page.mouse.move(centre.x, centre.y);
-    await waitFrames(page, 2);
-    await page.mouse.down();
-    await waitFrames(page, 2);
-    await page.mouse.move(moved.x, moved.y, { steps: 4 });
-    await waitFrames(page, 2);
+    await hold(centre, moved);
     await keys(page, 'Escape');
     assert.deepEqual((await scene()).obstacles, base.obstacles, 'Esc cancelled the move');
-    await page.mouse.up();
-    await waitFrames(page, 2);
-    await page.mouse.move(centre.x, centre.y, { steps: 4 });
-    await waitFrames(page, 2);
-    await page.mouse.down();  // at the centre again: a move that a tool key does not break
-    await waitFrames(page, 2);
-    await page.mouse.move(moved.x, moved.y, { steps: 4 });
-    await waitFrames(page, 2);
+    await release();
+    await hold(centre, moved);  // a move that a tool key does not break
     await keys(page, 'w');
-    await page.mouse.up();
-    await waitFrames(page, 2);
+    await release();
     const after = (await scene()).obstacles[1];
     assert.ok(Math.abs(after.center[1] - 0.3) < 0.02, `the move went on to its end: ${JSON.stringify(after)}`);
     await keys(page, 'v');
@@ -158,17 +148,11 @@ test('undo or a new scene in the middle of a drag ends the drag and undoes it', 
     assert.deepEqual((await scene()).obstacles, base.obstacles);
 
     // A new scene through the API while a drag is in progress replaces the scene; the drag ends.
-    await page.mouse.move(centre.x, centre.y);
-    await waitFrames(page, 2);
-    await page.mouse.down();
-    await waitFrames(page, 2);
-    await page.mouse.move(moved.x, moved.y, { steps: 4 });
-    await waitFrames(page, 2);
+    await hold(centre, moved);
     const single = { ...base, obstacles: [{ type: 'polygon', vertices: [[0.5, 0.1], [0.7, 0.1], [0.6, 0.2]] }] };
     await page.evaluate((s) => window.cspacelab.setScene(s), single);
     await page.mouse.move(centre.x, centre.y, { steps: 4 });
-    await page.mouse.up();
-    await waitFrames(page, 2);
+    await release();
     assert.deepEqual((await scene()).obstacles, single.obstacles);
 
     assert.equal((await page.evaluate(() => window.cspacelab.status())).lesson, 'step-prm');
