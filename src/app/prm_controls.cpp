@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 
 #include "app/js_api.hpp"
@@ -11,16 +12,22 @@
 namespace csl::app {
 
 namespace {
-constexpr float kMinStep = 0.001f;  // the D slider's least: finer steps only cost time
+constexpr double kMinStep = 0.001;  // the D slider's least: finer steps only cost time
+
+// Only a radius rule can get there (k <= 50). Both tests: r = max_radius() itself may compute
+// to a hair over the bound, and it must pass, or a clamped r would be clamped again each frame.
+bool over_budget(const PrmParams& p, const Space& space) {
+  return p.neighbors.kind == NeighborRule::Kind::Radius &&
+         expected_candidate_pairs(space, p.neighbors, p.samples) > kMaxCandidatePairs &&
+         p.neighbors.radius > max_radius(space, p.samples);
+}
 }  // namespace
 
 double max_radius(const Space& space, int samples) { return radius_for_pairs(space, samples, kMaxCandidatePairs); }
 
 bool keep_within_budget(PrmParams& p, const Space& space) {
-  if (p.neighbors.kind != NeighborRule::Kind::Radius) return false;
-  const double most = max_radius(space, p.samples);
-  if (p.neighbors.radius <= most) return false;
-  p.neighbors.radius = most;
+  if (!over_budget(p, space)) return false;
+  p.neighbors.radius = max_radius(space, p.samples);
   return true;
 }
 
@@ -40,7 +47,9 @@ bool prm_controls(PrmParams& p, const Space& space, int max_samples) {
     changed |= ImGui::SliderInt("k", &p.neighbors.k, 1, 50);
   if (p.neighbors.kind == NeighborRule::Kind::Radius) {
     // The slider ends where the pairs budget does; a float rounded up must not pass it.
-    const float most = std::min(1.0f, std::nextafter(static_cast<float>(max_radius(space, p.samples)), 0.0f));
+    // (A workspace so small that the float is 0 still gets a slider with a positive range.)
+    const float most = std::clamp(std::nextafter(static_cast<float>(max_radius(space, p.samples)), 0.0f),
+                                  std::numeric_limits<float>::min(), 1.0f);
     const float least = std::min(0.01f, most / 10.0f);
     float r = static_cast<float>(p.neighbors.radius);
     if (ImGui::SliderFloat("r", &r, least, most, "%.3f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) {
@@ -70,7 +79,7 @@ bool prm_controls(PrmParams& p, const Space& space, int max_samples) {
     changed |= ImGui::SliderInt("N", &p.checker.resolution, 2, 200, "%d", ImGuiSliderFlags_Logarithmic);
   if (p.checker.kind == EdgeCheckerSpec::Kind::Step) {
     float d = static_cast<float>(p.checker.step);
-    if (ImGui::SliderFloat("D", &d, kMinStep, 0.5f, "%.4f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) {
+    if (ImGui::SliderFloat("D", &d, static_cast<float>(kMinStep), 0.5f, "%.4f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) {
       p.checker.step = static_cast<double>(d);
       changed = true;
     }
@@ -107,7 +116,7 @@ PrmParams prm_params_from_json(const nlohmann::json& j, PrmParams p, const Space
       } else if (key == "checker") {
         if (!v.is_string()) throw ApiError("checker: \"bisection\", \"grid:N\" or \"step:D\"");
         p.checker = EdgeCheckerSpec::parse(v.get<std::string>());
-        if (p.checker.kind == EdgeCheckerSpec::Kind::Step && p.checker.step < static_cast<double>(kMinStep))
+        if (p.checker.kind == EdgeCheckerSpec::Kind::Step && p.checker.step < kMinStep)
           throw ApiError("checker: D must be at least 0.001 in the lab");
       } else if (key == "seed") {
         if (!v.is_number_integer() || v.get<long long>() < 0) throw ApiError("seed: an integer >= 0");
@@ -119,7 +128,7 @@ PrmParams prm_params_from_json(const nlohmann::json& j, PrmParams p, const Space
       throw ApiError(key + ": " + e.what());
     }
   }
-  if (p.neighbors.kind == NeighborRule::Kind::Radius && p.neighbors.radius > max_radius(space, p.samples)) {
+  if (over_budget(p, space)) {
     char text[200];
     std::snprintf(text, sizeof text,
                   "neighbors: radius:%g with %d samples means about %.0f candidate pairs; the lab checks at most "

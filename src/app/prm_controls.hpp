@@ -9,9 +9,9 @@ namespace csl::app {
 
 /// The most candidate pairs a roadmap in the lab may be expected to check: as many as k = 50
 /// with the most samples. A radius rule's pairs grow with n^2 (radius 0.3 with 20000 samples:
-/// 25 million pairs, minutes and gigabytes), so its r is kept where this bound allows.
+/// 57 million pairs, minutes and gigabytes), so its r is kept where this bound allows.
 inline constexpr double kMaxCandidatePairs = 1e6;
-/// The largest r the lab allows with `samples` samples in `space`.
+/// The largest r the lab allows with `samples` samples in `space` (infinite: any r).
 double max_radius(const Space& space, int samples);
 /// Lowers a radius rule's r to max_radius() (after n or the scene changed): true if it did.
 bool keep_within_budget(PrmParams& params, const Space& space);

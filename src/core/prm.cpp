@@ -88,9 +88,10 @@ double expected_candidate_pairs(const Space& space, const NeighborRule& rule, in
 }
 
 double radius_for_pairs(const Space& space, int samples, double pairs) {
+  // With every pair within `pairs`, no radius reaches it.
+  if (pairs >= vertex_pairs(samples)) return std::numeric_limits<double>::infinity();
   const int d = space.dim();
-  const double ball = std::min(1.0, pairs / vertex_pairs(samples)) * space.volume();
-  return std::pow(ball / unit_ball_volume(d), 1.0 / d);
+  return std::pow(pairs / vertex_pairs(samples) * space.volume() / unit_ball_volume(d), 1.0 / d);
 }
 
 const char* phase_name(PrmPhase p) {

@@ -52,7 +52,8 @@ inline constexpr int kMaxPrmSamples = 1000000;
 /// r with probability mu(B_r) / mu(Q), less where a ball sticks out of Q. A radius makes the work
 /// grow with n^2, so a UI checks this before it lets a run take minutes and gigabytes.
 double expected_candidate_pairs(const Space& space, const NeighborRule& rule, int samples);
-/// The radius whose expected_candidate_pairs() for `samples` is `pairs` (inverse of the above).
+/// The radius whose expected_candidate_pairs() for `samples` is `pairs` (inverse of the above);
+/// infinite when even every pair is no more than `pairs`.
 double radius_for_pairs(const Space& space, int samples, double pairs);
 
 /// The seed a local connector gets for vertices a < b: splitmix64 of the PRM seed and the pair.

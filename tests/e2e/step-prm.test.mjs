@@ -117,6 +117,10 @@ test('Step PRM: parameters that would check too many pairs are refused or brough
                  'most 1000000 (r at most 0.03989 with this n)');
     assert.match(await setParams({ samples: 20000 }), /radius:0\.1 with 20000 samples/, 'n alone can be too many');
     assert.equal(await setParams({ checker: 'step:0.0001' }), 'checker: D must be at least 0.001 in the lab');
+    // Few samples: every pair is within the bound, so any r goes; and D = 0.001 itself is allowed.
+    assert.equal(await setParams({ samples: 500, neighbors: 'radius:5', checker: 'step:0.001' }), null);
+    assert.equal((await api(page, 'state')).params.neighbors, 'radius:5');
+    assert.equal(await setParams({ samples: 2000, neighbors: 'radius:0.1', checker: 'bisection' }), null);
     const same = await api(page, 'state');
     assert.deepEqual(same.params, before.params, 'refusals change nothing');
     assert.equal(same.roadmap_hash, before.roadmap_hash);
