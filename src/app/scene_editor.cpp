@@ -297,6 +297,11 @@ bool SceneEditor::continue_drag(WorkspaceView& view, Scene& scene, LabContext& c
 
 bool SceneEditor::edit(WorkspaceView& view, Scene& scene, LabContext& ctx, const Options& options) {
   if (!options.editable) return false;
+  // A drag lives in consecutive frames of its view. If the view was off screen (another lesson
+  // or tab), the drag ended there: it must not jump to wherever the mouse is on return.
+  const int frame = ImGui::GetFrameCount();
+  if (drag_ != Drag::None && last_frame_ < frame - 1) end_drag(scene);
+  last_frame_ = frame;
   bool changed = false;
   // Keys work wherever the mouse is (the lesson on screen owns them); text fields keep theirs.
   changed |= handle_keys(scene, ctx);
@@ -402,7 +407,8 @@ bool SceneEditor::toolbar(Scene& scene, LabContext&) {
   ImGui::EndDisabled();
   ImGui::SameLine();
   ImGui::BeginDisabled(selected_ < 0);
-  if (ImGui::Button("Delete") && selected_ >= 0 && selected_ < static_cast<int>(scene.obstacles.size())) {
+  if (ImGui::Button("Delete") && selected_ >= 0 && selected_ < static_cast<int>(scene.obstacles.size()) &&
+      drag_ == Drag::None) {
     record(scene);
     scene.obstacles.erase(scene.obstacles.begin() + selected_);
     selected_ = -1;

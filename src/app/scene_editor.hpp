@@ -69,6 +69,7 @@ class SceneEditor {
   Drag drag_ = Drag::None;
   int target_ = -1;            // the obstacle being dragged (the selection may change meanwhile)
   int handle_ = -1;            // vertex or wall end being dragged
+  int last_frame_ = -1;        // the ImGui frame of the last edit(): a drag spans consecutive ones
   Vec2 grab_{0, 0};            // where the drag started (world)
   std::optional<Scene> before_drag_;
   std::vector<Vec2> polygon_;  // vertices of the polygon being built

@@ -4,7 +4,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { startServer, launchBrowser, collectErrors, openLab, worldToPage, drag, click, keys, waitFrames,
-         screenshot, inspectPng } from './lib/harness.mjs';
+         screenshot, inspectPng, api } from './lib/harness.mjs';
 
 test('dragging on the workspace canvas creates a disk obstacle', async () => {
   const { server, url } = await startServer();
@@ -146,6 +146,19 @@ test('undo or a new scene in the middle of a drag ends the drag and undoes it', 
     await keys(page, 'v');
     await undoKeys('z');
     assert.deepEqual((await scene()).obstacles, base.obstacles);
+
+    // A drag whose lesson goes off screen ends there: on return it does not follow the mouse.
+    await hold(centre, moved);
+    await api(page, 'select_lesson', { id: 'collision' });
+    await waitFrames(page, 2);
+    await api(page, 'select_lesson', { id: 'step-prm' });
+    await waitFrames(page, 2);
+    await page.mouse.move(rimOut.x, rimOut.y, { steps: 4 });
+    await release();
+    const kept = (await scene()).obstacles[1];
+    assert.ok(Math.abs(kept.center[1] - 0.3) < 0.02 && kept.radius === 0.1, `ended where it was: ${JSON.stringify(kept)}`);
+    await undoKeys('z');
+    assert.deepEqual((await scene()).obstacles, base.obstacles, 'and it is one undo step');
 
     // A new scene through the API while a drag is in progress replaces the scene; the drag ends.
     await hold(centre, moved);
