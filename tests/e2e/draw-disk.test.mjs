@@ -4,7 +4,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { startServer, launchBrowser, collectErrors, openLab, worldToPage, drag, click, keys, waitFrames,
-         screenshot, inspectPng, api } from './lib/harness.mjs';
+         screenshot, inspectPng, api, refusal } from './lib/harness.mjs';
 
 test('dragging on the workspace canvas creates a disk obstacle', async () => {
   const { server, url } = await startServer();
@@ -41,11 +41,7 @@ test('dragging on the workspace canvas creates a disk obstacle', async () => {
     assert.match((await page.evaluate(() => window.cspacelab.status())).notice, /Drag/);
 
     // Bad input through the API is refused and loses nothing.
-    const refused = await page.evaluate(() => {
-      try { window.cspacelab.setScene({ version: 1, obstacles: [{ type: 'disk', center: [0, 0], radius: -1 }] }); }
-      catch (e) { return e.message; }
-      return null;
-    });
+    const refused = await refusal(page, 'setScene', { version: 1, obstacles: [{ type: 'disk', center: [0, 0], radius: -1 }] });
     assert.equal(refused, 'obstacles[0].radius: must be >= 0');
     assert.equal((await page.evaluate(() => window.cspacelab.getScene())).obstacles.length, 1);
 

@@ -3,7 +3,7 @@
 // importable afterwards. The seed is printed: CSPACELAB_MONKEY_SEED=... replays a run.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { startServer, launchBrowser, collectErrors, openLab, api, waitFrames, screenshot } from './lib/harness.mjs';
+import { startServer, launchBrowser, collectErrors, openLab, api, waitFrames, screenshot, refusal } from './lib/harness.mjs';
 
 const SEED = Number(process.env.CSPACELAB_MONKEY_SEED || 20261121);
 const EVENTS_PER_LESSON = Number(process.env.CSPACELAB_MONKEY_EVENTS || 400);
@@ -113,11 +113,7 @@ test('limits in the app: the most samples work, one more is refused and changes 
     const s = await api(page, 'state');
     assert.equal(s.params.samples, 20000);
     assert.equal(s.done, true);
-    const refused = await page.evaluate(() => {
-      try { window.cspacelab.setParams({ samples: 20001 }); } catch (e) { return e.message; }
-      return null;
-    });
-    assert.equal(refused, 'samples: an integer in [0, 20000]');
+    assert.equal(await refusal(page, 'setParams', { samples: 20001 }), 'samples: an integer in [0, 20000]');
     assert.equal((await api(page, 'state')).roadmap_hash, s.roadmap_hash, 'nothing changed');
     assert.deepEqual(errors, []);
   } finally {

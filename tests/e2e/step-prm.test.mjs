@@ -4,7 +4,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { startServer, launchBrowser, collectErrors, openLab, worldToPage, drag, click, keys, waitFrames,
-         screenshot, inspectPng, api, cli, tempJson } from './lib/harness.mjs';
+         screenshot, inspectPng, api, cli, tempJson, refusal } from './lib/harness.mjs';
 
 test('Step PRM: edit with the mouse, step, step back, run, and match the CLI', async () => {
   const { server, url } = await startServer();
@@ -105,10 +105,7 @@ test('Step PRM: parameters that would check too many pairs are refused or brough
     const errors = collectErrors(page);
     await openLab(page, url);
     await api(page, 'select_lesson', { id: 'step-prm' });
-    const setParams = (params) => page.evaluate((p) => {
-      try { window.cspacelab.setParams(p); } catch (e) { return e.message; }
-      return null;
-    }, params);
+    const setParams = (params) => refusal(page, 'setParams', params);
     assert.equal(await setParams({ samples: 2000, neighbors: 'radius:0.1' }), null);
     const before = await api(page, 'state');
     // pi 0.3^2 of the 20002 * 20001 / 2 pairs: 56557150.

@@ -94,6 +94,17 @@ export async function keys(page, ...names) {
   }
 }
 
+/**
+ * Calls window.cspacelab[method](...args) in the page and returns the message it was refused
+ * with, or null if it was taken: refusal(page, 'setParams', {samples: 20001}).
+ */
+export async function refusal(page, method, ...args) {
+  return page.evaluate(([m, a]) => {
+    try { window.cspacelab[m](...a); } catch (e) { return e.message; }
+    return null;
+  }, [method, args]);
+}
+
 /** Calls the app's API in the page: api(page, 'state', {roadmap: true}). */
 export async function api(page, cmd, args = {}) {
   return page.evaluate(([c, a]) => window.cspacelab.call(c, a), [cmd, args]);
