@@ -18,6 +18,11 @@ constexpr double kPointsPerCell = 2.0;
 // Uniform points at 2 per cell put at most ~10 in one cell for n up to 10^6.
 constexpr int kCrowdedCell = 64;
 
+// The first `count` entries of `row` into `out` (the rest of out's row keeps its padding).
+void round_into(const std::vector<Neighbor>& row, std::size_t count, NearNeighbor* out) {
+  for (std::size_t i = 0; i < count; ++i) out[i] = {row[i].index, static_cast<float>(row[i].squared_distance)};
+}
+
 // Whether a cell or region at least sqrt(gap2) from the query can be skipped.
 inline bool beyond(const KBest& best, double gap2) { return gap2 > best.bound() * kPruneSafety; }
 
@@ -67,12 +72,15 @@ class Grid {
   /// the grid would then compare most pairs in it, and a k-d tree is the better index.
   bool crowded() const { return max_per_cell_ > kCrowdedCell; }
 
-  void all_k_nearest(int k, std::vector<Neighbor>& out) const {
+  void all_k_nearest(int k, std::vector<NearNeighbor>& out) const {
+    // The search sorts in a row of its own (it stays in cache), then rounds it into `out`.
+    std::vector<Neighbor> row(static_cast<std::size_t>(k));
     // Queried in cell order, so the cells around consecutive queries stay in cache.
     for (std::size_t at = 0; at < ids_.size(); ++at) {
       const int id = ids_[at];
-      KBest best{&out[static_cast<std::size_t>(id) * static_cast<std::size_t>(k)], static_cast<std::size_t>(k), id};
+      KBest best{row.data(), row.size(), id};
       query(xy_[2 * at], xy_[2 * at + 1], best);
+      round_into(row, best.count, &out[static_cast<std::size_t>(id) * row.size()]);
     }
   }
 
@@ -191,22 +199,22 @@ Axis axis_over(double lo, double hi, int cells) {
   return a;
 }
 
-void with_tree(const Space& space, const std::vector<Config>& points, int k, std::vector<Neighbor>& out) {
+void with_tree(const Space& space, const std::vector<Config>& points, int k, std::vector<NearNeighbor>& out) {
   NeighborIndex index(space);
   index.build(points);
   std::vector<Neighbor> row;
   // In the tree's leaf order (cache-friendly); the answers do not depend on the order.
   for (int v : index.leaf_order()) {
     index.k_nearest(points[static_cast<std::size_t>(v)], k, v, row);
-    std::copy(row.begin(), row.end(), out.begin() + static_cast<std::ptrdiff_t>(v) * k);
+    round_into(row, row.size(), &out[static_cast<std::size_t>(v) * static_cast<std::size_t>(k)]);
   }
 }
 
 }  // namespace
 
-void all_k_nearest(const Space& space, const std::vector<Config>& points, int k, std::vector<Neighbor>& out) {
+void all_k_nearest(const Space& space, const std::vector<Config>& points, int k, std::vector<NearNeighbor>& out) {
   const std::size_t n = points.size();
-  out.assign(n * static_cast<std::size_t>(std::max(k, 0)), Neighbor{-1, 0.0});
+  out.assign(n * static_cast<std::size_t>(std::max(k, 0)), NearNeighbor{-1, 0.0f});
   if (k <= 0 || n == 0) return;
   bool plain = space.dim() == 2, torus = space.dim() == 2;
   for (int a = 0; a < space.dim(); ++a) {

@@ -12,9 +12,17 @@
 
 namespace csl {
 
+/// An entry of all_k_nearest's rows: half a Neighbor (8 bytes), since PRM keeps k of them for
+/// every vertex while it connects. The distance is rounded to float: enough to compare rows
+/// (with a margin); whoever needs the exact one measures the pair again.
+struct NearNeighbor {
+  int index;
+  float squared_distance;
+};
+
 /// Row i (k entries, at out[i * k ..]) holds the k points nearest to points[i] among the others,
 /// nearest first, ties by smaller index: NeighborIndex::k_nearest(points[i], k, i) for every i.
 /// Rows of fewer (fewer than k + 1 points) are padded with {-1, 0}.
-void all_k_nearest(const Space& space, const std::vector<Config>& points, int k, std::vector<Neighbor>& out);
+void all_k_nearest(const Space& space, const std::vector<Config>& points, int k, std::vector<NearNeighbor>& out);
 
 }  // namespace csl

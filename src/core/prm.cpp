@@ -1,7 +1,6 @@
 #include "core/prm.hpp"
 
 #include "core/analysis.hpp"
-#include "core/nearest_grid.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -106,6 +105,11 @@ const char* event_kind_name(PrmEvent::Kind k) {
   return kNames[static_cast<int>(k)];
 }
 
+const std::vector<Config>& Roadmap::waypoints(const RoadmapEdge& e) const {
+  static const std::vector<Config> kStraight;
+  return e.path < 0 ? kStraight : paths[static_cast<std::size_t>(e.path)];
+}
+
 std::uint64_t roadmap_hash(const Roadmap& r) {
   std::uint64_t h = 0xcbf29ce484222325ull;  // FNV-1a, 64 bit
   const auto mix = [&h](std::uint64_t word) {
@@ -128,9 +132,10 @@ std::uint64_t roadmap_hash(const Roadmap& r) {
     mix(static_cast<std::uint64_t>(e.a));
     mix(static_cast<std::uint64_t>(e.b));
     mix(e.alive ? 1u : 0u);
-    if (e.waypoints.empty()) continue;  // straight lines: the hash of before connectors existed
-    mix(e.waypoints.size());
-    for (const Config& w : e.waypoints) mix_config(w);
+    const std::vector<Config>& waypoints = r.waypoints(e);
+    if (waypoints.empty()) continue;  // straight lines: the hash of before connectors existed
+    mix(waypoints.size());
+    for (const Config& w : waypoints) mix_config(w);
   }
   return h;
 }
@@ -172,6 +177,7 @@ void Prm::reset() {
   samples_drawn_ = 0;
   k_ = 0;
   knn_.clear();
+  last_.clear();
   seen_.clear();
   p_ = -1;
   candidates_.clear();
@@ -314,26 +320,32 @@ void Prm::begin_connecting() {
   // Being among the k nearest is not symmetric: the pair (p, q), q < p, is skipped when p is
   // connected if q had p among its own k nearest, i.e. if the pair was checked from q's side.
   // Flagged here once for all vertices; the rest are the candidates, at most one edge each.
-  // q's row is sorted: p is in it if p is nearer than its last entry or is that entry. The
-  // distance q measured to p may differ from p's to q in the last bit (angles wrap), so a
-  // comparison too close to call looks through q's row instead.
+  // q's row is sorted: p is in it if p is nearer than its last entry or is that entry. The rows
+  // hold distances rounded to float, and the distance q measured to p may differ from p's to q
+  // in the last bit (angles wrap), so a comparison too close to call (or with a distance too
+  // small or large for a float's full precision) looks through q's row instead.
   seen_.assign(knn_.size(), 0);
   std::size_t pairs = 0;
   const auto uk = static_cast<std::size_t>(k_);
+  // Each row's last entry, side by side: the test below reads the rows of random earlier
+  // vertices, and this array (8 bytes a vertex) stays in cache where the rows do not.
+  last_.resize(static_cast<std::size_t>(n));
+  for (std::size_t v = 0; v < last_.size() && uk > 0; ++v) last_[v] = knn_[v * uk + uk - 1];
+  constexpr float kBelow = 1.0f - 1e-6f, kAbove = 1.0f + 1e-6f;  // float rounding is 6e-8
   for (int p = 0; p < n; ++p) {
     const std::size_t row = static_cast<std::size_t>(p) * uk;
     for (std::size_t i = 0; i < uk && knn_[row + i].index >= 0; ++i) {
       const int other = knn_[row + i].index;
       bool seen = false;
       if (other < p) {
-        const Neighbor* theirs = &knn_[static_cast<std::size_t>(other) * uk];
-        const Neighbor& last = theirs[uk - 1];
-        const double d2 = knn_[row + i].squared_distance;
+        const NearNeighbor* theirs = &knn_[static_cast<std::size_t>(other) * uk];
+        const NearNeighbor& last = last_[static_cast<std::size_t>(other)];
+        const float d2 = knn_[row + i].squared_distance;
         if (last.index < 0 || last.index == p) {
           seen = true;  // q's row holds every other vertex, or ends with p
-        } else if (d2 < last.squared_distance * (1.0 - 1e-12)) {
+        } else if (std::isnormal(last.squared_distance) && d2 < last.squared_distance * kBelow) {
           seen = true;
-        } else if (d2 > last.squared_distance * (1.0 + 1e-12)) {
+        } else if (std::isnormal(last.squared_distance) && d2 > last.squared_distance * kAbove) {
           seen = false;
         } else {
           for (std::size_t j = 0; j < uk && !seen; ++j) seen = theirs[j].index == p;
@@ -362,18 +374,22 @@ void Prm::find_candidates() {
   } else {
     // The k nearest but those already checked from the other side (see begin_connecting()).
     const std::size_t row = static_cast<std::size_t>(p_) * static_cast<std::size_t>(k_);
-    const Neighbor* mine = &knn_[row];
+    const NearNeighbor* mine = &knn_[row];
     const unsigned char* seen = &seen_[row];
     for (int i = 0; i < k_ && mine[i].index >= 0; ++i)
-      if (!seen[i]) candidates_.push_back(mine[i]);
+      if (!seen[i]) candidates_.push_back({mine[i].index, 0.0});
   }
-  // The candidates' coordinates are read by the next steps, in the order of the samples,
-  // not of space: ask for them now.
+  // The candidates' coordinates are read now and by the next steps, in the order of the
+  // samples, not of space: ask for them all first.
   for (const Neighbor& nb : candidates_) {
     const Config* v = &roadmap_.vertices[static_cast<std::size_t>(nb.index)];
     prefetch(v);  // the first coordinates, and the size at the end (another cache line, maybe)
     prefetch(reinterpret_cast<const char*>(v) + sizeof(Config) - 1);
   }
+  // The exact distance (the rows keep a float): the same formula as the index's, so the same bits.
+  if (params_.neighbors.kind != NeighborRule::Kind::Radius)
+    for (Neighbor& nb : candidates_)
+      nb.squared_distance = world_->space().squared_distance(q, roadmap_.vertices[static_cast<std::size_t>(nb.index)]);
   if constexpr (kEmit) {
     event_.kind = PrmEvent::Kind::Neighbors;
     event_.vertex = p_;
@@ -441,8 +457,13 @@ void Prm::connect_candidate(int q) {
   ++edge_checks_;
   evaluations_ += path.evaluations;
   if (path.connected) {
-    if (p_ > q) std::reverse(path.waypoints.begin(), path.waypoints.end());  // stored from a to b
-    add_edge(q, {a, b, path.length, true, std::move(path.waypoints)});
+    int stored = -1;
+    if (!path.waypoints.empty()) {
+      if (p_ > q) std::reverse(path.waypoints.begin(), path.waypoints.end());  // stored from a to b
+      stored = static_cast<int>(roadmap_.paths.size());
+      roadmap_.paths.push_back(std::move(path.waypoints));
+    }
+    add_edge(q, {a, b, path.length, true, stored});
   }
   if constexpr (kEmit) {
     PrmEvent& e = event_;
@@ -455,8 +476,9 @@ void Prm::connect_candidate(int q) {
 
 bool Prm::verify_edge(const RoadmapEdge& r, double& collision_t) {
   const Config* from = &roadmap_.vertices[static_cast<std::size_t>(r.a)];
-  for (std::size_t i = 0; i <= r.waypoints.size(); ++i) {
-    const Config& to = i < r.waypoints.size() ? r.waypoints[i] : roadmap_.vertices[static_cast<std::size_t>(r.b)];
+  const std::vector<Config>& waypoints = roadmap_.waypoints(r);
+  for (std::size_t i = 0; i <= waypoints.size(); ++i) {
+    const Config& to = i < waypoints.size() ? waypoints[i] : roadmap_.vertices[static_cast<std::size_t>(r.b)];
     exact_.reset(*from, to);
     while (!exact_.done()) exact_.step();
     if (exact_.verdict() != Verdict::Free) {
@@ -475,10 +497,11 @@ std::vector<Config> Prm::path_configurations() const {
   for (std::size_t k = 0; k < path_edges_.size(); ++k) {
     const RoadmapEdge& r = roadmap_.edges[static_cast<std::size_t>(path_edges_[k])];
     const bool forward = r.a == path_[k];  // the waypoints run from a to b
+    const std::vector<Config>& waypoints = roadmap_.waypoints(r);
     if (forward)
-      out.insert(out.end(), r.waypoints.begin(), r.waypoints.end());
+      out.insert(out.end(), waypoints.begin(), waypoints.end());
     else
-      out.insert(out.end(), r.waypoints.rbegin(), r.waypoints.rend());
+      out.insert(out.end(), waypoints.rbegin(), waypoints.rend());
     out.push_back(roadmap_.vertices[static_cast<std::size_t>(path_[k + 1])]);
   }
   return out;

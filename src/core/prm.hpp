@@ -20,6 +20,7 @@
 #include "core/graph.hpp"
 #include "core/local_connector.hpp"
 #include "core/nearest.hpp"
+#include "core/nearest_grid.hpp"
 
 namespace csl {
 
@@ -93,12 +94,13 @@ struct PrmEvent {
 };
 const char* event_kind_name(PrmEvent::Kind k);
 
+/// 24 bytes: roadmaps hold tens of thousands, nearly all straight lines, so a connector's
+/// waypoints live aside in Roadmap::paths.
 struct RoadmapEdge {
   int a, b;  ///< vertex indices, a < b
   double length;  ///< in the space's metric (of the whole polyline, for a connector's path)
   bool alive = true;  ///< false once removed by the path re-check
-  /// A local connector's path from a to b, endpoints excluded; empty: the straight line.
-  std::vector<Config> waypoints = {};
+  int path = -1;  ///< index in Roadmap::paths of its waypoints; -1: the straight line
 };
 
 struct Roadmap {
@@ -107,6 +109,10 @@ struct Roadmap {
   /// needed it for (see EdgeChecker::check_known_free); NaN where not computed.
   std::vector<double> clearance;
   std::vector<RoadmapEdge> edges;  ///< E in the order they were added
+  /// Local connectors' paths from a to b, endpoints excluded (never empty), in the order added.
+  std::vector<std::vector<Config>> paths;
+  /// The waypoints of edge e from e.a to e.b; empty for a straight line.
+  const std::vector<Config>& waypoints(const RoadmapEdge& e) const;
 };
 
 /// FNV-1a hash of the roadmap: vertex coordinates (bits), then edges (a, b, alive, and for an
@@ -196,10 +202,11 @@ class Prm {
   UnionFind components_;
   int samples_drawn_ = 0;
   int k_ = 0;                     // neighbours per vertex for the k rules
-  std::vector<Neighbor> knn_;     // the k_ nearest of every vertex (flat; index -1 pads short rows)
+  std::vector<NearNeighbor> knn_;  // the k_ nearest of every vertex (flat; index -1 pads short rows)
   // Per entry of knn_: 1 if the pair was already a candidate of the smaller vertex (computed
   // once in begin_connecting(), which also counts the candidates to size the edge list).
   std::vector<unsigned char> seen_;
+  std::vector<NearNeighbor> last_;  // the last entry of every row of knn_ (begin_connecting())
   int p_ = -1;                    // vertex being connected
   std::vector<Neighbor> candidates_;
   std::size_t next_candidate_ = 0;

@@ -75,11 +75,12 @@ TEST_CASE("PRM with the potential connector: verified paths through the waypoint
   int with_waypoints = 0, detours = 0;
   for (const csl::RoadmapEdge& e : prm.roadmap().edges) {
     std::vector<Config> all{prm.roadmap().vertices[static_cast<std::size_t>(e.a)]};
-    all.insert(all.end(), e.waypoints.begin(), e.waypoints.end());
+    const std::vector<Config>& waypoints = prm.roadmap().waypoints(e);
+    all.insert(all.end(), waypoints.begin(), waypoints.end());
     all.push_back(prm.roadmap().vertices[static_cast<std::size_t>(e.b)]);
     require_free_pieces(world, all, 0.02 + 1e-12);  // steps of 0.01, the last piece up to the tolerance
-    CHECK(e.length == doctest::Approx(csl::polyline_length(world.space(), all.front(), e.waypoints, all.back())));
-    with_waypoints += !e.waypoints.empty();
+    CHECK(e.length == doctest::Approx(csl::polyline_length(world.space(), all.front(), waypoints, all.back())));
+    with_waypoints += !waypoints.empty();
     detours += csl::check_edge(world, kBisection, all.front(), all.back()).collision;
   }
   CHECK(with_waypoints > 100);
@@ -131,7 +132,7 @@ TEST_CASE("a custom connector plugs in; the straight line stays the default") {
   // Hashes: the waypoints count only when there are some.
   csl::Roadmap r = prm.roadmap();
   const auto with = csl::roadmap_hash(r);
-  r.edges[0].waypoints.clear();
+  r.edges[0].path = -1;
   CHECK(csl::roadmap_hash(r) != with);
   csl::Prm straight(empty, config({0.1, 0.1}), config({0.9, 0.5}), params(0, 1, nullptr));
   straight.run();

@@ -11,16 +11,16 @@ using csl::Space;
 namespace {
 
 void require_brute_force(const Space& space, const std::vector<Config>& points, int k) {
-  std::vector<csl::Neighbor> got;
+  std::vector<csl::NearNeighbor> got;
   csl::all_k_nearest(space, points, k, got);
   REQUIRE(got.size() == points.size() * static_cast<std::size_t>(k));
   for (std::size_t i = 0; i < points.size(); ++i) {
     const auto want = csl::brute_force_k_nearest(space, points, points[i], k, static_cast<int>(i));
-    const csl::Neighbor* row = &got[i * static_cast<std::size_t>(k)];
+    const csl::NearNeighbor* row = &got[i * static_cast<std::size_t>(k)];
     for (std::size_t j = 0; j < static_cast<std::size_t>(k); ++j) {
       if (j < want.size()) {
         REQUIRE(row[j].index == want[j].index);
-        REQUIRE(row[j].squared_distance == want[j].squared_distance);
+        REQUIRE(row[j].squared_distance == static_cast<float>(want[j].squared_distance));
       } else {
         REQUIRE(row[j].index == -1);  // fewer points than k: padded
       }
