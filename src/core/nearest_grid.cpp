@@ -253,4 +253,43 @@ void all_k_nearest(const Space& space, const std::vector<Config>& points, int k,
   grid.all_k_nearest(k, out);
 }
 
+std::size_t mark_pairs_seen(const std::vector<NearNeighbor>& rows, int k, std::vector<unsigned char>& seen) {
+  seen.assign(rows.size(), 0);
+  if (k <= 0) return 0;
+  const auto uk = static_cast<std::size_t>(k);
+  const std::size_t n = rows.size() / uk;
+  // q's row is sorted: p is in it if p is nearer than its last entry or is that entry. The rows
+  // hold distances rounded to float, and the distance q measured to p may differ from p's to q
+  // in the last bit (angles wrap), so a comparison too close to call (or with a distance too
+  // small or large for a float's full precision) looks through q's row instead.
+  // Each row's last entry, side by side: the test reads the rows of random earlier points, and
+  // this array (8 bytes a point) stays in cache where the rows do not.
+  std::vector<NearNeighbor> last(n);
+  for (std::size_t v = 0; v < n; ++v) last[v] = rows[v * uk + uk - 1];
+  constexpr float kBelow = 1.0f - 1e-6f, kAbove = 1.0f + 1e-6f;  // float rounding is 6e-8
+  std::size_t pairs = 0;
+  for (std::size_t p = 0; p < n; ++p) {
+    const std::size_t row = p * uk;
+    for (std::size_t i = 0; i < uk && rows[row + i].index >= 0; ++i) {
+      const auto q = static_cast<std::size_t>(rows[row + i].index);
+      bool in_theirs = false;
+      if (q < p) {
+        const float d2 = rows[row + i].squared_distance, theirs = last[q].squared_distance;
+        if (last[q].index < 0 || static_cast<std::size_t>(last[q].index) == p) {
+          in_theirs = true;  // q's row holds every other point, or ends with p
+        } else if (std::isnormal(theirs) && d2 < theirs * kBelow) {
+          in_theirs = true;
+        } else if (std::isnormal(theirs) && d2 > theirs * kAbove) {
+          in_theirs = false;
+        } else {
+          for (std::size_t j = 0; j < uk && !in_theirs; ++j) in_theirs = rows[q * uk + j].index == static_cast<int>(p);
+        }
+      }
+      seen[row + i] = in_theirs ? 1 : 0;
+      pairs += in_theirs ? 0 : 1;
+    }
+  }
+  return pairs;
+}
+
 }  // namespace csl

@@ -25,4 +25,10 @@ struct NearNeighbor {
 /// Rows of fewer (fewer than k + 1 points) are padded with {-1, 0}.
 void all_k_nearest(const Space& space, const std::vector<Config>& points, int k, std::vector<NearNeighbor>& out);
 
+/// For rows from all_k_nearest (k per point): seen[i] = 1 where row p's entry i is a point q < p
+/// whose own row holds p, i.e. the pair was proposed from q's side already; 0 elsewhere (and on
+/// padding). Returns the number of entries left at 0 that are not padding: every pair that is
+/// in some row, once. (PRM checks each close pair once: these are its candidates.)
+std::size_t mark_pairs_seen(const std::vector<NearNeighbor>& rows, int k, std::vector<unsigned char>& seen);
+
 }  // namespace csl

@@ -177,7 +177,6 @@ void Prm::reset() {
   samples_drawn_ = 0;
   k_ = 0;
   knn_.clear();
-  last_.clear();
   seen_.clear();
   p_ = -1;
   candidates_.clear();
@@ -320,41 +319,7 @@ void Prm::begin_connecting() {
   // Being among the k nearest is not symmetric: the pair (p, q), q < p, is skipped when p is
   // connected if q had p among its own k nearest, i.e. if the pair was checked from q's side.
   // Flagged here once for all vertices; the rest are the candidates, at most one edge each.
-  // q's row is sorted: p is in it if p is nearer than its last entry or is that entry. The rows
-  // hold distances rounded to float, and the distance q measured to p may differ from p's to q
-  // in the last bit (angles wrap), so a comparison too close to call (or with a distance too
-  // small or large for a float's full precision) looks through q's row instead.
-  seen_.assign(knn_.size(), 0);
-  std::size_t pairs = 0;
-  const auto uk = static_cast<std::size_t>(k_);
-  // Each row's last entry, side by side: the test below reads the rows of random earlier
-  // vertices, and this array (8 bytes a vertex) stays in cache where the rows do not.
-  last_.resize(static_cast<std::size_t>(n));
-  for (std::size_t v = 0; v < last_.size() && uk > 0; ++v) last_[v] = knn_[v * uk + uk - 1];
-  constexpr float kBelow = 1.0f - 1e-6f, kAbove = 1.0f + 1e-6f;  // float rounding is 6e-8
-  for (int p = 0; p < n; ++p) {
-    const std::size_t row = static_cast<std::size_t>(p) * uk;
-    for (std::size_t i = 0; i < uk && knn_[row + i].index >= 0; ++i) {
-      const int other = knn_[row + i].index;
-      bool seen = false;
-      if (other < p) {
-        const NearNeighbor* theirs = &knn_[static_cast<std::size_t>(other) * uk];
-        const NearNeighbor& last = last_[static_cast<std::size_t>(other)];
-        const float d2 = knn_[row + i].squared_distance;
-        if (last.index < 0 || last.index == p) {
-          seen = true;  // q's row holds every other vertex, or ends with p
-        } else if (std::isnormal(last.squared_distance) && d2 < last.squared_distance * kBelow) {
-          seen = true;
-        } else if (std::isnormal(last.squared_distance) && d2 > last.squared_distance * kAbove) {
-          seen = false;
-        } else {
-          for (std::size_t j = 0; j < uk && !seen; ++j) seen = theirs[j].index == p;
-        }
-      }
-      seen_[row + i] = seen ? 1 : 0;
-      pairs += seen ? 0 : 1;
-    }
-  }
+  const std::size_t pairs = mark_pairs_seen(knn_, k_, seen_);
   roadmap_.edges.reserve(roadmap_.edges.size() + pairs);
   p_ = -1;
   candidates_.clear();

@@ -206,7 +206,6 @@ class Prm {
   // Per entry of knn_: 1 if the pair was already a candidate of the smaller vertex (computed
   // once in begin_connecting(), which also counts the candidates to size the edge list).
   std::vector<unsigned char> seen_;
-  std::vector<NearNeighbor> last_;  // the last entry of every row of knn_ (begin_connecting())
   int p_ = -1;                    // vertex being connected
   std::vector<Neighbor> candidates_;
   std::size_t next_candidate_ = 0;

@@ -1,7 +1,10 @@
 // all_k_nearest (the grid for R^2 and T^2, the k-d tree elsewhere) answers, for every point,
 // exactly what brute force answers, in the same order, on the point sets a grid finds hard:
-// clusters, duplicates, a line, a thin box, points on the torus's seams, tiny sets.
+// clusters, duplicates, a line, a thin box, points on the torus's seams, tiny sets; and
+// mark_pairs_seen picks each pair of its rows once.
 #include <doctest/doctest.h>
+
+#include <set>
 
 #include "core/nearest_grid.hpp"
 
@@ -9,6 +12,33 @@ using csl::Config;
 using csl::Space;
 
 namespace {
+
+// mark_pairs_seen against its definition: an entry q < p of row p is seen iff q's row holds p;
+// the unseen entries are the distinct pairs of all rows, once each. (The point sets below are
+// full of exact ties, where the float comparison cannot decide and the rows are searched.)
+void require_pairs_marked(const std::vector<csl::NearNeighbor>& rows, int k) {
+  std::vector<unsigned char> seen;
+  const std::size_t pairs = csl::mark_pairs_seen(rows, k, seen);
+  REQUIRE(seen.size() == rows.size());
+  const auto uk = static_cast<std::size_t>(k);
+  std::set<std::pair<int, int>> all, unseen;
+  for (std::size_t p = 0; p < rows.size() / uk; ++p)
+    for (std::size_t i = 0; i < uk; ++i) {
+      const int q = rows[p * uk + i].index;
+      if (q < 0) {
+        REQUIRE(seen[p * uk + i] == 0);
+        continue;
+      }
+      bool in_theirs = false;
+      for (std::size_t j = 0; j < uk; ++j) in_theirs = in_theirs || rows[static_cast<std::size_t>(q) * uk + j].index == static_cast<int>(p);
+      REQUIRE(seen[p * uk + i] == ((static_cast<std::size_t>(q) < p && in_theirs) ? 1 : 0));
+      const std::pair<int, int> pair{std::min<int>(q, static_cast<int>(p)), std::max<int>(q, static_cast<int>(p))};
+      all.insert(pair);
+      if (!seen[p * uk + i]) REQUIRE(unseen.insert(pair).second);
+    }
+  CHECK(unseen == all);
+  CHECK(pairs == all.size());
+}
 
 void require_brute_force(const Space& space, const std::vector<Config>& points, int k) {
   std::vector<csl::NearNeighbor> got;
@@ -26,6 +56,7 @@ void require_brute_force(const Space& space, const std::vector<Config>& points, 
       }
     }
   }
+  require_pairs_marked(got, k);
 }
 
 std::vector<Config> uniform(const Space& space, int n, std::uint64_t seed) {
@@ -76,6 +107,10 @@ TEST_CASE("all_k_nearest: degenerate boxes (one point, a line, a thin strip, all
   require_brute_force(box, line, 10);
   require_brute_force(box, strip, 10);
   require_brute_force(box, same, 10);
+  // Distances whose squares are below a float's normal range (1e-44): the rows compare by search.
+  std::vector<Config> tiny;
+  for (int i = 0; i < 200; ++i) tiny.push_back(csl::config({0.5 + 1e-22 * (i % 17), 0.5 + 1e-22 * (i / 17)}));
+  require_brute_force(box, tiny, 10);
   // A dense cluster and two far corners: the grid hands over to the tree, same answers.
   std::vector<Config> cluster = {csl::config({0, 0}), csl::config({1, 1})};
   for (int i = 0; i < 500; ++i) cluster.push_back(csl::config({0.5 + 1e-6 * rng.uniform01(), 0.5 + 1e-6 * rng.uniform01()}));
