@@ -3,97 +3,77 @@
 // answer typed and checked.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { startServer, launchBrowser, collectErrors, openLab, worldToPage, click, waitFrames, screenshot, inspectPng,
-         api, cli } from './lib/harness.mjs';
+import { withPage, worldToPage, click, waitFrames, screenshot, inspectPng, api, cli } from './lib/harness.mjs';
 
-test('PRM analysis: an experiment, and P9 by clicking', async () => {
-  const { server, url } = await startServer();
-  const browser = await launchBrowser();
-  try {
-    const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
-    const errors = collectErrors(page);
-    await openLab(page, url);
-    await api(page, 'select_lesson', { id: 'analysis' });
-    let s = await api(page, 'state');
-    assert.equal(s.path_exists, true);
-    assert.ok(s.length > 0.7 && s.clearance > 0 && s.clearance < 0.05, `L ${s.length}, r ${s.clearance}`);
+test('PRM analysis: an experiment, and P9 by clicking', () => withPage(async ({ page, browser }) => {
+  await api(page, 'select_lesson', { id: 'analysis' });
+  let s = await api(page, 'state');
+  assert.equal(s.path_exists, true);
+  assert.ok(s.length > 0.7 && s.clearance > 0 && s.clearance < 0.05, `L ${s.length}, r ${s.clearance}`);
 
-    // A small experiment, run in the background of the frame loop, watched until it ends.
-    await api(page, 'set_params', { params: { sample_counts: [10, 300], trials: 12, run: true } });
-    await page.waitForFunction(() => !window.cspacelab.state().experiment.running, null, { timeout: 60000 });
-    s = await api(page, 'state');
-    assert.equal(s.experiment.rows.length, 2);
-    for (const row of s.experiment.rows) {
-      assert.equal(row.trials, 12);
-      assert.ok(row.ci_low <= row.failure_rate && row.failure_rate <= row.ci_high);
-    }
-    assert.ok(s.experiment.rows[0].failures >= s.experiment.rows[1].failures);
-    const shot1 = await screenshot(page, 'analysis-bound.png');
-    assert.ok((await inspectPng(browser, shot1.png)).colours > 30);
-
-    // P9: click a point in the square; the exact probability is the CLI's.
-    await api(page, 'set_params', { params: { tab: 'visibility' } });
-    await waitFrames(page, 3);
-    const [at] = await worldToPage(page, [[0.3, 0.2]], 'p9');
-    await click(page, at);
-    s = await api(page, 'state');
-    const { scale } = await page.evaluate(() => window.cspacelab.view([], 'p9'));
-    assert.ok(Math.abs(s.visibility.x - 0.3) <= 2 / scale && Math.abs(s.visibility.y - 0.2) <= 2 / scale);
-    const v = cli('visibility', '--x', String(s.visibility.x), '--y', String(s.visibility.y), '--gap', String(s.visibility.gap));
-    assert.equal(s.visibility.exact, v.exact);
-    assert.ok(Math.abs(s.visibility.monte_carlo - v.exact) < 5 * Math.sqrt(v.exact * (1 - v.exact) / s.visibility.trials));
-    await page.mouse.move(5, 5);
-    const shot2 = await screenshot(page, 'analysis-p9.png');
-    assert.ok((await inspectPng(browser, shot2.png)).colours > 20);
-    assert.deepEqual(errors, []);
-  } finally {
-    await browser.close();
-    server.close();
+  // A small experiment, run in the background of the frame loop, watched until it ends.
+  await api(page, 'set_params', { params: { sample_counts: [10, 300], trials: 12, run: true } });
+  await page.waitForFunction(() => !window.cspacelab.state().experiment.running, null, { timeout: 60000 });
+  s = await api(page, 'state');
+  assert.equal(s.experiment.rows.length, 2);
+  for (const row of s.experiment.rows) {
+    assert.equal(row.trials, 12);
+    assert.ok(row.ci_low <= row.failure_rate && row.failure_rate <= row.ci_high);
   }
-});
+  assert.ok(s.experiment.rows[0].failures >= s.experiment.rows[1].failures);
+  const shot1 = await screenshot(page, 'analysis-bound.png');
+  assert.ok((await inspectPng(browser, shot1.png)).colours > 30);
 
-test('C-space notation: build a robot, then answer an exercise with the keyboard', async () => {
-  const { server, url } = await startServer();
-  const browser = await launchBrowser();
-  try {
-    const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
-    const errors = collectErrors(page);
-    await openLab(page, url);
-    await api(page, 'select_lesson', { id: 'notation' });
-    await api(page, 'set_params', { params: { description: 'base=planar joints=RRR wrist=spherical' } });
-    let s = await api(page, 'state');
-    assert.equal(s.notation, 'SE(2) x T^6');
-    assert.equal(s.dimension, 9);
-    const fromCli = cli('cspace-of', 'base=planar joints=RRR wrist=spherical');
-    assert.equal(s.notation, fromCli.notation);
+  // P9: click a point in the square; the exact probability is the CLI's.
+  await api(page, 'set_params', { params: { tab: 'visibility' } });
+  await waitFrames(page, 3);
+  const [at] = await worldToPage(page, [[0.3, 0.2]], 'p9');
+  await click(page, at);
+  s = await api(page, 'state');
+  const { scale } = await page.evaluate(() => window.cspacelab.view([], 'p9'));
+  assert.ok(Math.abs(s.visibility.x - 0.3) <= 2 / scale && Math.abs(s.visibility.y - 0.2) <= 2 / scale);
+  const v = cli('visibility', '--x', String(s.visibility.x), '--y', String(s.visibility.y), '--gap', String(s.visibility.gap));
+  assert.equal(s.visibility.exact, v.exact);
+  assert.ok(Math.abs(s.visibility.monte_carlo - v.exact) < 5 * Math.sqrt(v.exact * (1 - v.exact) / s.visibility.trials));
+  await page.mouse.move(5, 5);
+  const shot2 = await screenshot(page, 'analysis-p9.png');
+  assert.ok((await inspectPng(browser, shot2.png)).colours > 20);
+}));
 
-    // Practice: exercise 2 (a 3R arm). The answer field has the keyboard: type a wrong answer
-    // and Enter, then a right one.
-    await api(page, 'set_params', { params: { mode: 'practice', exercise: 1 } });
-    await waitFrames(page, 3);
-    await page.keyboard.type('S^2 x S^1', { delay: 30 });
-    await page.keyboard.press('Enter');
-    await waitFrames(page, 3);
-    s = await api(page, 'state');
-    assert.equal(s.answer, 'S^2 x S^1');
-    assert.equal(s.check.correct, false);
-    assert.match(s.check.explanation, /S\^2/);
-    await waitFrames(page, 2);
-    await page.keyboard.down('Control');
-    await page.keyboard.press('a');  // select all: the next keys replace the answer
-    await page.keyboard.up('Control');
-    await waitFrames(page, 2);
-    await page.keyboard.type('T^3', { delay: 30 });
-    await page.keyboard.press('Enter');
-    await waitFrames(page, 3);
-    s = await api(page, 'state');
-    assert.equal(s.answer, 'T^3');
-    assert.equal(s.check.correct, true);
-    const shot = await screenshot(page, 'notation.png');
-    assert.ok((await inspectPng(browser, shot.png)).colours > 30);
-    assert.deepEqual(errors, []);
-  } finally {
-    await browser.close();
-    server.close();
-  }
-});
+// Types an answer into the field that has the keyboard, submits it with Enter: the state after.
+async function answer(page, text) {
+  await page.keyboard.type(text, { delay: 30 });
+  await page.keyboard.press('Enter');
+  await waitFrames(page, 3);
+  return api(page, 'state');
+}
+
+test('C-space notation: build a robot, then answer an exercise with the keyboard',
+  () => withPage(async ({ page, browser }) => {
+  await api(page, 'select_lesson', { id: 'notation' });
+  await api(page, 'set_params', { params: { description: 'base=planar joints=RRR wrist=spherical' } });
+  let s = await api(page, 'state');
+  assert.equal(s.notation, 'SE(2) x T^6');
+  assert.equal(s.dimension, 9);
+  const fromCli = cli('cspace-of', 'base=planar joints=RRR wrist=spherical');
+  assert.equal(s.notation, fromCli.notation);
+
+  // Practice: exercise 2 (a 3R arm). The answer field has the keyboard: type a wrong answer
+  // and Enter, then a right one.
+  await api(page, 'set_params', { params: { mode: 'practice', exercise: 1 } });
+  await waitFrames(page, 3);
+  s = await answer(page, 'S^2 x S^1');
+  assert.equal(s.answer, 'S^2 x S^1');
+  assert.equal(s.check.correct, false);
+  assert.match(s.check.explanation, /S\^2/);
+  await waitFrames(page, 2);
+  await page.keyboard.down('Control');
+  await page.keyboard.press('a');  // select all: the next keys replace the answer
+  await page.keyboard.up('Control');
+  await waitFrames(page, 2);
+  s = await answer(page, 'T^3');
+  assert.equal(s.answer, 'T^3');
+  assert.equal(s.check.correct, true);
+  const shot = await screenshot(page, 'notation.png');
+  assert.ok((await inspectPng(browser, shot.png)).colours > 30);
+}));

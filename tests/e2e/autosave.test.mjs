@@ -3,119 +3,99 @@
 // replaced comes back with "Restore my previous work".
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { startServer, launchBrowser, collectErrors, openLab, worldToPage, drag, click, keys, waitFrames, api,
-         pageButton, screenshot } from './lib/harness.mjs';
+import { withBrowser, withPage, drawDisk, collectErrors, openLab, click, waitFrames, api, pageButton,
+         screenshot } from './lib/harness.mjs';
 
-test('reload restores a drawn scene; reset asks first and can be undone', async () => {
-  const { server, url } = await startServer();
-  const browser = await launchBrowser();
-  try {
-    const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
-    const errors = collectErrors(page);
-    await openLab(page, url);
-    await api(page, 'select_lesson', { id: 'collision' });
-    await api(page, 'set_params', { params: { grid_n: 7 } });
-    await api(page, 'run_to', { steps: 2 });
-    await api(page, 'select_lesson', { id: 'step-prm' });
-    await api(page, 'set_scene', { scene: { version: 1, start: [0.05, 0.05], goal: [0.95, 0.95] } });
-    await waitFrames(page, 2);
+test('reload restores a drawn scene; reset asks first and can be undone', () => withPage(async ({ page }) => {
+  await api(page, 'select_lesson', { id: 'collision' });
+  await api(page, 'set_params', { params: { grid_n: 7 } });
+  await api(page, 'run_to', { steps: 2 });
+  await api(page, 'select_lesson', { id: 'step-prm' });
+  await api(page, 'set_scene', { scene: { version: 1, start: [0.05, 0.05], goal: [0.95, 0.95] } });
+  await waitFrames(page, 2);
 
-    // Two disks drawn with real mouse events.
-    await keys(page, 'd');
-    let [a, b] = await worldToPage(page, [[0.3, 0.6], [0.42, 0.6]]);
-    await drag(page, a, b);
-    [a, b] = await worldToPage(page, [[0.7, 0.35], [0.78, 0.35]]);
-    await drag(page, a, b);
-    await api(page, 'set_params', { params: { seed: 42, samples: 90 } });
-    await api(page, 'run_to', { steps: 60 });
-    const drawn = await api(page, 'get_scene');
-    assert.equal(drawn.obstacles.length, 2);
-    const before = await api(page, 'state');
+  // Two disks drawn with real mouse events.
+  await drawDisk(page, [0.3, 0.6], [0.42, 0.6]);
+  await drawDisk(page, [0.7, 0.35], [0.78, 0.35]);
+  await api(page, 'set_params', { params: { seed: 42, samples: 90 } });
+  await api(page, 'run_to', { steps: 60 });
+  const drawn = await api(page, 'get_scene');
+  assert.equal(drawn.obstacles.length, 2);
+  const before = await api(page, 'state');
 
-    // Reload at once (the pagehide save), then again after the debounced autosave ran.
-    await page.reload();
-    await page.waitForFunction(() => window.cspacelab && window.cspacelab.status().frames >= 2);
-    assert.equal((await api(page, 'status')).lesson, 'step-prm', 'the lesson that was open');
-    assert.deepEqual(await api(page, 'get_scene'), drawn, 'the drawn scene is back');
-    const after = await api(page, 'state');
-    assert.equal(after.steps, 60);
-    assert.equal(after.roadmap_hash, before.roadmap_hash, 'and the same roadmap at the same step');
-    assert.deepEqual(after.params, before.params);
-    await api(page, 'select_lesson', { id: 'collision' });
-    const collision = await api(page, 'state');
-    assert.equal(collision.grid_n, 7, 'the other lesson kept its work too');
-    assert.equal(collision.shown, 2);
-    await api(page, 'select_lesson', { id: 'step-prm' });
-    await page.waitForTimeout(2500);
-    await page.reload();
-    await page.waitForFunction(() => window.cspacelab && window.cspacelab.status().frames >= 2);
-    assert.deepEqual(await api(page, 'get_scene'), drawn);
-    assert.equal((await api(page, 'status')).notice, '', 'a plain reload says nothing');
+  // Reload at once (the pagehide save), then again after the debounced autosave ran.
+  await page.reload();
+  await page.waitForFunction(() => window.cspacelab && window.cspacelab.status().frames >= 2);
+  assert.equal((await api(page, 'status')).lesson, 'step-prm', 'the lesson that was open');
+  assert.deepEqual(await api(page, 'get_scene'), drawn, 'the drawn scene is back');
+  const after = await api(page, 'state');
+  assert.equal(after.steps, 60);
+  assert.equal(after.roadmap_hash, before.roadmap_hash, 'and the same roadmap at the same step');
+  assert.deepEqual(after.params, before.params);
+  await api(page, 'select_lesson', { id: 'collision' });
+  const collision = await api(page, 'state');
+  assert.equal(collision.grid_n, 7, 'the other lesson kept its work too');
+  assert.equal(collision.shown, 2);
+  await api(page, 'select_lesson', { id: 'step-prm' });
+  await page.waitForTimeout(2500);
+  await page.reload();
+  await page.waitForFunction(() => window.cspacelab && window.cspacelab.status().frames >= 2);
+  assert.deepEqual(await api(page, 'get_scene'), drawn);
+  assert.equal((await api(page, 'status')).notice, '', 'a plain reload says nothing');
 
-    // Reset: File, then the menu item, then the modal's Reset (Cancel first: nothing changes).
-    await click(page, await pageButton(page, 'file'));
-    await click(page, await pageButton(page, 'reset'));
-    await screenshot(page, 'autosave-reset-modal.png');
-    await click(page, await pageButton(page, 'reset-cancel'));
-    assert.deepEqual(await api(page, 'get_scene'), drawn, 'Cancel keeps the work');
-    await click(page, await pageButton(page, 'file'));
-    await click(page, await pageButton(page, 'reset'));
-    assert.ok(await pageButton(page, 'reset-confirm'), 'the modal asks first');
-    await click(page, await pageButton(page, 'reset-confirm'));
-    await page.waitForFunction(() => window.cspacelab.getScene().name !== undefined);
-    const reset = await api(page, 'get_scene');
-    assert.equal(reset.obstacles.length, 5, 'the lesson default scene (prm-demo)');
-    assert.equal((await api(page, 'state')).params.seed, 1, 'default parameters');
-    assert.match((await api(page, 'status')).notice, /back to its default/);
+  // Reset: File, then the menu item, then the modal's Reset (Cancel first: nothing changes).
+  await click(page, await pageButton(page, 'file'));
+  await click(page, await pageButton(page, 'reset'));
+  await screenshot(page, 'autosave-reset-modal.png');
+  await click(page, await pageButton(page, 'reset-cancel'));
+  assert.deepEqual(await api(page, 'get_scene'), drawn, 'Cancel keeps the work');
+  await click(page, await pageButton(page, 'file'));
+  await click(page, await pageButton(page, 'reset'));
+  assert.ok(await pageButton(page, 'reset-confirm'), 'the modal asks first');
+  await click(page, await pageButton(page, 'reset-confirm'));
+  await page.waitForFunction(() => window.cspacelab.getScene().name !== undefined);
+  const reset = await api(page, 'get_scene');
+  assert.equal(reset.obstacles.length, 5, 'the lesson default scene (prm-demo)');
+  assert.equal((await api(page, 'state')).params.seed, 1, 'default parameters');
+  assert.match((await api(page, 'status')).notice, /back to its default/);
 
-    // The reset survives a reload; the previous work is still there to restore.
-    await page.reload();
-    await page.waitForFunction(() => window.cspacelab && window.cspacelab.status().frames >= 2);
-    assert.equal((await api(page, 'get_scene')).obstacles.length, 5);
-    await waitFrames(page, 2);
-    await click(page, await pageButton(page, 'restore-previous'));
-    await page.waitForFunction(() => window.cspacelab.getScene().obstacles.length === 2);
-    assert.deepEqual(await api(page, 'get_scene'), drawn);
-    assert.equal((await api(page, 'state')).roadmap_hash, before.roadmap_hash);
-    await screenshot(page, 'autosave-restored.png');
-    assert.deepEqual(errors, [], 'no console errors');
-  } finally {
-    await browser.close();
-    server.close();
-  }
-});
+  // The reset survives a reload; the previous work is still there to restore.
+  await page.reload();
+  await page.waitForFunction(() => window.cspacelab && window.cspacelab.status().frames >= 2);
+  assert.equal((await api(page, 'get_scene')).obstacles.length, 5);
+  await waitFrames(page, 2);
+  await click(page, await pageButton(page, 'restore-previous'));
+  await page.waitForFunction(() => window.cspacelab.getScene().obstacles.length === 2);
+  assert.deepEqual(await api(page, 'get_scene'), drawn);
+  assert.equal((await api(page, 'state')).roadmap_hash, before.roadmap_hash);
+  await screenshot(page, 'autosave-restored.png');
+}));
 
-test('storage that cannot be read is reported and replaced, not trusted', async () => {
-  const { server, url } = await startServer();
-  const browser = await launchBrowser();
-  try {
-    const page = await browser.newPage({ viewport: { width: 1100, height: 700 } });
-    // A blank page of the same origin, to write the storage before the lab starts.
-    await page.route(url + 'blank.html', (r) => r.fulfill({ contentType: 'text/html', body: '<link rel="icon" href="data:,">' }));
-    await page.goto(url + 'blank.html');
-    const errors = collectErrors(page);
-    await page.evaluate(() => {
-      localStorage.setItem('cspacelab:v1:/:main:work', '{"format":"cspacelab-work","version":1,"current":"step-prm","lessons":{"step-prm":{"scene":{"version":1,"obstacles":[{"type":"disk","center":[0,0],"radius":-1}]}}}}');
-    });
-    await openLab(page, url);
-    assert.match((await api(page, 'status')).notice, /saved work: Step PRM: .*radius/);
-    assert.equal((await api(page, 'get_scene')).obstacles.length, 5, 'the default scene instead');
-    // A parameter this version does not know (say, saved by another version): the scene stays.
-    await page.evaluate(() => localStorage.setItem('cspacelab:v1:/:main:work', JSON.stringify({
-      format: 'cspacelab-work', version: 1, current: 'step-prm',
-      lessons: { 'step-prm': { scene: { version: 1, obstacles: [{ type: 'disk', center: [0.5, 0.5], radius: 0.2 }] },
-                               params: { samples: 50, renamed: 3 }, steps: 4 } } })));
-    await page.reload();
-    await page.waitForFunction(() => window.cspacelab && window.cspacelab.status().frames >= 2);
-    assert.match((await api(page, 'status')).notice, /saved work: Step PRM: unknown parameter "renamed"/);
-    assert.deepEqual((await api(page, 'get_scene')).obstacles, [{ type: 'disk', center: [0.5, 0.5], radius: 0.2 }], 'the scene is kept');
-    await page.evaluate(() => localStorage.setItem('cspacelab:v1:/:main:work', 'not json {'));
-    await page.reload();
-    await page.waitForFunction(() => window.cspacelab && window.cspacelab.status().frames >= 2);
-    assert.match((await api(page, 'status')).notice, /saved work in this browser could not be read/);
-    assert.deepEqual(errors, []);
-  } finally {
-    await browser.close();
-    server.close();
-  }
-});
+test('storage that cannot be read is reported and replaced, not trusted',
+  () => withBrowser(async ({ browser, url }) => {
+  const page = await browser.newPage({ viewport: { width: 1100, height: 700 } });
+  // A blank page of the same origin, to write the storage before the lab starts.
+  await page.route(url + 'blank.html', (r) => r.fulfill({ contentType: 'text/html', body: '<link rel="icon" href="data:,">' }));
+  await page.goto(url + 'blank.html');
+  const errors = collectErrors(page);
+  await page.evaluate(() => {
+    localStorage.setItem('cspacelab:v1:/:main:work', '{"format":"cspacelab-work","version":1,"current":"step-prm","lessons":{"step-prm":{"scene":{"version":1,"obstacles":[{"type":"disk","center":[0,0],"radius":-1}]}}}}');
+  });
+  await openLab(page, url);
+  assert.match((await api(page, 'status')).notice, /saved work: Step PRM: .*radius/);
+  assert.equal((await api(page, 'get_scene')).obstacles.length, 5, 'the default scene instead');
+  // A parameter this version does not know (say, saved by another version): the scene stays.
+  await page.evaluate(() => localStorage.setItem('cspacelab:v1:/:main:work', JSON.stringify({
+    format: 'cspacelab-work', version: 1, current: 'step-prm',
+    lessons: { 'step-prm': { scene: { version: 1, obstacles: [{ type: 'disk', center: [0.5, 0.5], radius: 0.2 }] },
+                             params: { samples: 50, renamed: 3 }, steps: 4 } } })));
+  await page.reload();
+  await page.waitForFunction(() => window.cspacelab && window.cspacelab.status().frames >= 2);
+  assert.match((await api(page, 'status')).notice, /saved work: Step PRM: unknown parameter "renamed"/);
+  assert.deepEqual((await api(page, 'get_scene')).obstacles, [{ type: 'disk', center: [0.5, 0.5], radius: 0.2 }], 'the scene is kept');
+  await page.evaluate(() => localStorage.setItem('cspacelab:v1:/:main:work', 'not json {'));
+  await page.reload();
+  await page.waitForFunction(() => window.cspacelab && window.cspacelab.status().frames >= 2);
+  assert.match((await api(page, 'status')).notice, /saved work in this browser could not be read/);
+  assert.deepEqual(errors, []);
+}));

@@ -3,74 +3,63 @@
 // verdict live, and the arm variant.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { startServer, launchBrowser, collectErrors, openLab, worldToPage, drag, keys, waitFrames, screenshot,
-         inspectPng, api, cli, tempJson } from './lib/harness.mjs';
+import { withPage, worldToPage, drag, keys, waitFrames, screenshot, inspectPng, api, cli,
+         tempJson } from './lib/harness.mjs';
 
-test('Collision checking: P12 both ways, matching the CLI, live edits', async () => {
-  const { server, url } = await startServer();
-  const browser = await launchBrowser();
-  try {
-    const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
-    const errors = collectErrors(page);
-    await openLab(page, url);
-    await api(page, 'select_lesson', { id: 'collision' });
-    await waitFrames(page, 2);
+test('Collision checking: P12 both ways, matching the CLI, live edits', () => withPage(async ({ page, browser }) => {
+  await api(page, 'select_lesson', { id: 'collision' });
+  await waitFrames(page, 2);
 
-    // P12: N = 4 misses the disk, the smallest N that sees it is 5.
-    let s = await api(page, 'state');
-    assert.deepEqual(s.p, [0, 0]);
-    assert.deepEqual(s.q, [1, 0]);
-    assert.equal(s.grid_n, 4);
-    assert.equal(s.grid.collision, false);
-    assert.equal(s.min_grid, 5);
-    await api(page, 'set_params', { params: { grid_n: 5 } });
-    assert.equal((await api(page, 'state')).grid.collision_t, 0.25);
+  // P12: N = 4 misses the disk, the smallest N that sees it is 5.
+  let s = await api(page, 'state');
+  assert.deepEqual(s.p, [0, 0]);
+  assert.deepEqual(s.q, [1, 0]);
+  assert.equal(s.grid_n, 4);
+  assert.equal(s.grid.collision, false);
+  assert.equal(s.min_grid, 5);
+  await api(page, 'set_params', { params: { grid_n: 5 } });
+  assert.equal((await api(page, 'state')).grid.collision_t, 0.25);
 
-    // Step the bisection midpoint by midpoint (the '.' key), then compare with the CLI.
-    await page.mouse.move(700, 300);
-    for (let i = 0; i < 3; ++i) await keys(page, '.');
-    assert.equal((await api(page, 'state')).shown, 3);
-    await api(page, 'run');
-    s = await api(page, 'state');
-    assert.equal(s.shown, s.bisection.trace.length + s.bisection.pieces.length);
-    const scene = tempJson(await api(page, 'get_scene'));
-    const check = cli('check', scene, '--from', s.p.join(','), '--to', s.q.join(','), '--checker', 'bisection', '--trace');
-    assert.deepEqual(s.bisection.trace, check.trace);
-    assert.deepEqual(s.bisection.pieces, check.pieces);
-    assert.equal(s.bisection.collision_t, check.collision_t);
-    assert.deepEqual(s.bisection.trace.map((e) => e.t), [0, 1, 0.5, 0.25]);
-    const shotP12 = await screenshot(page, 'collision-p12.png');
-    assert.ok((await inspectPng(browser, shotP12.png)).colours > 30);
+  // Step the bisection midpoint by midpoint (the '.' key), then compare with the CLI.
+  await page.mouse.move(700, 300);
+  for (let i = 0; i < 3; ++i) await keys(page, '.');
+  assert.equal((await api(page, 'state')).shown, 3);
+  await api(page, 'run');
+  s = await api(page, 'state');
+  assert.equal(s.shown, s.bisection.trace.length + s.bisection.pieces.length);
+  const scene = tempJson(await api(page, 'get_scene'));
+  const check = cli('check', scene, '--from', s.p.join(','), '--to', s.q.join(','), '--checker', 'bisection', '--trace');
+  assert.deepEqual(s.bisection.trace, check.trace);
+  assert.deepEqual(s.bisection.pieces, check.pieces);
+  assert.equal(s.bisection.collision_t, check.collision_t);
+  assert.deepEqual(s.bisection.trace.map((e) => e.t), [0, 1, 0.5, 0.25]);
+  const shotP12 = await screenshot(page, 'collision-p12.png');
+  assert.ok((await inspectPng(browser, shotP12.png)).colours > 30);
 
-    // Drag the disk off the line with the mouse: the edge becomes free, live.
-    await keys(page, 'v');
-    const [disk, away] = await worldToPage(page, [[0.2, 0.05], [0.2, 0.3]]);
-    await drag(page, disk, away);
-    s = await api(page, 'state');
-    assert.equal(s.bisection.collision, false);
-    assert.equal(s.min_grid, null);
-    const moved = tempJson(await api(page, 'get_scene'));
-    const freeCheck = cli('check', moved, '--from', '0,0', '--to', '1,0', '--trace');
-    assert.deepEqual(s.bisection.trace, freeCheck.trace);
-    assert.deepEqual(s.bisection.pieces, freeCheck.pieces);
+  // Drag the disk off the line with the mouse: the edge becomes free, live.
+  await keys(page, 'v');
+  const [disk, away] = await worldToPage(page, [[0.2, 0.05], [0.2, 0.3]]);
+  await drag(page, disk, away);
+  s = await api(page, 'state');
+  assert.equal(s.bisection.collision, false);
+  assert.equal(s.min_grid, null);
+  const moved = tempJson(await api(page, 'get_scene'));
+  const freeCheck = cli('check', moved, '--from', '0,0', '--to', '1,0', '--trace');
+  assert.deepEqual(s.bisection.trace, freeCheck.trace);
+  assert.deepEqual(s.bisection.pieces, freeCheck.pieces);
 
-    // The arm: the same machinery on T^2, drawn as arms.
-    await api(page, 'set_scene', { scene: { version: 1, robot: { type: 'arm2', base: [0.5, 0.5], lengths: [0.3, 0.2] },
-                                            obstacles: [{ type: 'disk', center: [0.1, 0.5], radius: 0.05 }],
-                                            start: [3, 0], goal: [-3, 0] } });
-    s = await api(page, 'state');
-    assert.equal(s.robot, 'arm2');
-    assert.equal(s.bisection.collision, true);  // the short way round passes the disk
-    const arm = cli('check', tempJson(await api(page, 'get_scene')), '--from', '3,0', '--to', '-3,0', '--trace');
-    assert.deepEqual(s.bisection.trace, arm.trace);
-    await api(page, 'run');
-    await page.mouse.move(5, 5);
-    await waitFrames(page, 3);
-    const shotArm = await screenshot(page, 'collision-arm.png');
-    assert.ok((await inspectPng(browser, shotArm.png)).colours > 30);
-    assert.deepEqual(errors, []);
-  } finally {
-    await browser.close();
-    server.close();
-  }
-});
+  // The arm: the same machinery on T^2, drawn as arms.
+  await api(page, 'set_scene', { scene: { version: 1, robot: { type: 'arm2', base: [0.5, 0.5], lengths: [0.3, 0.2] },
+                                          obstacles: [{ type: 'disk', center: [0.1, 0.5], radius: 0.05 }],
+                                          start: [3, 0], goal: [-3, 0] } });
+  s = await api(page, 'state');
+  assert.equal(s.robot, 'arm2');
+  assert.equal(s.bisection.collision, true);  // the short way round passes the disk
+  const arm = cli('check', tempJson(await api(page, 'get_scene')), '--from', '3,0', '--to', '-3,0', '--trace');
+  assert.deepEqual(s.bisection.trace, arm.trace);
+  await api(page, 'run');
+  await page.mouse.move(5, 5);
+  await waitFrames(page, 3);
+  const shotArm = await screenshot(page, 'collision-arm.png');
+  assert.ok((await inspectPng(browser, shotArm.png)).colours > 30);
+}));

@@ -6,7 +6,7 @@ import assert from 'node:assert/strict';
 import path from 'node:path';
 import { spawnSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
-import { startServer, launchBrowser, collectErrors, openLab, api, cli, DIST } from './lib/harness.mjs';
+import { withPage, api, cli, DIST } from './lib/harness.mjs';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const source = path.resolve(here, '../..');
@@ -34,37 +34,26 @@ const TABLE = [
 
 const flags = (rule) => rule === 'prm*' ? ['--prm-star'] : rule.startsWith('k:') ? ['--k', rule.slice(2)] : ['--radius', rule.slice(7)];
 
-test('the same roadmap natively, in wasm under node, and in the browser', async () => {
-  const { server, url } = await startServer();
-  const browser = await launchBrowser();
-  try {
-    const page = await browser.newPage();
-    const errors = collectErrors(page);
-    await openLab(page, url);
-    const rows = [];
-    for (const [name, lesson, samples, rule, checker, seed] of TABLE) {
-      const args = ['plan', scene(name), '--samples', String(samples), ...flags(rule), '--checker', checker, '--seed', String(seed)];
-      const native = cli(...args), inWasm = wasm(...args);
-      let browserHash = '-';
-      if (lesson) {
-        const sceneJson = JSON.parse((await import('node:fs')).readFileSync(scene(name), 'utf8'));
-        await api(page, 'restore', { lesson, scene: sceneJson, params: { samples, neighbors: rule, checker, seed } });
-        await api(page, 'run');
-        const s = await api(page, 'state');
-        const st = lesson === 'torus' ? s.prm : s;
-        browserHash = st.roadmap_hash;
-        assert.equal(browserHash, native.roadmap_hash, `${name} ${rule} ${checker} seed ${seed}: browser`);
-        assert.deepEqual(st.path, native.path);
-      }
-      assert.equal(inWasm.roadmap_hash, native.roadmap_hash, `${name} ${rule} ${checker} seed ${seed}: wasm`);
-      assert.deepEqual(inWasm.path, native.path);
-      rows.push(`${name.padEnd(15)} ${String(samples).padStart(4)} ${rule.padEnd(12)} ${checker.padEnd(10)} seed ${String(seed).padEnd(3)} ` +
-                `native ${native.roadmap_hash}  wasm ${inWasm.roadmap_hash}  browser ${browserHash}`);
+test('the same roadmap natively, in wasm under node, and in the browser', () => withPage(async ({ page, browser }) => {
+  const rows = [];
+  for (const [name, lesson, samples, rule, checker, seed] of TABLE) {
+    const args = ['plan', scene(name), '--samples', String(samples), ...flags(rule), '--checker', checker, '--seed', String(seed)];
+    const native = cli(...args), inWasm = wasm(...args);
+    let browserHash = '-';
+    if (lesson) {
+      const sceneJson = JSON.parse((await import('node:fs')).readFileSync(scene(name), 'utf8'));
+      await api(page, 'restore', { lesson, scene: sceneJson, params: { samples, neighbors: rule, checker, seed } });
+      await api(page, 'run');
+      const s = await api(page, 'state');
+      const st = lesson === 'torus' ? s.prm : s;
+      browserHash = st.roadmap_hash;
+      assert.equal(browserHash, native.roadmap_hash, `${name} ${rule} ${checker} seed ${seed}: browser`);
+      assert.deepEqual(st.path, native.path);
     }
-    console.log(rows.join('\n'));
-    assert.deepEqual(errors, []);
-  } finally {
-    await browser.close();
-    server.close();
+    assert.equal(inWasm.roadmap_hash, native.roadmap_hash, `${name} ${rule} ${checker} seed ${seed}: wasm`);
+    assert.deepEqual(inWasm.path, native.path);
+    rows.push(`${name.padEnd(15)} ${String(samples).padStart(4)} ${rule.padEnd(12)} ${checker.padEnd(10)} seed ${String(seed).padEnd(3)} ` +
+              `native ${native.roadmap_hash}  wasm ${inWasm.roadmap_hash}  browser ${browserHash}`);
   }
-});
+  console.log(rows.join('\n'));
+}));

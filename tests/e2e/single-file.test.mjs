@@ -6,7 +6,8 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { pathToFileURL } from 'node:url';
-import { DIST, launchBrowser, collectErrors, openLab, api, keys, waitFrames, screenshot, inspectPng } from './lib/harness.mjs';
+import { DIST, launchBrowser, collectErrors, openLab, api, keys, waitFrames, screenshot,
+         inspectPng } from './lib/harness.mjs';
 
 test('the single-file build runs from file://', async () => {
   const built = path.join(DIST, 'cspacelab-single.html');

@@ -6,82 +6,72 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { startServer, launchBrowser, collectErrors, openLab, worldToPage, drag, click, keys, waitFrames, screenshot,
-         inspectPng, api, cli, tempJson } from './lib/harness.mjs';
+import { withPage, worldToPage, drag, click, keys, waitFrames, screenshot, inspectPng, api, cli,
+         tempJson } from './lib/harness.mjs';
 
-test('the arm and its torus: linked views, live C-obstacles, PRM across seams', async () => {
-  const { server, url } = await startServer();
-  const browser = await launchBrowser();
-  try {
-    const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
-    const errors = collectErrors(page);
-    await openLab(page, url);
-    await api(page, 'select_lesson', { id: 'torus' });
-    await waitFrames(page, 3);
+test('the arm and its torus: linked views, live C-obstacles, PRM across seams',
+  () => withPage(async ({ page, browser }) => {
+  await api(page, 'select_lesson', { id: 'torus' });
+  await waitFrames(page, 3);
 
-    // Pose the arm by clicking in the C-space square.
-    const [target] = await worldToPage(page, [[1.2, -0.8]], 'cspace');
-    await click(page, target);
-    let s = await api(page, 'state');
-    const { scale } = await page.evaluate(() => window.cspacelab.view([], 'cspace'));
-    assert.ok(Math.abs(s.q[0] - 1.2) <= 2 / scale && Math.abs(s.q[1] + 0.8) <= 2 / scale, `q = ${s.q}`);
-    // Dragging link 1 in the workspace turns theta1 only.
-    const scene = await api(page, 'get_scene');
-    const base = scene.robot.base, l1 = scene.robot.lengths[0];
-    const mid1 = [base[0] + 0.5 * l1 * Math.cos(s.q[0]), base[1] + 0.5 * l1 * Math.sin(s.q[0])];
-    const turned = [base[0] + 0.5 * l1 * Math.cos(2.0), base[1] + 0.5 * l1 * Math.sin(2.0)];
-    const [from, to] = await worldToPage(page, [mid1, turned], 'workspace');
-    await drag(page, from, to);
-    const after = await api(page, 'state');
-    assert.ok(Math.abs(after.q[0] - 2.0) < 0.05, `theta1 ${after.q[0]}`);
-    assert.ok(Math.abs(after.q[1] - s.q[1]) < 1e-9, 'theta2 unchanged');
+  // Pose the arm by clicking in the C-space square.
+  const [target] = await worldToPage(page, [[1.2, -0.8]], 'cspace');
+  await click(page, target);
+  let s = await api(page, 'state');
+  const { scale } = await page.evaluate(() => window.cspacelab.view([], 'cspace'));
+  assert.ok(Math.abs(s.q[0] - 1.2) <= 2 / scale && Math.abs(s.q[1] + 0.8) <= 2 / scale, `q = ${s.q}`);
+  // Dragging link 1 in the workspace turns theta1 only.
+  const scene = await api(page, 'get_scene');
+  const base = scene.robot.base, l1 = scene.robot.lengths[0];
+  const mid1 = [base[0] + 0.5 * l1 * Math.cos(s.q[0]), base[1] + 0.5 * l1 * Math.sin(s.q[0])];
+  const turned = [base[0] + 0.5 * l1 * Math.cos(2.0), base[1] + 0.5 * l1 * Math.sin(2.0)];
+  const [from, to] = await worldToPage(page, [mid1, turned], 'workspace');
+  await drag(page, from, to);
+  const after = await api(page, 'state');
+  assert.ok(Math.abs(after.q[0] - 2.0) < 0.05, `theta1 ${after.q[0]}`);
+  assert.ok(Math.abs(after.q[1] - s.q[1]) < 1e-9, 'theta2 unchanged');
 
-    // Drag an obstacle in the workspace: its C-obstacle moves (the map changes, live).
-    const probe = [];
-    for (let i = 0; i < 24; ++i) for (let j = 0; j < 24; ++j) probe.push([-Math.PI + (i + 0.5) * Math.PI / 12, -Math.PI + (j + 0.5) * Math.PI / 12]);
-    const before = (await api(page, 'state', { blocked_at: probe })).blocked_at;
-    const disk = scene.obstacles[0];
-    const [d0, d1] = await worldToPage(page, [disk.center, [disk.center[0] - 0.12, disk.center[1] + 0.1]], 'workspace');
-    await keys(page, 'v');
-    await drag(page, d0, d1);
-    const moved = await api(page, 'get_scene');
-    assert.ok(Math.abs(moved.obstacles[0].center[1] - (disk.center[1] + 0.1)) < 0.02, 'the disk moved');
-    const afterMove = (await api(page, 'state', { blocked_at: probe })).blocked_at;
-    const changed = before.filter((b, i) => b !== afterMove[i]).length;
-    assert.ok(changed > 5, `${changed} probed configurations changed`);
-    // The map agrees with the CLI's PGM of the same scene.
-    const pgmFile = path.join(fs.mkdtempSync(path.join(os.tmpdir(), 'csl-')), 'map.pgm');
-    const cspace = cli('cspace', tempJson(moved), '--resolution', '24', '--out', pgmFile);
-    const pgm = fs.readFileSync(pgmFile);
-    const header = pgm.subarray(0, 15).toString('latin1');
-    const offset = header.indexOf('255\n') + 4;
-    let agree = 0;
-    for (let i = 0; i < 24; ++i) for (let j = 0; j < 24; ++j) {
-      const free = pgm[offset + j * 24 + i] === 255;  // row j is theta2, column i is theta1
-      agree += free === !afterMove[i * 24 + j];
-    }
-    assert.ok(agree >= 574, `${agree}/576 probes agree with the CLI`);
-    assert.ok(Math.abs(cspace.free_fraction - afterMove.filter((b) => !b).length / 576) < 0.01);
-
-    // PRM on the torus: some edges take the short way across a seam.
-    await api(page, 'set_params', { params: { samples: 400, neighbors: 'k:10', seed: 3, view: 'both' } });
-    await api(page, 'run');
-    s = await api(page, 'state');
-    assert.ok(s.prm.nodes > 300 && s.prm.edges > 1000, `roadmap ${s.prm.nodes} / ${s.prm.edges}`);
-    assert.ok(s.prm.seam_crossing_edges > 0, `seam-crossing edges: ${s.prm.seam_crossing_edges}`);
-    const plan = cli('plan', tempJson(await api(page, 'get_scene')), '--samples', '400', '--k', '10', '--seed', '3');
-    assert.equal(s.prm.roadmap_hash, plan.roadmap_hash, 'the same roadmap as the CLI');
-
-    // The exercise: the loop around the torus.
-    await api(page, 'set_params', { params: { exercise: 'around' } });
-    await page.mouse.move(5, 5);
-    await waitFrames(page, 20);
-    assert.equal((await api(page, 'state')).exercise, 'around');
-    const { png } = await screenshot(page, 'torus.png');
-    assert.ok((await inspectPng(browser, png)).colours > 40);
-    assert.deepEqual(errors, []);
-  } finally {
-    await browser.close();
-    server.close();
+  // Drag an obstacle in the workspace: its C-obstacle moves (the map changes, live).
+  const probe = [];
+  for (let i = 0; i < 24; ++i) for (let j = 0; j < 24; ++j) probe.push([-Math.PI + (i + 0.5) * Math.PI / 12, -Math.PI + (j + 0.5) * Math.PI / 12]);
+  const before = (await api(page, 'state', { blocked_at: probe })).blocked_at;
+  const disk = scene.obstacles[0];
+  const [d0, d1] = await worldToPage(page, [disk.center, [disk.center[0] - 0.12, disk.center[1] + 0.1]], 'workspace');
+  await keys(page, 'v');
+  await drag(page, d0, d1);
+  const moved = await api(page, 'get_scene');
+  assert.ok(Math.abs(moved.obstacles[0].center[1] - (disk.center[1] + 0.1)) < 0.02, 'the disk moved');
+  const afterMove = (await api(page, 'state', { blocked_at: probe })).blocked_at;
+  const changed = before.filter((b, i) => b !== afterMove[i]).length;
+  assert.ok(changed > 5, `${changed} probed configurations changed`);
+  // The map agrees with the CLI's PGM of the same scene.
+  const pgmFile = path.join(fs.mkdtempSync(path.join(os.tmpdir(), 'csl-')), 'map.pgm');
+  const cspace = cli('cspace', tempJson(moved), '--resolution', '24', '--out', pgmFile);
+  const pgm = fs.readFileSync(pgmFile);
+  const header = pgm.subarray(0, 15).toString('latin1');
+  const offset = header.indexOf('255\n') + 4;
+  let agree = 0;
+  for (let i = 0; i < 24; ++i) for (let j = 0; j < 24; ++j) {
+    const free = pgm[offset + j * 24 + i] === 255;  // row j is theta2, column i is theta1
+    agree += free === !afterMove[i * 24 + j];
   }
-});
+  assert.ok(agree >= 574, `${agree}/576 probes agree with the CLI`);
+  assert.ok(Math.abs(cspace.free_fraction - afterMove.filter((b) => !b).length / 576) < 0.01);
+
+  // PRM on the torus: some edges take the short way across a seam.
+  await api(page, 'set_params', { params: { samples: 400, neighbors: 'k:10', seed: 3, view: 'both' } });
+  await api(page, 'run');
+  s = await api(page, 'state');
+  assert.ok(s.prm.nodes > 300 && s.prm.edges > 1000, `roadmap ${s.prm.nodes} / ${s.prm.edges}`);
+  assert.ok(s.prm.seam_crossing_edges > 0, `seam-crossing edges: ${s.prm.seam_crossing_edges}`);
+  const plan = cli('plan', tempJson(await api(page, 'get_scene')), '--samples', '400', '--k', '10', '--seed', '3');
+  assert.equal(s.prm.roadmap_hash, plan.roadmap_hash, 'the same roadmap as the CLI');
+
+  // The exercise: the loop around the torus.
+  await api(page, 'set_params', { params: { exercise: 'around' } });
+  await page.mouse.move(5, 5);
+  await waitFrames(page, 20);
+  assert.equal((await api(page, 'state')).exercise, 'around');
+  const { png } = await screenshot(page, 'torus.png');
+  assert.ok((await inspectPng(browser, png)).colours > 40);
+}));

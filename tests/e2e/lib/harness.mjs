@@ -1,6 +1,7 @@
 // Shared pieces of the browser end-to-end tests: serve the built site, launch Debian's
 // Chromium through playwright-core (headless, WebGL2 on the CPU via SwiftShader), open the lab,
 // and read pictures back.
+import assert from 'node:assert/strict';
 import path from 'node:path';
 import fs from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -36,6 +37,39 @@ export function collectErrors(page) {
   page.on('console', (msg) => { if (msg.type() === 'error') errors.push(msg.text()); });
   page.on('pageerror', (err) => errors.push(String(err)));
   return errors;
+}
+
+/**
+ * Serves the site and launches Chromium for fn({ browser, url }), then closes both, whatever fn
+ * did. The frame of every test: it opens what pages it needs.
+ */
+export async function withBrowser(fn) {
+  const { server, url } = await startServer();
+  const browser = await launchBrowser();
+  try {
+    return await fn({ browser, url });
+  } finally {
+    await browser.close();
+    server.close();
+  }
+}
+
+/**
+ * withBrowser() with one page that has opened the lab: fn({ page, errors, browser, url }). The
+ * page must end without console errors or uncaught exceptions (`errors`, which fn may also
+ * check on the way). Options: the page's own (default viewport 1280 x 800), and `open`, where
+ * to open the lab relative to the site (default: its front page).
+ */
+export async function withPage(options, fn) {
+  if (typeof options === 'function') [options, fn] = [{}, options];
+  const { open = '', ...pageOptions } = options;
+  return withBrowser(async ({ browser, url }) => {
+    const page = await browser.newPage({ viewport: { width: 1280, height: 800 }, ...pageOptions });
+    const errors = collectErrors(page);
+    await openLab(page, url + open);
+    await fn({ page, errors, browser, url });
+    assert.deepEqual(errors, [], 'no console errors or uncaught exceptions');
+  });
 }
 
 /** Waits until the app has drawn at least `count` more frames. */
@@ -74,6 +108,13 @@ export async function drag(page, from, to, steps = 8) {
   await waitFrames(page, 1);
   await page.mouse.up();
   await waitFrames(page, 2);
+}
+
+/** Draws a disk as a student does: with the D tool, a drag from its centre to its rim (world points). */
+export async function drawDisk(page, centre, rim) {
+  await keys(page, 'd');
+  const [a, b] = await worldToPage(page, [centre, rim]);
+  await drag(page, a, b);
 }
 
 /** A real click at a page point, with frames around it. */
