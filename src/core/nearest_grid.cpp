@@ -258,10 +258,12 @@ std::size_t mark_pairs_seen(const std::vector<NearNeighbor>& rows, int k, std::v
   if (k <= 0) return 0;
   const auto uk = static_cast<std::size_t>(k);
   const std::size_t n = rows.size() / uk;
-  // q's row is sorted: p is in it if p is nearer than its last entry or is that entry. The rows
-  // hold distances rounded to float, and the distance q measured to p may differ from p's to q
-  // in the last bit (angles wrap), so a comparison too close to call (or with a distance too
-  // small or large for a float's full precision) looks through q's row instead.
+  // q's row is sorted: p is in it if p is nearer than its last entry, or is that entry. p's
+  // distance to q is the same double as q's to p (a difference changes sign exactly, and
+  // wrap_angle is odd), and rounding to float keeps order, so the floats decide but at equality.
+  // The comparison keeps a margin all the same, and trusts only floats of full precision: a
+  // distance that were not exactly symmetric (a future formula) cannot mark a pair wrongly.
+  // Whatever falls within, ties included, looks through q's row.
   // Each row's last entry, side by side: the test reads the rows of random earlier points, and
   // this array (8 bytes a point) stays in cache where the rows do not.
   std::vector<NearNeighbor> last(n);

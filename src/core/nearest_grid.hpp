@@ -5,7 +5,8 @@
 // building it is a counting sort, and each query looks at the few cells around its own,
 // ring by ring, until no unvisited cell can hold a nearer point. Other spaces, and point sets
 // with a dense cluster (where a grid compares most pairs), use the k-d tree.
-// Answers are exactly brute force's (same squared distances, ties by smaller index).
+// Answers are exactly brute force's: the same neighbours in the same order (ties by smaller
+// index), found with the same squared distances (rounded to float in the rows).
 #include <vector>
 
 #include "core/nearest.hpp"
@@ -13,8 +14,9 @@
 namespace csl {
 
 /// An entry of all_k_nearest's rows: half a Neighbor (8 bytes), since PRM keeps k of them for
-/// every vertex while it connects. The distance is rounded to float: enough to compare rows
-/// (with a margin); whoever needs the exact one measures the pair again.
+/// every vertex while it connects. The distance is rounded to float: enough to compare rows;
+/// whoever needs the exact one measures the pair again (Space::squared_distance gives the bits
+/// the search compared).
 struct NearNeighbor {
   int index;
   float squared_distance;

@@ -9,18 +9,6 @@
 #include <stdexcept>
 
 namespace csl {
-namespace {
-
-// A hint to the cache (no effect on results): the object at p will be read soon.
-inline void prefetch(const void* p) {
-#if defined(__GNUC__) || defined(__clang__)
-  __builtin_prefetch(p);
-#else
-  (void)p;
-#endif
-}
-
-}  // namespace
 
 int NeighborRule::prm_star_k(int n, int d) {
   if (n < 2) return 1;
@@ -107,7 +95,7 @@ const char* event_kind_name(PrmEvent::Kind k) {
 
 const std::vector<Config>& Roadmap::waypoints(const RoadmapEdge& e) const {
   static const std::vector<Config> kStraight;
-  return e.path < 0 ? kStraight : paths[static_cast<std::size_t>(e.path)];
+  return e.path < 0 ? kStraight : paths.at(static_cast<std::size_t>(e.path));  // at: an edge of another roadmap throws
 }
 
 std::uint64_t roadmap_hash(const Roadmap& r) {
@@ -344,13 +332,6 @@ void Prm::find_candidates() {
     for (int i = 0; i < k_ && mine[i].index >= 0; ++i)
       if (!seen[i]) candidates_.push_back({mine[i].index, 0.0});
   }
-  // The candidates' coordinates are read now and by the next steps, in the order of the
-  // samples, not of space: ask for them all first.
-  for (const Neighbor& nb : candidates_) {
-    const Config* v = &roadmap_.vertices[static_cast<std::size_t>(nb.index)];
-    prefetch(v);  // the first coordinates, and the size at the end (another cache line, maybe)
-    prefetch(reinterpret_cast<const char*>(v) + sizeof(Config) - 1);
-  }
   // The exact distance (the rows keep a float): the same formula as the index's, so the same bits.
   if (params_.neighbors.kind != NeighborRule::Kind::Radius)
     for (Neighbor& nb : candidates_)
@@ -372,7 +353,7 @@ void Prm::check_candidate() {
     connect_candidate<kEmit>(q);
     return;
   }
-  // The index measured the same distance (same formula) as the checker would: the length.
+  // Measured as the checker would measure it (the same formula, so the same bits): the length.
   const double length = std::sqrt(candidate.squared_distance);
   if (params_.checker.kind == EdgeCheckerSpec::Kind::Bisection) {
     checker_.check_known_free(roadmap_.vertices[up], roadmap_.vertices[uq], length, roadmap_.clearance[up],

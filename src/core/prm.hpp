@@ -102,6 +102,7 @@ struct RoadmapEdge {
   bool alive = true;  ///< false once removed by the path re-check
   int path = -1;  ///< index in Roadmap::paths of its waypoints; -1: the straight line
 };
+static_assert(sizeof(RoadmapEdge) == 24, "RoadmapEdge: 24 bytes in both builds (see above)");
 
 struct Roadmap {
   std::vector<Config> vertices;  ///< V: 0 = q_init, 1 = q_final, then accepted samples in order

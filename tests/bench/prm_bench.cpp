@@ -76,7 +76,8 @@ std::vector<Result> fastest_in_turns(int repeats, const std::vector<std::functio
   for (int r = 0; r < repeats; ++r)
     for (std::size_t i = 0; i < contenders.size(); ++i) {
       const Result got = contenders[i](r);
-      if (r == 0 || got.seconds < best[i].seconds) best[i] = got;
+      // Per milestone: runs with different seeds grow slightly different roadmaps.
+      if (r == 0 || got.us_per_milestone() < best[i].us_per_milestone()) best[i] = got;
     }
   return best;
 }

@@ -107,9 +107,10 @@ TEST_CASE("all_k_nearest: degenerate boxes (one point, a line, a thin strip, all
   require_brute_force(box, line, 10);
   require_brute_force(box, strip, 10);
   require_brute_force(box, same, 10);
-  // Distances whose squares are below a float's normal range (1e-44): the rows compare by search.
+  // Distances whose squares (1e-44 to 4e-42) are below a float's normal range: the rows compare
+  // by search. (Near the origin: at 0.5 such offsets would vanish in the double.)
   std::vector<Config> tiny;
-  for (int i = 0; i < 200; ++i) tiny.push_back(csl::config({0.5 + 1e-22 * (i % 17), 0.5 + 1e-22 * (i / 17)}));
+  for (int i = 0; i < 200; ++i) tiny.push_back(csl::config({1e-22 * (i % 17), 1e-22 * (i / 17)}));
   require_brute_force(box, tiny, 10);
   // A dense cluster and two far corners: the grid hands over to the tree, same answers.
   std::vector<Config> cluster = {csl::config({0, 0}), csl::config({1, 1})};

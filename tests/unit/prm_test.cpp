@@ -215,6 +215,47 @@ TEST_CASE("the expected number of candidate pairs, against the pairs PRM checks"
   CHECK(std::isinf(csl::radius_for_pairs(square, 0, 1)));
 }
 
+TEST_CASE("edge lengths are the space's distances to the bit, and candidates carry them") {
+  // The k-nearest rows keep floats; PRM measures each candidate again. It must get the bits the
+  // space's distance gives (and the neighbour search compared): on the plane and the torus (the
+  // grid), in weighted SE(2) (the k-d tree), for the k rules and PRM*, grid checker or not.
+  const csl::CollisionWorld plane(csl::PointRobot{}, {csl::Disk{{0.5, 0.5}, 0.2}}, {0, 0}, {1, 1});
+  const csl::CollisionWorld arm(csl::ArmRobot{{0.5, 0.5}, 0.3, 0.2}, {csl::Disk{{0.9, 0.5}, 0.08}}, {0, 0}, {1, 1});
+  const csl::CollisionWorld se2(csl::make_polygon_robot({{-0.1, 0.0}, {0.1, 0.0}, {0.0, 0.1}}),
+                                {csl::Disk{{2.0, 2.0}, 0.5}}, {0, 0}, {4, 4});
+  struct Case {
+    const csl::CollisionWorld* world;
+    csl::Config start, goal;
+  };
+  for (const Case& c : {Case{&plane, config({0.1, 0.1}), config({0.9, 0.9})},
+                        Case{&arm, config({2.0, 0.5}), config({-2.0, -0.5})},  // pointing away from the disk
+                        Case{&se2, config({0.5, 0.5, 0.0}), config({3.5, 3.5, 1.0})}}) {
+    const csl::CollisionWorld* world = c.world;
+    const csl::Space& space = world->space();
+    const csl::Config& start = c.start;
+    const csl::Config& goal = c.goal;
+    for (const char* rule : {"k:7", "prm*"}) {
+      Prm prm(*world, start, goal, params(400, rule, rule[0] == 'k' ? "step:0.02" : "bisection"));
+      long candidates = 0;
+      while (prm.phase() != csl::PrmPhase::Query && !prm.done()) {
+        const PrmEvent& e = prm.step();
+        if (e.kind != PrmEvent::Kind::Neighbors) continue;
+        const auto& v = prm.roadmap().vertices;
+        for (const csl::Neighbor& nb : prm.candidates()) {
+          REQUIRE(nb.squared_distance == space.squared_distance(v[static_cast<std::size_t>(e.vertex)],
+                                                                v[static_cast<std::size_t>(nb.index)]));
+          ++candidates;
+        }
+      }
+      REQUIRE(candidates > 1000);
+      const auto& v = prm.roadmap().vertices;
+      for (const csl::RoadmapEdge& edge : prm.roadmap().edges)
+        REQUIRE(edge.length == space.distance(v[static_cast<std::size_t>(edge.a)], v[static_cast<std::size_t>(edge.b)]));
+      CHECK(prm.roadmap().edges.size() > 500);
+    }
+  }
+}
+
 TEST_CASE("going back to step k gives the identical state") {
   const auto world = wall_with_gap();
   Prm prm(world, config({0.1, 0.5}), config({0.9, 0.5}), params(200));
