@@ -260,7 +260,7 @@ std::size_t mark_pairs_seen(const std::vector<NearNeighbor>& rows, int k, std::v
   const std::size_t n = rows.size() / uk;
   // q's row is sorted: p is in it if p is nearer than its last entry, or is that entry. p's
   // distance to q is the same double as q's to p (a difference changes sign exactly, and
-  // wrap_angle is odd), and rounding to float keeps order, so the floats decide but at equality.
+  // wrap_angle is odd), and rounding to float keeps order, so the floats decide unless equal.
   // The comparison keeps a margin all the same, and trusts only floats of full precision: a
   // distance that were not exactly symmetric (a future formula) cannot mark a pair wrongly.
   // Whatever falls within, ties included, looks through q's row.

@@ -7,6 +7,7 @@
 #include <functional>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/collision.hpp"
@@ -49,17 +50,31 @@ double best_of(int repeats, F&& f) {
   return best;
 }
 
-/// Times several contenders in turns (A B C A B C ...) and returns each one's fastest run, so
-/// that a change in the machine's load during the run hits all of them alike.
-inline std::vector<double> best_of_interleaved(int repeats, const std::vector<std::function<void()>>& contenders) {
-  std::vector<double> best(contenders.size(), 1e300);
+/// Runs several contenders in turns (A B C A B C ...), `repeats` rounds, so that a change in the
+/// machine's load during the run hits all of them alike, and keeps each one's best run.
+/// Contender i, called with the round's number (0, 1, ...: a seed, say), returns a result R;
+/// better(a, b) says whether a beats b.
+template <class R, class Better>
+std::vector<R> best_in_turns(int repeats, const std::vector<std::function<R(int)>>& contenders, Better better) {
+  std::vector<R> best(contenders.size());
   for (int r = 0; r < repeats; ++r)
     for (std::size_t i = 0; i < contenders.size(); ++i) {
-      Timer t;
-      contenders[i]();
-      best[i] = std::min(best[i], t.seconds());
+      R got = contenders[i](r);
+      if (r == 0 || better(got, best[i])) best[i] = std::move(got);
     }
   return best;
+}
+
+/// best_in_turns() for contenders that return nothing: each one's fastest time, in seconds.
+inline std::vector<double> best_of_interleaved(int repeats, const std::vector<std::function<void()>>& contenders) {
+  std::vector<std::function<double(int)>> timed;
+  for (const std::function<void()>& c : contenders)
+    timed.push_back([&c](int) {
+      Timer t;
+      c();
+      return t.seconds();
+    });
+  return best_in_turns(repeats, timed, [](double a, double b) { return a < b; });
 }
 
 /// Whether the benchmark was started with --quick (ctest's smoke run).

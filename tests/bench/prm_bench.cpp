@@ -65,22 +65,9 @@ Result ours(const csl::CollisionWorld& world, const csl::Config& start, const cs
   return r;
 }
 
-// Each contender's fastest of `repeats` runs, the contenders taking turns (A B C A B C ...),
-// so that a change in the machine's load during the row hits all of them alike. A contender
-// gets the repeat's number (0, 1, ...) to seed its run with: a run repeated with the same seed
-// repeats every branch, which the CPU's branch predictor partly learns (ours took 0.67-0.69 us
-// per milestone at n = 1000 repeating seed 1, 0.81-0.93 with a new seed per run), while OMPL's
-// PRM draws new samples every run. Fresh samples for both: the bench times unseen roadmaps.
-std::vector<Result> fastest_in_turns(int repeats, const std::vector<std::function<Result(int)>>& contenders) {
-  std::vector<Result> best(contenders.size());
-  for (int r = 0; r < repeats; ++r)
-    for (std::size_t i = 0; i < contenders.size(); ++i) {
-      const Result got = contenders[i](r);
-      // Per milestone: runs with different seeds grow slightly different roadmaps.
-      if (r == 0 || got.us_per_milestone() < best[i].us_per_milestone()) best[i] = got;
-    }
-  return best;
-}
+// The faster of two runs: per milestone, since runs with different seeds grow slightly
+// different roadmaps.
+bool faster_per_milestone(const Result& a, const Result& b) { return a.us_per_milestone() < b.us_per_milestone(); }
 
 #ifdef CSPACELAB_WITH_OMPL
 namespace ob = ompl::base;
@@ -107,7 +94,10 @@ Result ompl_prm(const ob::SpaceInformationPtr& si, long milestones) {
 }
 #endif
 
-// Our PRM's seed in the repeat r (see fastest_in_turns()).
+// Our PRM's seed in the repeat r. A run repeated with the same seed repeats every branch, which
+// the CPU's branch predictor partly learns (ours took 0.67-0.69 us per milestone at n = 1000
+// repeating seed 1, 0.81-0.93 with a new seed per run), while OMPL's PRM draws new samples every
+// run. Fresh samples for both: the bench times unseen roadmaps.
 std::uint64_t seed_of(int r) { return 1 + static_cast<std::uint64_t>(r); }
 
 // The first free configuration a seeded sampler finds.
@@ -175,7 +165,7 @@ int main(int argc, char** argv) {
 #ifdef CSPACELAB_WITH_OMPL
     contenders.push_back([&](int) { return ompl_prm(si, row.reference.milestones); });
 #endif
-    const std::vector<Result> best = fastest_in_turns(repeats, contenders);
+    const std::vector<Result> best = bench::best_in_turns(repeats, contenders, faster_per_milestone);
     row.ours = best[0];
     row.stepped = best[1];
     if (best.size() > 2) row.ompl = best[2];
@@ -204,7 +194,7 @@ int main(int argc, char** argv) {
 #ifdef CSPACELAB_WITH_OMPL
     contenders.push_back([&](int) { return ompl_prm(si, row.reference.milestones); });
 #endif
-    const std::vector<Result> best = fastest_in_turns(repeats, contenders);
+    const std::vector<Result> best = bench::best_in_turns(repeats, contenders, faster_per_milestone);
     row.ours = best[0];
     row.stepped = best[1];
     if (best.size() > 2) row.ompl = best[2];
