@@ -3,7 +3,7 @@
 // answer typed and checked.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { withPage, worldToPage, click, waitFrames, screenshot, inspectPng, api, cli } from './lib/harness.mjs';
+import { withPage, chord, worldToPage, click, waitFrames, screenshot, inspectPng, api, cli } from './lib/harness.mjs';
 
 test('PRM analysis: an experiment, and P9 by clicking', () => withPage(async ({ page, browser }) => {
   await api(page, 'select_lesson', { id: 'analysis' });
@@ -67,10 +67,7 @@ test('C-space notation: build a robot, then answer an exercise with the keyboard
   assert.equal(s.check.correct, false);
   assert.match(s.check.explanation, /S\^2/);
   await waitFrames(page, 2);
-  await page.keyboard.down('Control');
-  await page.keyboard.press('a');  // select all: the next keys replace the answer
-  await page.keyboard.up('Control');
-  await waitFrames(page, 2);
+  await chord(page, 'Control', 'a');  // select all: the next keys replace the answer
   s = await answer(page, 'T^3');
   assert.equal(s.answer, 'T^3');
   assert.equal(s.check.correct, true);

@@ -3,7 +3,7 @@
 // drag distance) that the app's JS API reports and the screenshot shows.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { withPage, worldToPage, drag, click, keys, waitFrames, screenshot, inspectPng, api,
+import { withPage, chord, worldToPage, drag, click, keys, waitFrames, screenshot, inspectPng, api,
          refusal } from './lib/harness.mjs';
 
 test('dragging on the workspace canvas creates a disk obstacle',
@@ -71,12 +71,7 @@ test('undo or a new scene in the middle of a drag ends the drag and undoes it',
   }, base);
   await waitFrames(page, 2);
   const scene = () => page.evaluate(() => window.cspacelab.getScene());
-  const undoKeys = async (key) => {
-    await page.keyboard.down('Control');
-    await page.keyboard.press(key);
-    await page.keyboard.up('Control');
-    await waitFrames(page, 2);
-  };
+  const undoKeys = (key) => chord(page, 'Control', key);
   const [centre, rim, rimOut, moved] = await worldToPage(page, [[0.6, 0.4], [0.7, 0.4], [0.8, 0.4], [0.6, 0.3]]);
   // Presses at `from` and moves to `to`, frames between, and keeps the button down.
   const hold = async (from, to) => {
@@ -105,11 +100,14 @@ test('undo or a new scene in the middle of a drag ends the drag and undoes it',
   assert.ok((await scene()).obstacles[1].radius > 0.15, 'redo brings the drag back');
   await undoKeys('z');
 
-  // Move the whole disk, and undo and release within one frame.
+  // Move the whole disk, and undo and release within one frame (Ctrl held from a frame before
+  // to one after: see chord()).
   await hold(centre, moved);
   await page.keyboard.down('Control');
+  await waitFrames(page, 1);
   await page.keyboard.press('z');
   await page.mouse.up();
+  await waitFrames(page, 1);
   await page.keyboard.up('Control');
   await waitFrames(page, 3);
   assert.deepEqual((await scene()).obstacles, base.obstacles);

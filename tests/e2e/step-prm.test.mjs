@@ -3,7 +3,7 @@
 // roadmap is exactly the one `cspacelab plan` builds for the same scene, parameters and seed.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { withPage, drawDisk, worldToPage, drag, click, keys, waitFrames, screenshot, inspectPng, api, cli, tempJson,
+import { withPage, chord, drawDisk, worldToPage, drag, click, keys, waitFrames, screenshot, inspectPng, api, cli, tempJson,
          refusal } from './lib/harness.mjs';
 
 test('Step PRM: edit with the mouse, step, step back, run, and match the CLI',
@@ -29,9 +29,7 @@ test('Step PRM: edit with the mouse, step, step back, run, and match the CLI',
   await keys(page, 'Escape');
   assert.equal((await api(page, 'get_scene')).obstacles.length, 3);
   // Undo one: the polygon goes.
-  await page.keyboard.down('Control');
-  await keys(page, 'z');
-  await page.keyboard.up('Control');
+  await chord(page, 'Control', 'z');
   scene = await api(page, 'get_scene');
   assert.deepEqual(scene.obstacles.map((o) => o.type), ['disk', 'disk']);
 

@@ -136,6 +136,20 @@ export async function keys(page, ...names) {
 }
 
 /**
+ * A key pressed with a modifier held, chord(page, 'Control', 'z'), frames in between: ImGui's
+ * SDL backend (1.86) takes the modifiers' state at the time it handles the key, so a modifier
+ * pressed and released within the key's frame would make Ctrl+Z a plain Z (CI saw that once).
+ */
+export async function chord(page, modifier, key) {
+  await page.keyboard.down(modifier);
+  await waitFrames(page, 1);
+  await page.keyboard.press(key);
+  await waitFrames(page, 1);
+  await page.keyboard.up(modifier);
+  await waitFrames(page, 2);
+}
+
+/**
  * Calls window.cspacelab[method](...args) in the page and returns the message it was refused
  * with, or null if it was taken: refusal(page, 'setParams', {samples: 20001}).
  */
