@@ -101,6 +101,31 @@ double now_ms() {
   return 1000.0 * static_cast<double>(SDL_GetPerformanceCounter()) / static_cast<double>(SDL_GetPerformanceFrequency());
 }
 
+bool is_modifier(SDL_Scancode key) {
+  switch (key) {
+    case SDL_SCANCODE_LCTRL: case SDL_SCANCODE_RCTRL: case SDL_SCANCODE_LSHIFT: case SDL_SCANCODE_RSHIFT:
+    case SDL_SCANCODE_LALT: case SDL_SCANCODE_RALT: case SDL_SCANCODE_LGUI: case SDL_SCANCODE_RGUI:
+      return true;
+    default:
+      return false;
+  }
+}
+
+// ImGui 1.86's SDL backend sets io.KeyCtrl and the others from SDL_GetModState() when it handles
+// a key: the state after every event SDL has queued, which within one frame can be past the key
+// (Ctrl released just after Z turned Ctrl+Z into a plain Z). Each key event carries the
+// modifiers of its own moment; those are the ones that count.
+void process(const SDL_Event& event) {
+  ImGui_ImplSDL2_ProcessEvent(&event);
+  if (event.type != SDL_KEYDOWN && event.type != SDL_KEYUP) return;
+  ImGuiIO& io = ImGui::GetIO();
+  const unsigned mod = event.key.keysym.mod;
+  io.KeyShift = (mod & KMOD_SHIFT) != 0;
+  io.KeyCtrl = (mod & KMOD_CTRL) != 0;
+  io.KeyAlt = (mod & KMOD_ALT) != 0;
+  io.KeySuper = (mod & KMOD_GUI) != 0;
+}
+
 void summarise(const std::array<double, 120>& values, std::size_t count, double& mean, double& p95, double& max) {
   std::array<double, 120> sorted = values;
   std::sort(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(count));
@@ -117,17 +142,23 @@ void Platform::frame_once() {
   // Releases held back from the last frame first, so that frame saw the keys down.
   std::vector<SDL_Event> pending;
   pending.swap(deferred_);
-  for (const SDL_Event& e : pending) ImGui_ImplSDL2_ProcessEvent(&e);
+  for (const SDL_Event& e : pending) process(e);
   std::vector<SDL_Scancode> pressed_now;
   SDL_Event event;
   while (SDL_PollEvent(&event)) {
     if (event.type == SDL_KEYDOWN) pressed_now.push_back(event.key.keysym.scancode);
-    if (event.type == SDL_KEYUP &&
-        std::find(pressed_now.begin(), pressed_now.end(), event.key.keysym.scancode) != pressed_now.end()) {
-      deferred_.push_back(event);
-      continue;
+    // ImGui 1.86 sees one state a frame, not a sequence: a key released in the frame that
+    // pressed it would not count as pressed, and a modifier released after a key would not count
+    // as held with it (Ctrl+Z with both released at once). Such releases wait a frame.
+    if (event.type == SDL_KEYUP) {
+      const SDL_Scancode key = event.key.keysym.scancode;
+      const bool pressed = std::find(pressed_now.begin(), pressed_now.end(), key) != pressed_now.end();
+      if (pressed || (is_modifier(key) && !pressed_now.empty())) {
+        deferred_.push_back(event);
+        continue;
+      }
     }
-    ImGui_ImplSDL2_ProcessEvent(&event);
+    process(event);
     if (event.type == SDL_QUIT) quit_ = true;
     if (event.type == SDL_WINDOWEVENT && event.window.event == SDL_WINDOWEVENT_CLOSE &&
         event.window.windowID == SDL_GetWindowID(window_))

@@ -48,8 +48,9 @@ class Platform {
   void sync_canvas_size();
   void update_pixel_ratio();
 
-  // Key releases that arrived in the frame of their press, delivered a frame later (ImGui 1.86
-  // reads keys as per-frame state: a press and release in one frame would go unseen).
+  // Key releases delivered a frame later: those that arrived in the frame of their press, and
+  // a modifier's after any press (ImGui 1.86 reads keys as per-frame state: a press and release
+  // in one frame would go unseen, and Ctrl+Z released at once would be a plain Z).
   std::vector<SDL_Event> deferred_;
   SDL_Window* window_ = nullptr;
   void* gl_context_ = nullptr;

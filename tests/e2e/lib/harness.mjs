@@ -136,9 +136,9 @@ export async function keys(page, ...names) {
 }
 
 /**
- * A key pressed with a modifier held, chord(page, 'Control', 'z'), frames in between: ImGui's
- * SDL backend (1.86) takes the modifiers' state at the time it handles the key, so a modifier
- * pressed and released within the key's frame would make Ctrl+Z a plain Z (CI saw that once).
+ * A key pressed with a modifier held, chord(page, 'Control', 'z'), frames in between, as a
+ * person types it. (The app also takes a chord that lands within one frame: see the draw-disk
+ * test that dispatches one, and Platform::frame_once.)
  */
 export async function chord(page, modifier, key) {
   await page.keyboard.down(modifier);
