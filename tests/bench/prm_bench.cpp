@@ -116,6 +116,55 @@ struct Row {
   Result ours, stepped, ompl;
 };
 
+// A scene of the bench: our world with a free start and goal (they only seed our roadmap;
+// OMPL's grows on its own), the edge-check resolution both use, and natively OMPL's view of it.
+struct Scene {
+  std::string name;
+  const csl::CollisionWorld* world = nullptr;
+  csl::Config start, goal;
+  double step = 0.0;  ///< OMPL's default resolution: 1% of the space's extent
+#ifdef CSPACELAB_WITH_OMPL
+  ob::SpaceInformationPtr si;
+
+  // OMPL's space information over `space`, valid where our world is free (`config` reads a
+  // state as our configuration); the step is then what OMPL computes, not our formula for it.
+  void with_ompl(const ob::StateSpacePtr& space, std::function<csl::Config(const ob::State*)> config) {
+    si = std::make_shared<ob::SpaceInformation>(space);
+    const csl::CollisionWorld* w = world;
+    si->setStateValidityChecker([w, config](const ob::State* s) { return w->is_free(config(s)); });
+    si->setup();
+    step = si->getStateValidityCheckingResolution() * space->getMaximumExtent();
+  }
+#endif
+};
+
+Scene scene(std::string name, const csl::CollisionWorld& world, double step) {
+  Scene s;
+  s.name = std::move(name);
+  s.world = &world;
+  s.start = first_free(world, 1);
+  s.goal = first_free(world, 2);
+  s.step = step;
+  return s;
+}
+
+// One row: our PRM phase by phase and stepped, and OMPL's, n samples, in turns.
+Row measure(const Scene& s, int n, int repeats) {
+  Row row{s.name, n, {}, {}, {}, {}};
+  row.reference = ours(*s.world, s.start, s.goal, n, s.step, 1);
+  std::vector<std::function<Result(int)>> contenders = {
+      [&](int r) { return ours(*s.world, s.start, s.goal, n, s.step, seed_of(r)); },
+      [&](int r) { return ours(*s.world, s.start, s.goal, n, s.step, seed_of(r), true); }};
+#ifdef CSPACELAB_WITH_OMPL
+  contenders.push_back([&](int) { return ompl_prm(s.si, row.reference.milestones); });
+#endif
+  const std::vector<Result> best = bench::best_in_turns(repeats, contenders, faster_per_milestone);
+  row.ours = best[0];
+  row.stepped = best[1];
+  if (best.size() > 2) row.ompl = best[2];
+  return row;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -129,77 +178,35 @@ int main(int argc, char** argv) {
 #endif
 
   const csl::CollisionWorld disks(csl::PointRobot{}, bench::random_disks(7, 20), {0, 0}, {1, 1});
-  std::vector<csl::Obstacle> arm_obstacles = bench::random_disks(11, 6, 0.03, 0.06);
-  const csl::CollisionWorld arm(csl::ArmRobot{{0.5, 0.5}, 0.3, 0.2}, arm_obstacles, {0, 0}, {1, 1});
-  // A free start and goal for each (they only seed our roadmap; OMPL's grows on its own).
-  const csl::Config point_start = first_free(disks, 1), point_goal = first_free(disks, 2);
-  const csl::Config arm_start = first_free(arm, 1), arm_goal = first_free(arm, 2);
+  const csl::CollisionWorld arm(csl::ArmRobot{{0.5, 0.5}, 0.3, 0.2}, bench::random_disks(11, 6, 0.03, 0.06), {0, 0},
+                                {1, 1});
+  std::vector<Scene> scenes = {scene("point, 20 disks, R^2", disks, 0.01 * std::sqrt(2.0)),
+                               scene("2-link arm, 6 disks, T^2", arm, 0.01 * std::sqrt(2.0) * csl::kPi)};
+#ifdef CSPACELAB_WITH_OMPL
+  auto plane = std::make_shared<ob::RealVectorStateSpace>(2);
+  plane->setBounds(0.0, 1.0);
+  scenes[0].with_ompl(plane, [](const ob::State* s) {
+    const auto* v = s->as<ob::RealVectorStateSpace::StateType>();
+    return csl::config({v->values[0], v->values[1]});
+  });
+  auto torus = std::make_shared<ob::CompoundStateSpace>();  // SO(2) x SO(2)
+  torus->addSubspace(std::make_shared<ob::SO2StateSpace>(), 1.0);
+  torus->addSubspace(std::make_shared<ob::SO2StateSpace>(), 1.0);
+  scenes[1].with_ompl(torus, [](const ob::State* s) {
+    const auto* c = s->as<ob::CompoundStateSpace::StateType>();
+    return csl::config({c->as<ob::SO2StateSpace::StateType>(0)->value, c->as<ob::SO2StateSpace::StateType>(1)->value});
+  });
+#endif
 
   // One untimed run of each scene first: under node, V8 compiles wasm with its baseline
   // compiler and tiers hot functions up only after they have run a while, so the first (and
   // shortest) timed rows measured the baseline code; natively this only warms the caches.
-  if (!quick) {
-    ours(disks, point_start, point_goal, 5000, 0.01, 1);
-    ours(arm, arm_start, arm_goal, 5000, 0.01, 1);
-  }
+  if (!quick)
+    for (const Scene& s : scenes) ours(*s.world, s.start, s.goal, 5000, 0.01, 1);
 
   std::vector<Row> rows;
-  for (int n : sizes) {
-    Row row{"point, 20 disks, R^2", n, {}, {}, {}, {}};
-    double step = 0.01 * std::sqrt(2.0);
-#ifdef CSPACELAB_WITH_OMPL
-    auto space = std::make_shared<ob::RealVectorStateSpace>(2);
-    space->setBounds(0.0, 1.0);
-    auto si = std::make_shared<ob::SpaceInformation>(space);
-    si->setStateValidityChecker([&](const ob::State* s) {
-      const auto* v = s->as<ob::RealVectorStateSpace::StateType>();
-      return disks.is_free(csl::config({v->values[0], v->values[1]}));
-    });
-    si->setup();
-    step = si->getStateValidityCheckingResolution() * space->getMaximumExtent();
-#endif
-    row.reference = ours(disks, point_start, point_goal, n, step, 1);
-    std::vector<std::function<Result(int)>> contenders = {
-        [&](int r) { return ours(disks, point_start, point_goal, n, step, seed_of(r)); },
-        [&](int r) { return ours(disks, point_start, point_goal, n, step, seed_of(r), true); }};
-#ifdef CSPACELAB_WITH_OMPL
-    contenders.push_back([&](int) { return ompl_prm(si, row.reference.milestones); });
-#endif
-    const std::vector<Result> best = bench::best_in_turns(repeats, contenders, faster_per_milestone);
-    row.ours = best[0];
-    row.stepped = best[1];
-    if (best.size() > 2) row.ompl = best[2];
-    rows.push_back(row);
-  }
-  for (int n : sizes) {
-    Row row{"2-link arm, 6 disks, T^2", n, {}, {}, {}, {}};
-    double step = 0.01 * std::sqrt(2.0) * csl::kPi;  // OMPL: 1% of SO(2) x SO(2)'s extent, sqrt(2) pi
-#ifdef CSPACELAB_WITH_OMPL
-    auto space = std::make_shared<ob::CompoundStateSpace>();
-    space->addSubspace(std::make_shared<ob::SO2StateSpace>(), 1.0);
-    space->addSubspace(std::make_shared<ob::SO2StateSpace>(), 1.0);
-    auto si = std::make_shared<ob::SpaceInformation>(space);
-    si->setStateValidityChecker([&](const ob::State* s) {
-      const auto* c = s->as<ob::CompoundStateSpace::StateType>();
-      return arm.is_free(csl::config({c->as<ob::SO2StateSpace::StateType>(0)->value,
-                                      c->as<ob::SO2StateSpace::StateType>(1)->value}));
-    });
-    si->setup();
-    step = si->getStateValidityCheckingResolution() * space->getMaximumExtent();
-#endif
-    row.reference = ours(arm, arm_start, arm_goal, n, step, 1);
-    std::vector<std::function<Result(int)>> contenders = {
-        [&](int r) { return ours(arm, arm_start, arm_goal, n, step, seed_of(r)); },
-        [&](int r) { return ours(arm, arm_start, arm_goal, n, step, seed_of(r), true); }};
-#ifdef CSPACELAB_WITH_OMPL
-    contenders.push_back([&](int) { return ompl_prm(si, row.reference.milestones); });
-#endif
-    const std::vector<Result> best = bench::best_in_turns(repeats, contenders, faster_per_milestone);
-    row.ours = best[0];
-    row.stepped = best[1];
-    if (best.size() > 2) row.ompl = best[2];
-    rows.push_back(row);
-  }
+  for (const Scene& s : scenes)
+    for (int n : sizes) rows.push_back(measure(s, n, repeats));
 
   if (as_json) {
     std::printf("[");
