@@ -1,4 +1,5 @@
 // cspacelab experiment: PRM's empirical failure rate against the bound, for several n.
+#include <algorithm>
 #include <stdexcept>
 
 #include "cli/commands.hpp"
@@ -40,6 +41,10 @@ int run_experiment(Args& args, std::ostream& os) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
   }
+  // Every run within the budget: the largest n, and the reference run (by default 4 x that n).
+  require_pairs_budget(world.space(), options, *std::max_element(params.sample_counts.begin(), params.sample_counts.end()));
+  require_pairs_budget(world.space(), options, ex->params().reference_samples,
+                       "the reference run (--reference-samples; default max(2000, 4 x the largest n)): ");
   ex->run();
 
   const ExperimentReference& ref = ex->reference();
@@ -76,7 +81,7 @@ const Command kExperimentCommand{
     "experiment", "PRM's failure rate over many runs, for several n, against the bound",
     "Usage: cspacelab experiment SCENE.json --samples-list N1,N2,... [--trials T]\n"
     "                            [--k K | --radius R | --prm-star] [--checker C] [--seed S]\n"
-    "                            [--reference-samples M]\n\n"
+    "                            [--reference-samples M] [--max-pairs P]\n\n"
     "Runs PRM T times (default 20, each with its own seed derived from S) for each n, and counts\n"
     "failures: start and goal not connected. Whether a path exists at all, and its length L and\n"
     "clearance r for the bound of section 2.1, come from a reference run with M samples (default\n"
@@ -87,7 +92,9 @@ const Command kExperimentCommand{
     "      \"rows\": [{\"samples\": n, \"trials\": T, \"failures\", \"failure_rate\", \"ci_low\",\n"
     "      \"ci_high\" (95% Wilson interval), \"bound\" (null without a reference path),\n"
     "      \"bound_vacuous\"}], \"neighbors\", \"checker\", \"seed\"}\n"
-    "If the reference run finds no path, failures are still counted but mean little.\n",
+    "If the reference run finds no path, failures are still counted but mean little.\n"
+    "If any run, the reference run included, is expected to check more than P candidate pairs\n"
+    "(default 2e7), nothing runs: an error (exit status 2) says the largest radius that fits.\n",
     run_experiment};
 
 }  // namespace csl::cli

@@ -29,6 +29,7 @@ int run_plan(Args& args, std::ostream& os) {
   require_free(world, scene.goal, "the goal");
   PrmParams params;
   params.samples = static_cast<int>(parse_count(samples.value_or("200"), "--samples", kMaxPrmSamples));
+  require_pairs_budget(world.space(), options, params.samples);
   params.neighbors = options.neighbors;
   params.checker = options.checker;
   params.seed = options.seed;
@@ -82,7 +83,7 @@ const Command kPlanCommand{
     "plan", "plan from start to goal with the probabilistic roadmap method",
     "Usage: cspacelab plan SCENE.json [--samples N] [--k K | --radius R | --prm-star]\n"
     "                      [--checker bisection|grid:N|step:D] [--seed S] [--roadmap]\n"
-    "                      [--connector straight|potential]\n\n"
+    "                      [--connector straight|potential] [--max-pairs P]\n\n"
     "Runs PRM as the homework states it: add start and goal to V; draw N samples (default 200)\n"
     "uniformly in the configuration space and keep the free ones; for each vertex, check the\n"
     "straight line to each close vertex (the K nearest, default 10; all within distance R; or\n"
@@ -105,7 +106,11 @@ const Command kPlanCommand{
     "  \"steps\": the planner's step count, \"roadmap_hash\": 16 hex digits (FNV-1a of V and E)}\n"
     "With --roadmap also \"vertices\": [Q, ...] and \"edge_list\": [[a, b], ...] (indices into\n"
     "vertices; 0 is the start, 1 the goal).\n"
-    "A start or goal in collision is an error (exit status 2) naming the obstacle.\n",
+    "A start or goal in collision is an error (exit status 2) naming the obstacle.\n"
+    "So is a run expected to check more than P candidate pairs (default 2e7): a radius makes them\n"
+    "grow with N^2 ((N+2)(N+1)/2 times the chance that two vertices lie within R), k rules with\n"
+    "(N+2) K.\n"
+    "The error says the largest R that fits; --max-pairs raises the limit.\n",
     run_plan};
 
 }  // namespace csl::cli

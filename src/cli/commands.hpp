@@ -41,12 +41,24 @@ Config parse_config(const std::string& text, const Scene& scene, const std::stri
 Vec2 parse_point(const std::string& text, const std::string& what);
 /// The planner options shared by plan and experiment: [--k K | --radius R | --prm-star]
 /// [--checker bisection|grid:N|step:D] [--seed S]; defaults k = 10, bisection, seed 1.
+/// The candidate pairs a run may be expected to check unless --max-pairs says otherwise: a
+/// radius rule grows the work with n^2 (200000 samples within r = 5 is 2e10 pairs: hours and
+/// gigabytes). 2e7 is about 10 seconds and 1 GB (measured: 100000 samples, r = 0.0353 in the
+/// narrow passage, 1.5e7 pairs checked: 9 s, 1.07 GB), and admits k = 20 at the largest n.
+inline constexpr double kDefaultMaxPairs = 2e7;
+
 struct PlannerOptions {
   NeighborRule neighbors;
   EdgeCheckerSpec checker;
   std::uint64_t seed = 1;
+  double max_pairs = kDefaultMaxPairs;  ///< --max-pairs
 };
 PlannerOptions take_planner_options(Args& args);
+/// UsageError if PRM with `samples` samples is expected to check more candidate pairs than
+/// options.max_pairs (expected_candidate_pairs()): said before the run, with what would fit.
+/// `run`, if not empty, names the run first ("the reference run: ").
+void require_pairs_budget(const Space& space, const PlannerOptions& options, int samples,
+                          const std::string& run = "");
 /// UsageError if q is not free in the scene ("where it matters": planning from it).
 void require_free(const CollisionWorld& world, const Config& q, const std::string& what);
 /// Prints JSON on os (one line; invalid UTF-8 in strings is replaced, not an error).

@@ -66,9 +66,33 @@ PlannerOptions take_planner_options(Args& args) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--checker: ") + e.what());
   }
+  if (const auto max_pairs = args.take("max-pairs")) {
+    o.max_pairs = parse_number(*max_pairs, "--max-pairs");
+    if (!(o.max_pairs >= 1.0)) throw UsageError("--max-pairs: must be at least 1");
+  }
   if (const auto seed = args.take("seed"))
     o.seed = static_cast<std::uint64_t>(parse_count(*seed, "--seed", 9007199254740991LL));  // 2^53 - 1: exact in JSON
   return o;
+}
+
+void require_pairs_budget(const Space& space, const PlannerOptions& options, int samples, const std::string& run) {
+  const double pairs = expected_candidate_pairs(space, options.neighbors, samples);
+  if (pairs <= options.max_pairs) return;
+  char text[400];
+  const NeighborRule& rule = options.neighbors;
+  if (rule.kind == NeighborRule::Kind::Radius) {
+    std::snprintf(text, sizeof text,
+                  "--radius %g with %d samples means about %.2g candidate pairs, more than the %.2g a run may "
+                  "check (--max-pairs); with this n, r at most %.4g",
+                  rule.radius, samples, pairs, options.max_pairs, radius_for_pairs(space, samples, options.max_pairs));
+  } else {
+    const std::string named = rule.kind == NeighborRule::Kind::PrmStar ? "--prm-star" : "--k " + std::to_string(rule.k);
+    std::snprintf(text, sizeof text,
+                  "%s with %d samples means up to %.2g candidate pairs, more than the %.2g a run may check "
+                  "(--max-pairs); take fewer samples or fewer neighbours (--k)",
+                  named.c_str(), samples, pairs, options.max_pairs);
+  }
+  throw UsageError(run + text);
 }
 
 void require_free(const CollisionWorld& world, const Config& q, const std::string& what) {

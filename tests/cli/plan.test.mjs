@@ -1,7 +1,7 @@
 // cspacelab plan, bound, visibility and experiment: their contracts, determinism, bad input.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { json, fails, scene, tempScene } from './lib/cli.mjs';
+import { json, fails, run, scene, tempScene } from './lib/cli.mjs';
 
 const GAP = scene('wall-gap.json');
 
@@ -102,4 +102,32 @@ test('bad input for plan, bound, visibility, experiment', () => {
   fails(/--gap: 'nan' is not a finite number/, 'visibility', '--x', '0.2', '--y', '0.5', '--gap', 'nan');
   fails(/missing --samples-list/, 'experiment', GAP);
   fails(/--trials: at least 1/, 'experiment', GAP, '--samples-list', '10', '--trials', '0');
+});
+
+// A radius makes the candidate pairs grow with n^2: a run expected to check more than
+// --max-pairs (default 2e7) is refused before it starts, and says the largest radius that fits.
+test('plan and experiment refuse a run with too many candidate pairs, and say what fits', () => {
+  // The radius the error names fits (a hair above it does not), under any --max-pairs.
+  const refused = run('plan', GAP, '--samples', '2000', '--radius', '0.5', '--max-pairs', '20000');
+  assert.equal(refused.status, 2);
+  const r = Number(refused.stderr.match(/r at most ([0-9.e+-]+)/)[1]);
+  assert.ok(r > 0.05 && r < 0.06, `r = ${r}`);  // 20000 of 2002 x 2001 / 2 pairs: pi r^2 = 0.01
+  assert.ok(json('plan', GAP, '--samples', '2000', '--radius', String(r * 0.999), '--max-pairs', '20000').edge_checks > 0);
+  fails(/candidate pairs/, 'plan', GAP, '--samples', '2000', '--radius', String(r * 1.01), '--max-pairs', '20000');
+
+  // k rules: (n + 2) k pairs at most.
+  fails(/--k 50 with 1000 samples means up to 5e\+04 candidate pairs.*--k/, 'plan', GAP, '--samples', '1000', '--k', '50', '--max-pairs', '10000');
+  assert.equal(json('plan', GAP, '--samples', '1000', '--k', '9', '--max-pairs', '10000').samples, 1000);
+  fails(/--max-pairs: must be at least 1/, 'plan', GAP, '--max-pairs', '0');
+
+  // The default budget (these would run for hours without it: small budgets first).
+  fails(/--radius 5 with 200000 samples means about 2e\+10 candidate pairs, more than the 2e\+07 .*r at most 0\.0178/,
+        'plan', GAP, '--samples', '200000', '--radius', '5');
+  fails(/--prm-star with 1000000 samples means up to 5\.7e\+07 candidate pairs/, 'plan', GAP, '--samples', '1000000', '--prm-star');
+
+  // experiment: the reference run (4 x the largest n, at least 2000) counts too.
+  fails(/the reference run .*--radius 0\.3 with 2000 samples/, 'experiment', GAP, '--samples-list', '100',
+        '--radius', '0.3', '--max-pairs', '20000', '--trials', '1');
+  fails(/^cspacelab: --radius 0\.3 with 1000 samples/, 'experiment', GAP, '--samples-list', '100,1000',
+        '--radius', '0.3', '--max-pairs', '20000', '--trials', '1');
 });

@@ -9,8 +9,9 @@ export const CLI = process.env.CSPACELAB_CLI;
 export const SOURCE = process.env.CSPACELAB_SOURCE;
 export const scene = (name) => path.join(SOURCE, 'assets', 'scenes', name);
 
+// Two minutes at most: a call that runs longer has failed (e.g. a budget check gone missing).
 export function run(...args) {
-  return spawnSync(CLI, args, { encoding: 'utf8', maxBuffer: 64 << 20 });
+  return spawnSync(CLI, args, { encoding: 'utf8', maxBuffer: 64 << 20, timeout: 120000 });
 }
 
 /** Runs the CLI, expects success, returns the parsed JSON. */
