@@ -149,13 +149,14 @@ void Platform::frame_once() {
     if (event.type == SDL_KEYDOWN) pressed_now.push_back(event.key.keysym.scancode);
     // ImGui 1.86 sees one state a frame, not a sequence: a key released in the frame that
     // pressed it would not count as pressed, and a modifier released after a key would not count
-    // as held with it (Ctrl+Z with both released at once). Such releases wait a frame.
+    // as held with it (Ctrl+Z with both released at once). Such a release waits a frame, and so
+    // does everything after it, in order (a later key would set the modifiers of its own moment).
     if (event.type == SDL_KEYUP) {
       const SDL_Scancode key = event.key.keysym.scancode;
       const bool pressed = std::find(pressed_now.begin(), pressed_now.end(), key) != pressed_now.end();
       if (pressed || (is_modifier(key) && !pressed_now.empty())) {
         deferred_.push_back(event);
-        continue;
+        break;  // the rest stays in SDL's queue for the next frame
       }
     }
     process(event);

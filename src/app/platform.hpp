@@ -48,9 +48,10 @@ class Platform {
   void sync_canvas_size();
   void update_pixel_ratio();
 
-  // Key releases delivered a frame later: those that arrived in the frame of their press, and
-  // a modifier's after any press (ImGui 1.86 reads keys as per-frame state: a press and release
-  // in one frame would go unseen, and Ctrl+Z released at once would be a plain Z).
+  // A key release delivered a frame later (and the events after it with it, left in SDL's
+  // queue): one that arrived in the frame of its press, or a modifier's after any press (ImGui
+  // 1.86 reads keys as per-frame state: a press and release in one frame would go unseen, and
+  // Ctrl+Z released at once would be a plain Z). At most one.
   std::vector<SDL_Event> deferred_;
   SDL_Window* window_ = nullptr;
   void* gl_context_ = nullptr;
