@@ -44,7 +44,7 @@ int run_experiment(Args& args, std::ostream& os) {
   // Every run within the budget: the largest n, and the reference run (by default 4 x that n).
   require_pairs_budget(world.space(), options, *std::max_element(params.sample_counts.begin(), params.sample_counts.end()));
   require_pairs_budget(world.space(), options, ex->params().reference_samples,
-                       "the reference run (--reference-samples; default max(2000, 4 x the largest n)): ");
+                       "the reference run (--reference-samples M, by default 4 x the largest n, within [2000, 1000000]): ");
   ex->run();
 
   const ExperimentReference& ref = ex->reference();
@@ -94,7 +94,8 @@ const Command kExperimentCommand{
     "      \"bound_vacuous\"}], \"neighbors\", \"checker\", \"seed\"}\n"
     "If the reference run finds no path, failures are still counted but mean little.\n"
     "If any run, the reference run included, is expected to check more than P candidate pairs\n"
-    "(default 2e7), nothing runs: an error (exit status 2) says the largest radius that fits.\n",
+    "(default 2e7), nothing runs: an error (exit status 2) says so, and for --radius the largest\n"
+    "radius that fits. (The limit is per run; T x the n's runs take that many times as long.)\n",
     run_experiment};
 
 }  // namespace csl::cli

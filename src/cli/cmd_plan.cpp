@@ -110,7 +110,7 @@ const Command kPlanCommand{
     "So is a run expected to check more than P candidate pairs (default 2e7): a radius makes them\n"
     "grow with N^2 ((N+2)(N+1)/2 times the chance that two vertices lie within R), k rules with\n"
     "(N+2) K.\n"
-    "The error says the largest R that fits; --max-pairs raises the limit.\n",
+    "For --radius the error says the largest R that fits; --max-pairs raises the limit.\n",
     run_plan};
 
 }  // namespace csl::cli

@@ -39,14 +39,16 @@ Scene load_scene(const std::string& path);
 Config parse_config(const std::string& text, const Scene& scene, const std::string& what);
 /// A point "x,y"; UsageError naming `what` otherwise.
 Vec2 parse_point(const std::string& text, const std::string& what);
-/// The planner options shared by plan and experiment: [--k K | --radius R | --prm-star]
-/// [--checker bisection|grid:N|step:D] [--seed S]; defaults k = 10, bisection, seed 1.
 /// The candidate pairs a run may be expected to check unless --max-pairs says otherwise: a
 /// radius rule grows the work with n^2 (200000 samples within r = 5 is 2e10 pairs: hours and
 /// gigabytes). 2e7 is about 10 seconds and 1 GB (measured: 100000 samples, r = 0.0353 in the
-/// narrow passage, 1.5e7 pairs checked: 9 s, 1.07 GB), and admits k = 20 at the largest n.
+/// narrow passage, 1.96e7 pairs expected, 1.5e7 checked: 9 s, 1.07 GB); it admits k = 19 at
+/// the largest n ((10^6 + 2) k pairs).
 inline constexpr double kDefaultMaxPairs = 2e7;
 
+/// The planner options shared by plan and experiment: [--k K | --radius R | --prm-star]
+/// [--checker bisection|grid:N|step:D] [--seed S] [--max-pairs P]; defaults k = 10, bisection,
+/// seed 1, kDefaultMaxPairs.
 struct PlannerOptions {
   NeighborRule neighbors;
   EdgeCheckerSpec checker;

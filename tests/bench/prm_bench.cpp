@@ -128,7 +128,9 @@ struct Scene {
 
   // OMPL's space information over `space`, valid where our world is free (`config` reads a
   // state as our configuration); the step is then what OMPL computes, not our formula for it.
-  void with_ompl(const ob::StateSpacePtr& space, std::function<csl::Config(const ob::State*)> config) {
+  // A template, not a std::function: OMPL's validity check calls no more than it did inline.
+  template <typename ToConfig>
+  void with_ompl(const ob::StateSpacePtr& space, ToConfig config) {
     si = std::make_shared<ob::SpaceInformation>(space);
     const csl::CollisionWorld* w = world;
     si->setStateValidityChecker([w, config](const ob::State* s) { return w->is_free(config(s)); });

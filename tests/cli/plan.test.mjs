@@ -107,16 +107,19 @@ test('bad input for plan, bound, visibility, experiment', () => {
 // A radius makes the candidate pairs grow with n^2: a run expected to check more than
 // --max-pairs (default 2e7) is refused before it starts, and says the largest radius that fits.
 test('plan and experiment refuse a run with too many candidate pairs, and say what fits', () => {
-  // The radius the error names fits (a hair above it does not), under any --max-pairs.
-  const refused = run('plan', GAP, '--samples', '2000', '--radius', '0.5', '--max-pairs', '20000');
-  assert.equal(refused.status, 2);
-  const r = Number(refused.stderr.match(/r at most ([0-9.e+-]+)/)[1]);
-  assert.ok(r > 0.05 && r < 0.06, `r = ${r}`);  // 20000 of 2002 x 2001 / 2 pairs: pi r^2 = 0.01
-  assert.ok(json('plan', GAP, '--samples', '2000', '--radius', String(r * 0.999), '--max-pairs', '20000').edge_checks > 0);
-  fails(/candidate pairs/, 'plan', GAP, '--samples', '2000', '--radius', String(r * 1.01), '--max-pairs', '20000');
+  // The radius the error names, as printed, fits (1% more does not), under any --max-pairs.
+  for (const [samples, maxPairs] of [['2000', '20000'], ['5000', '123457'], ['300', '1000']]) {
+    const refused = run('plan', GAP, '--samples', samples, '--radius', '0.5', '--max-pairs', maxPairs);
+    assert.equal(refused.status, 2);
+    const printed = refused.stderr.match(/r at most ([0-9.e+-]+)/)[1];
+    assert.ok(json('plan', GAP, '--samples', samples, '--radius', printed, '--max-pairs', maxPairs).edge_checks > 0, printed);
+    fails(/candidate pairs/, 'plan', GAP, '--samples', samples, '--radius', String(Number(printed) * 1.01), '--max-pairs', maxPairs);
+  }
+  // 20000 of 2002 x 2001 / 2 pairs: pi r^2 = 0.00998..., r = 0.056376...
+  fails(/r at most 0\.05637$/, 'plan', GAP, '--samples', '2000', '--radius', '0.5', '--max-pairs', '20000');
 
   // k rules: (n + 2) k pairs at most.
-  fails(/--k 50 with 1000 samples means up to 5e\+04 candidate pairs.*--k/, 'plan', GAP, '--samples', '1000', '--k', '50', '--max-pairs', '10000');
+  fails(/--k 50 with 1000 samples means up to 5\.01e\+04 candidate pairs.*--k/, 'plan', GAP, '--samples', '1000', '--k', '50', '--max-pairs', '10000');
   assert.equal(json('plan', GAP, '--samples', '1000', '--k', '9', '--max-pairs', '10000').samples, 1000);
   fails(/--max-pairs: must be at least 1/, 'plan', GAP, '--max-pairs', '0');
 

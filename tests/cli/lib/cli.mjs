@@ -14,10 +14,12 @@ export function run(...args) {
   return spawnSync(CLI, args, { encoding: 'utf8', maxBuffer: 64 << 20, timeout: 120000 });
 }
 
+const timedOut = (r) => (r.error?.code === 'ETIMEDOUT' ? ' (timed out after 2 min)' : r.signal ? ` (${r.signal})` : '');
+
 /** Runs the CLI, expects success, returns the parsed JSON. */
 export function json(...args) {
   const r = run(...args);
-  assert.equal(r.status, 0, `cspacelab ${args.join(' ')} failed: ${r.stderr}`);
+  assert.equal(r.status, 0, `cspacelab ${args.join(' ')} failed${timedOut(r)}: ${r.stderr}`);
   assert.equal(r.stderr, '');
   return JSON.parse(r.stdout);
 }
@@ -25,7 +27,7 @@ export function json(...args) {
 /** Runs the CLI, expects exit status 2 and exactly one stderr line matching `pattern`. */
 export function fails(pattern, ...args) {
   const r = run(...args);
-  assert.equal(r.status, 2, `expected exit 2 from cspacelab ${args.join(' ')}, got ${r.status}: ${r.stdout}`);
+  assert.equal(r.status, 2, `expected exit 2 from cspacelab ${args.join(' ')}, got ${r.status}${timedOut(r)}: ${r.stdout}`);
   assert.equal(r.stdout, '');
   const lines = r.stderr.trimEnd().split('\n');
   assert.equal(lines.length, 1, `one line of error, got: ${r.stderr}`);
