@@ -14,12 +14,11 @@ namespace csl::app {
 namespace {
 constexpr double kMinStep = 0.001;  // the D slider's least: finer steps only cost time
 
-// Only a radius rule can get there (k <= 50). Both tests: r = max_radius() itself may compute
-// to a hair over the bound, and it must pass, or a clamped r would be clamped again each frame.
+// Only a radius rule is held to the budget (k <= 50 and n <= 20000 make at most about as many
+// pairs). r = max_radius() itself passes, or a clamped r would be clamped again each frame.
 bool over_budget(const PrmParams& p, const Space& space) {
   return p.neighbors.kind == NeighborRule::Kind::Radius &&
-         expected_candidate_pairs(space, p.neighbors, p.samples) > kMaxCandidatePairs &&
-         p.neighbors.radius > max_radius(space, p.samples);
+         !within_pairs_budget(space, p.neighbors, p.samples, kMaxCandidatePairs);
 }
 }  // namespace
 
@@ -133,9 +132,9 @@ PrmParams prm_params_from_json(const nlohmann::json& j, PrmParams p, const Space
     char text[200];
     std::snprintf(text, sizeof text,
                   "neighbors: radius:%g with %d samples means about %.0f candidate pairs; the lab checks at most "
-                  "%.0f (r at most %.4g with this n)",
+                  "%.0f (r at most %s with this n)",
                   p.neighbors.radius, p.samples, expected_candidate_pairs(space, p.neighbors, p.samples),
-                  kMaxCandidatePairs, max_radius(space, p.samples));
+                  kMaxCandidatePairs, radius_for_pairs_text(space, p.samples, kMaxCandidatePairs).c_str());
     throw ApiError(text);
   }
   return p;

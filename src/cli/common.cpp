@@ -1,7 +1,5 @@
 // Helpers shared by the CLI's commands: files, scenes, configurations, output.
-#include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <fstream>
 #include <stdexcept>
 #include <ostream>
@@ -79,25 +77,16 @@ PlannerOptions take_planner_options(Args& args) {
 }
 
 void require_pairs_budget(const Space& space, const PlannerOptions& options, int samples, const std::string& run) {
-  const double pairs = expected_candidate_pairs(space, options.neighbors, samples);
   const NeighborRule& rule = options.neighbors;
-  const bool radius = rule.kind == NeighborRule::Kind::Radius;
-  const double fits = radius ? radius_for_pairs(space, samples, options.max_pairs) : 0.0;
-  // The radius named below must pass: it is rounded down, and r -> pairs -> r may come back a
-  // hair over the limit, so a radius up to the inverse's passes too (as the app's slider does).
-  if (pairs <= options.max_pairs || (radius && rule.radius <= fits)) return;
+  if (within_pairs_budget(space, rule, samples, options.max_pairs)) return;
+  const double pairs = expected_candidate_pairs(space, rule, samples);
   char text[400];
-  if (radius) {
-    // 4 significant digits, rounded down: the radius as printed (and read back) fits.
-    const double scale = std::pow(10.0, std::floor(std::log10(fits)) - 3.0);
-    double shown = std::floor(fits / scale) * scale;
-    char r[32];
-    std::snprintf(r, sizeof r, "%.4g", shown);
-    if (std::strtod(r, nullptr) > fits) std::snprintf(r, sizeof r, "%.4g", shown - scale);
+  if (rule.kind == NeighborRule::Kind::Radius) {
     std::snprintf(text, sizeof text,
                   "--radius %g with %d samples means about %.3g candidate pairs, more than the %.3g a run may "
                   "check (--max-pairs); with this n, r at most %s",
-                  rule.radius, samples, pairs, options.max_pairs, r);
+                  rule.radius, samples, pairs, options.max_pairs,
+                  radius_for_pairs_text(space, samples, options.max_pairs).c_str());
   } else {
     const std::string named = rule.kind == NeighborRule::Kind::PrmStar ? "--prm-star" : "--k " + std::to_string(rule.k);
     std::snprintf(text, sizeof text,

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
@@ -79,6 +80,23 @@ double radius_for_pairs(const Space& space, int samples, double pairs) {
   if (pairs >= vertex_pairs(samples)) return std::numeric_limits<double>::infinity();
   const int d = space.dim();
   return std::pow(pairs / vertex_pairs(samples) * space.volume() / unit_ball_volume(d), 1.0 / d);
+}
+
+bool within_pairs_budget(const Space& space, const NeighborRule& rule, int samples, double max_pairs) {
+  if (expected_candidate_pairs(space, rule, samples) <= max_pairs) return true;
+  return rule.kind == NeighborRule::Kind::Radius && rule.radius <= radius_for_pairs(space, samples, max_pairs);
+}
+
+std::string radius_for_pairs_text(const Space& space, int samples, double pairs) {
+  const double fits = radius_for_pairs(space, samples, pairs);
+  if (!(fits > 0.0) || !std::isfinite(fits)) return fits > 0.0 ? "any" : "0";
+  const double digit = std::pow(10.0, std::floor(std::log10(fits)) - 3.0);  // the 4th significant one
+  const double shown = std::floor(fits / digit) * digit;
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", shown);
+  // Rounding in the product or the printing may land a hair above: one digit less then.
+  if (std::strtod(text, nullptr) > fits) std::snprintf(text, sizeof text, "%.4g", shown - digit);
+  return text;
 }
 
 const char* phase_name(PrmPhase p) {

@@ -56,6 +56,13 @@ double expected_candidate_pairs(const Space& space, const NeighborRule& rule, in
 /// The radius whose expected_candidate_pairs() for `samples` is `pairs` (inverse of the above);
 /// infinite when even every pair is no more than `pairs`.
 double radius_for_pairs(const Space& space, int samples, double pairs);
+/// Whether PRM with `rule` and `samples` is expected to check at most `max_pairs` candidate
+/// pairs. A radius up to radius_for_pairs() passes as well: r -> pairs -> r may come back a hair
+/// over the limit, and the radius a UI or an error offers from that inverse must pass.
+bool within_pairs_budget(const Space& space, const NeighborRule& rule, int samples, double max_pairs);
+/// radius_for_pairs() rounded down to 4 significant digits, as text ("0.03989") that, read
+/// back, is no more than it: the radius an error message can name and a user can type.
+std::string radius_for_pairs_text(const Space& space, int samples, double pairs);
 
 /// The seed a local connector gets for vertices a < b: splitmix64 of the PRM seed and the pair.
 std::uint64_t pair_seed(std::uint64_t seed, int a, int b);

@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <set>
+#include <string>
 
 #include "core/angles.hpp"
 #include "core/potential_connector.hpp"
@@ -213,6 +215,35 @@ TEST_CASE("the expected number of candidate pairs, against the pairs PRM checks"
   CHECK(csl::radius_for_pairs(square, 20000, 1e6) == doctest::Approx(std::sqrt(1e6 / (20002.0 * 20001 / 2) / pi)));
   CHECK(std::isinf(csl::radius_for_pairs(square, 500, 1e6)));  // C(502, 2) = 125751 pairs in all
   CHECK(std::isinf(csl::radius_for_pairs(square, 0, 1)));
+}
+
+TEST_CASE("the pairs budget: the radius it names, as text, fits, and a hair more does not") {
+  const csl::CollisionWorld square(csl::PointRobot{}, {}, {0, 0}, {1, 1});
+  const csl::CollisionWorld arm(csl::ArmRobot{{0, 0}, 1.0, 1.0}, {}, {-3, -3}, {3, 3});
+  const auto radius = [](double r) {
+    csl::NeighborRule rule = csl::NeighborRule::parse("radius:1");
+    rule.radius = r;
+    return rule;
+  };
+  for (const csl::Space* space : {&square.space(), &arm.space()})
+    for (const int n : {300, 2000, 5000, 20000, 100000, 1000000})
+      for (const double pairs : {1000.0, 20000.0, 123457.0, 1e6, 2e7}) {
+        const double fits = csl::radius_for_pairs(*space, n, pairs);
+        if (std::isinf(fits)) continue;
+        const std::string text = csl::radius_for_pairs_text(*space, n, pairs);
+        const double shown = std::strtod(text.c_str(), nullptr);
+        INFO(n << " samples, " << pairs << " pairs: " << text << " for " << fits);
+        CHECK(shown <= fits);
+        CHECK(shown >= fits * (1 - 2e-3));  // 4 significant digits, rounded down
+        CHECK(csl::within_pairs_budget(*space, radius(shown), n, pairs));
+        CHECK(csl::within_pairs_budget(*space, radius(fits), n, pairs));  // the inverse itself passes
+        CHECK_FALSE(csl::within_pairs_budget(*space, radius(fits * 1.001), n, pairs));
+      }
+  // k rules: (n + 2) k pairs, no radius to fall back on.
+  CHECK(csl::within_pairs_budget(square.space(), csl::NeighborRule::parse("k:10"), 998, 10000));
+  CHECK_FALSE(csl::within_pairs_budget(square.space(), csl::NeighborRule::parse("k:10"), 999, 10000));
+  CHECK(csl::radius_for_pairs_text(square.space(), 20000, 1e6) == "0.03989");  // the app's limit
+  CHECK(csl::radius_for_pairs_text(square.space(), 500, 1e6) == "any");  // every pair fits
 }
 
 TEST_CASE("edge lengths are the space's distances to the bit, and candidates carry them") {
