@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "app/bundled_scenes.hpp"
+#include "app/drag_replay.hpp"
 #include "app/draw.hpp"
 #include "app/js_api.hpp"
 #include "app/lesson.hpp"
@@ -50,11 +51,18 @@ class StepPrmLesson : public Lesson {
     refresh_labels();
     roadmap_layer_.draw(view_, world_->space(), prm_->roadmap(), labels_, roadmap_version());
     if (prm_->solved()) draw_path(view_, world_->space(), prm_->roadmap(), prm_->path());
-    draw_current_step();
+    if (replay_pending()) {
+      // The old roadmap faded under the obstacles where they are now.
+      draw_replay_pending(view_);
+      for (std::size_t i = 0; i < scene_.obstacles.size(); ++i) view_.draw_obstacle(scene_.obstacles[i]);
+    } else {
+      draw_current_step();  // its edge check is recomputed in world_, the planner's world
+    }
     view_.draw_marker(Vec2(scene_.start[0], scene_.start[1]), theme::kStart, "S", !world_->is_free(scene_.start));
     view_.draw_marker(Vec2(scene_.goal[0], scene_.goal[1]), theme::kGoal, "G", !world_->is_free(scene_.goal));
     view_.pop_clip();
-    if (editor_.edit(view_, scene_, ctx, {})) rebuild(prm_->steps());
+    if (editor_.edit(view_, scene_, ctx, {})) scene_edited();
+    if (replay_pending() && !editor_.dragging()) rebuild(prm_->steps());  // released
     if (!world_->is_free(scene_.start) || !world_->is_free(scene_.goal))
       view_.draw_label(scene_.workspace_min, "start or goal inside an obstacle: no path can exist",
                        theme::kWarning, ImVec2(4, 8));
@@ -93,6 +101,7 @@ class StepPrmLesson : public Lesson {
              {"evaluations", prm_->evaluations()},
              {"samples_drawn", prm_->samples_drawn()},
              {"solved", prm_->solved()},
+             {"replay_pending", replay_pending()},
              {"path", path},
              {"path_length", prm_->solved() ? json(prm_->path_length()) : json(nullptr)},
              {"roadmap_hash", hash},
@@ -136,12 +145,24 @@ class StepPrmLesson : public Lesson {
     world_ = std::make_unique<CollisionWorld>(scene_);
     keep_within_budget(params_, world_->space());  // a smaller workspace makes the same r cover more pairs
     prm_ = std::make_unique<Prm>(*world_, scene_.start, scene_.goal, params_);
+    planned_world_.reset();  // after the planner that ran in it
+    planned_scene_ = scene_;
     prm_->run_to(steps);
     labels_at_ = -1;
     logged_through_ = -1;
     check_at_ = -1;
     ++rebuilds_;
   }
+
+  // The scene changed (the editor): replay, unless a drag goes on and the replay is too long for
+  // a frame (see drag_replay.hpp). Then the planner keeps the world and scene it ran in, and
+  // world_ follows the drag for what is drawn from it (the markers' warnings).
+  void scene_edited() {
+    if (!editor_.dragging() || replay_is_live(*prm_)) return rebuild(prm_->steps());
+    if (!planned_world_) planned_world_ = std::move(world_);
+    world_ = std::make_unique<CollisionWorld>(scene_);
+  }
+  bool replay_pending() const { return planned_world_ != nullptr; }
 
   // Changes whenever the roadmap may have: a step, a replay or a rebuild.
   long long roadmap_version() const { return static_cast<long long>(prm_->steps()) + (rebuilds_ << 32); }
@@ -161,7 +182,7 @@ class StepPrmLesson : public Lesson {
                                         : "at step " + std::to_string(prm_->steps()) + " (" +
                                               phase_name(prm_->phase()) + ")");
     }
-    if (prm_->steps() > 0) ctx.log.add(prm_->steps(), describe(prm_->last_event(), *prm_, scene_));
+    if (prm_->steps() > 0) ctx.log.add(prm_->steps(), describe(prm_->last_event(), *prm_, planned_scene_));
     logged_through_ = prm_->steps();
   }
 
@@ -223,6 +244,11 @@ class StepPrmLesson : public Lesson {
                          prm_->path().size() - 1);
     else if (prm_->done())
       ImGui::TextColored(ImVec4(0.7f, 0.25f, 0.0f, 1.0f), "no path found");
+    if (replay_pending()) {
+      ImGui::PushTextWrapPos(0.0f);
+      ImGui::TextDisabled("(the roadmap of the scene before this drag: replayed at the release)");
+      ImGui::PopTextWrapPos();
+    }
   }
 
   Scene scene_;
@@ -230,6 +256,11 @@ class StepPrmLesson : public Lesson {
   WorkspaceView view_;
   PrmParams params_;
   std::unique_ptr<CollisionWorld> world_;
+  // The scene prm_ ran in (the event log names its obstacles): scene_ but while a replay waits
+  // for the end of a drag; then also the world it ran in (else null; declared before prm_,
+  // which points into it, so that it outlives prm_).
+  Scene planned_scene_;
+  std::unique_ptr<CollisionWorld> planned_world_;
   std::unique_ptr<Prm> prm_;
   std::vector<int> labels_;
   long labels_at_ = -1;

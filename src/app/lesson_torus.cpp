@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "app/bundled_scenes.hpp"
+#include "app/drag_replay.hpp"
 #include "app/draw.hpp"
 #include "app/field_draw.hpp"
 #include "app/js_api.hpp"
@@ -47,7 +48,7 @@ class TorusLesson : public Lesson {
     if (prm_->done()) ctx.playback.playing = false;
     if (logged_ != prm_->steps()) {
       if (prm_->steps() == 0 || prm_->steps() < logged_ || prm_->steps() > logged_ + 1) ctx.log.clear();
-      if (prm_->steps() > 0) ctx.log.add(prm_->steps(), describe(prm_->last_event(), *prm_, scene_));
+      if (prm_->steps() > 0) ctx.log.add(prm_->steps(), describe(prm_->last_event(), *prm_, planned_scene_));
       logged_ = prm_->steps();
     }
     // The arm walks along the found path, or along the exercise's loop, again and again.
@@ -81,6 +82,11 @@ class TorusLesson : public Lesson {
     ImGui::Text("edges across a seam: %d", seam_edges());
     if (prm_->solved()) ImGui::TextColored(ImVec4(0.0f, 0.45f, 0.3f, 1.0f), "path found, length %.3f rad", prm_->path_length());
     else if (prm_->done()) ImGui::TextColored(ImVec4(0.7f, 0.25f, 0.0f, 1.0f), "no path found");
+    if (replay_pending()) {
+      ImGui::PushTextWrapPos(0.0f);
+      ImGui::TextDisabled("(the roadmap of the scene before this drag: replayed at the release)");
+      ImGui::PopTextWrapPos();
+    }
 
     ui::section("Exercise: loops on the torus");
     if (ImGui::Button("a loop around the torus")) start_exercise(Exercise::Around);
@@ -156,6 +162,7 @@ class TorusLesson : public Lesson {
                {"edges", prm_->edges_alive()},
                {"seam_crossing_edges", seam_edges()},
                {"solved", prm_->solved()},
+               {"replay_pending", replay_pending()},
                {"path", path},
                {"path_length", prm_->solved() ? json(prm_->path_length()) : json(nullptr)},
                {"roadmap_hash", hash}}}};
@@ -233,15 +240,31 @@ class TorusLesson : public Lesson {
  private:
   // After any change of the scene: the world, the exact C-obstacle map, the planner (replayed).
   void rebuild(long steps) {
-    world_ = std::make_unique<CollisionWorld>(scene_);
-    map_ = std::make_unique<ArmCSpaceMap>(std::get<ArmRobot>(scene_.robot), scene_.obstacles);
-    std::vector<std::uint8_t> pixels;
-    free_fraction_ = map_->rasterize(128, pixels);
+    rebuild_world();
     prm_ = std::make_unique<Prm>(*world_, scene_.start, scene_.goal, params_);
+    planned_world_.reset();  // after the planner that ran in it
+    planned_scene_ = scene_;
     prm_->run_to(steps);
     ++version_;
     logged_ = -1;
   }
+
+  void rebuild_world() {
+    world_ = std::make_unique<CollisionWorld>(scene_);
+    map_ = std::make_unique<ArmCSpaceMap>(std::get<ArmRobot>(scene_.robot), scene_.obstacles);
+    std::vector<std::uint8_t> pixels;
+    free_fraction_ = map_->rasterize(128, pixels);
+  }
+
+  // The scene changed (the editor): replay, unless a drag goes on and the replay is too long for
+  // a frame (see drag_replay.hpp). Then the planner keeps the world it ran in, and the world and
+  // the C-obstacles follow the drag live.
+  void scene_edited() {
+    if (!editor_.dragging() || replay_is_live(*prm_)) return rebuild(prm_->steps());
+    if (!planned_world_) planned_world_ = std::move(world_);
+    rebuild_world();
+  }
+  bool replay_pending() const { return planned_world_ != nullptr; }
 
   int seam_edges() const {
     int n = 0;
@@ -341,7 +364,8 @@ class TorusLesson : public Lesson {
     }
     SceneEditor::Options options;
     options.endpoints_are_points = false;
-    if (editor_.edit(view_, scene_, ctx, options)) rebuild(prm_->steps());
+    if (editor_.edit(view_, scene_, ctx, options)) scene_edited();
+    if (replay_pending() && !editor_.dragging()) rebuild(prm_->steps());  // released
   }
 
   // 1 or 2 if the mouse is on link 1 or 2 of the posed arm, else 0.
@@ -365,6 +389,10 @@ class TorusLesson : public Lesson {
     refresh_labels();
     roadmap_layer_.draw(cspace_view_, space, prm_->roadmap(), labels_, (static_cast<long long>(version_) << 32) + prm_->steps());
     if (prm_->solved()) draw_path(cspace_view_, space, prm_->roadmap(), prm_->path());
+    if (replay_pending()) {  // the old roadmap faded under the C-obstacles as they are now
+      draw_replay_pending(cspace_view_);
+      draw_arm_cobstacles(cspace_view_, *map_, kCObstacle);
+    }
     for (std::size_t i = 1; i < trail_.size(); ++i)
       draw_chart_segment(cspace_view_, space, trail_[i - 1], space.difference(trail_[i - 1], trail_[i]),
                          theme::with_alpha(theme::kCurrent, 200), 2.0f);
@@ -453,6 +481,11 @@ class TorusLesson : public Lesson {
   std::unique_ptr<ArmCSpaceMap> map_;
   double free_fraction_ = 0;
   PrmParams params_;
+  // The scene prm_ ran in (the event log names its obstacles): scene_ but while a replay waits
+  // for the end of a drag; then also the world it ran in (else null; declared before prm_,
+  // which points into it, so that it outlives prm_).
+  Scene planned_scene_;
+  std::unique_ptr<CollisionWorld> planned_world_;
   std::unique_ptr<Prm> prm_;
   RoadmapLayer roadmap_layer_;
   std::vector<int> labels_;

@@ -1,0 +1,129 @@
+// Dragging an obstacle replays the planner to the student's step on every frame, so the roadmap
+// follows the drag. After a large run one replay takes longer than a frame; then the roadmap of
+// the scene before the drag stays (faded) until the release, which replays once. Either way the
+// roadmap after the release is the one a fresh planner in the new scene grows in as many steps
+// (which may stop short of the end: the new scene's run can take more steps).
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { withPage, worldToPage, waitFrames, keys, api, screenshot } from './lib/harness.mjs';
+
+const DISK = { type: 'disk', center: [0.5, 0.5], radius: 0.1 };
+const SCENE = { version: 1, start: [0.05, 0.05], goal: [0.95, 0.95], obstacles: [DISK] };
+
+// Presses on `from`, moves to `to` in steps and keeps the button down; `during(i)` runs after
+// each step. The caller releases.
+async function hold(page, from, to, during, steps = 4) {
+  await page.mouse.move(from.x, from.y);
+  await waitFrames(page, 2);
+  await page.mouse.down();
+  await waitFrames(page, 2);
+  for (let i = 1; i <= steps; ++i) {
+    await page.mouse.move(from.x + (to.x - from.x) * i / steps, from.y + (to.y - from.y) * i / steps);
+    await waitFrames(page, 2);
+    await during(i);
+  }
+}
+
+// The roadmap hash of a fresh planner for `scene` run to `steps` (a new scene starts at step 0).
+async function freshHash(page, scene, steps) {
+  await api(page, 'set_scene', { scene });
+  await api(page, 'run_to', { steps });
+  const s = await api(page, 'state');
+  return (s.prm || s).roadmap_hash;
+}
+
+async function startRun(page, params) {
+  await api(page, 'select_lesson', { id: 'step-prm' });
+  await api(page, 'set_scene', { scene: SCENE });
+  await api(page, 'set_params', { params });
+  await api(page, 'run');
+  await keys(page, 'v');  // the select tool: a press on the disk moves it
+  await waitFrames(page, 2);
+  return api(page, 'state');
+}
+
+test('after a large run, a drag keeps the old roadmap until the release, then replays once',
+  () => withPage({ viewport: { width: 1100, height: 720 } }, async ({ page }) => {
+  const before = await startRun(page, { samples: 6000, neighbors: 'k:10', seed: 3 });
+  assert.equal(before.done, true);
+  assert.equal(before.replay_pending, false);
+  const [from, to] = await worldToPage(page, [DISK.center, [0.62, 0.55]]);
+  await hold(page, from, to, async (i) => {
+    const s = await api(page, 'state');
+    assert.equal(s.replay_pending, true, `step ${i} of the drag: the replay waits`);
+    assert.equal(s.roadmap_hash, before.roadmap_hash, 'the roadmap is the one from before the drag');
+    const centre = (await api(page, 'get_scene')).obstacles[0].center;
+    assert.ok(Math.abs(centre[0] - (0.5 + 0.12 * i / 4)) < 0.01, `the disk follows the mouse: ${centre}`);
+  });
+  await screenshot(page, 'drag-replay-pending.png');
+  await page.mouse.up();
+  await waitFrames(page, 2);
+
+  const after = await api(page, 'state');
+  assert.equal(after.replay_pending, false, 'replayed at the release');
+  assert.ok(after.steps <= before.steps && (after.steps === before.steps || after.done), 'at the same step');
+  assert.notEqual(after.roadmap_hash, before.roadmap_hash, 'the moved disk changed the roadmap');
+  const moved = await api(page, 'get_scene');
+  assert.ok(Math.abs(moved.obstacles[0].center[0] - 0.62) < 0.01, `the disk moved: ${moved.obstacles[0].center}`);
+  assert.equal(await freshHash(page, moved, after.steps), after.roadmap_hash, 'the replay grew what a fresh run grows');
+
+  // Undo in the middle of such a drag ends it and replays the scene it restores.
+  const [back] = await worldToPage(page, [moved.obstacles[0].center]);
+  await hold(page, back, from, async () => {}, 2);
+  assert.equal((await api(page, 'state')).replay_pending, true);
+  await api(page, 'undo');
+  await waitFrames(page, 2);
+  await page.mouse.up();
+  await waitFrames(page, 2);
+  const undone = await api(page, 'state');
+  assert.equal(undone.replay_pending, false);
+  assert.deepEqual((await api(page, 'get_scene')).obstacles[0].center, moved.obstacles[0].center, 'the drag undone');
+  assert.equal(undone.roadmap_hash, after.roadmap_hash);
+}));
+
+test('after a small run, the roadmap follows the drag live',
+  () => withPage({ viewport: { width: 1100, height: 720 } }, async ({ page }) => {
+  const before = await startRun(page, { samples: 400, neighbors: 'k:10', seed: 3 });
+  const [from, to] = await worldToPage(page, [DISK.center, [0.62, 0.55]]);
+  const seen = new Set([before.roadmap_hash]);
+  await hold(page, from, to, async () => {
+    const s = await api(page, 'state');
+    assert.equal(s.replay_pending, false, 'replayed on every frame');
+    seen.add(s.roadmap_hash);
+  });
+  await page.mouse.up();
+  await waitFrames(page, 2);
+  assert.ok(seen.size >= 3, `the roadmap changed during the drag: ${seen.size} roadmaps`);
+  const moved = await api(page, 'get_scene');
+  const after = await api(page, 'state');
+  assert.equal(await freshHash(page, moved, after.steps), after.roadmap_hash);
+}));
+
+test('the torus lesson: the C-obstacles follow the drag, the replay waits for the release',
+  () => withPage({ viewport: { width: 1280, height: 800 } }, async ({ page }) => {
+  await api(page, 'select_lesson', { id: 'torus' });
+  await api(page, 'set_params', { params: { samples: 5000, neighbors: 'k:10', seed: 2 } });
+  await api(page, 'run');
+  await keys(page, 'v');
+  await waitFrames(page, 2);
+  const scene = await api(page, 'get_scene');
+  const before = await api(page, 'state');
+  assert.equal(before.prm.replay_pending, false);
+  const disk = scene.obstacles[0];
+  const [from, to] = await worldToPage(page, [disk.center, [disk.center[0] - 0.12, disk.center[1] + 0.1]], 'workspace');
+  const fractions = new Set([before.free_fraction]);
+  await hold(page, from, to, async () => {
+    const s = await api(page, 'state');
+    assert.equal(s.prm.replay_pending, true);
+    assert.equal(s.prm.roadmap_hash, before.prm.roadmap_hash);
+    fractions.add(s.free_fraction);
+  });
+  assert.ok(fractions.size >= 2, 'the C-obstacle map changed during the drag');
+  await page.mouse.up();
+  await waitFrames(page, 2);
+  const after = await api(page, 'state');
+  assert.equal(after.prm.replay_pending, false);
+  assert.notEqual(after.prm.roadmap_hash, before.prm.roadmap_hash);
+  const moved = await api(page, 'get_scene');
+  assert.equal(await freshHash(page, moved, after.prm.steps), after.prm.roadmap_hash, 'the replay grew what a fresh run grows');
+}));
