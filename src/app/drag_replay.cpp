@@ -8,8 +8,7 @@ namespace csl::app {
 
 void draw_replay_pending(const WorkspaceView& view) {
   ImDrawList* dl = view.draw_list();
-
-  // push_clip() and pop_clip().
+  // The clip rectangle is the visible world rectangle: the caller's push_clip().
   const ImVec2 lo = dl->GetClipRectMin(), hi = dl->GetClipRectMax();
   dl->AddRectFilled(lo, hi, theme::rgba(255, 255, 255, 175));
   const char* text = "roadmap from before this drag: it is replayed when you release";

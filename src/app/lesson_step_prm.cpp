@@ -56,7 +56,7 @@ class StepPrmLesson : public Lesson {
       draw_replay_pending(view_);
       for (std::size_t i = 0; i < scene_.obstacles.size(); ++i) view_.draw_obstacle(scene_.obstacles[i]);
     } else {
-      draw_current_step();  // its edge check is recomputed in world_, the planner's world
+      draw_current_step();
     }
     view_.draw_marker(Vec2(scene_.start[0], scene_.start[1]), theme::kStart, "S", !world_->is_free(scene_.start));
     view_.draw_marker(Vec2(scene_.goal[0], scene_.goal[1]), theme::kGoal, "G", !world_->is_free(scene_.goal));
@@ -142,10 +142,11 @@ class StepPrmLesson : public Lesson {
   // A fresh world and planner for the current scene and parameters, replayed to `steps` (an
   // edit keeps the student at the same step, with the same seed).
   void rebuild(long steps) {
+    if (!planned_world_) planned_world_ = std::move(world_);  // prm_ points into it: kept until replaced
     world_ = std::make_unique<CollisionWorld>(scene_);
     keep_within_budget(params_, world_->space());  // a smaller workspace makes the same r cover more pairs
     prm_ = std::make_unique<Prm>(*world_, scene_.start, scene_.goal, params_);
-    planned_world_.reset();  // after the planner that ran in it
+    planned_world_.reset();
     planned_scene_ = scene_;
     prm_->run_to(steps);
     labels_at_ = -1;
@@ -220,7 +221,7 @@ class StepPrmLesson : public Lesson {
         if (check_at_ != prm_->steps()) {
           const auto spec = e.kind == PrmEvent::Kind::PathEdgeRemoved ? EdgeCheckerSpec::parse("bisection")
                                                                       : prm_->params().checker;
-          check_ = check_edge(*world_, spec, v[static_cast<std::size_t>(e.vertex)], v[static_cast<std::size_t>(e.other)], true);
+          check_ = check_edge(prm_->world(), spec, v[static_cast<std::size_t>(e.vertex)], v[static_cast<std::size_t>(e.other)], true);
           check_at_ = prm_->steps();
         }
         for (const EdgeEvent& ev : check_.trace)
@@ -255,10 +256,11 @@ class StepPrmLesson : public Lesson {
   SceneEditor editor_;
   WorkspaceView view_;
   PrmParams params_;
+  // The scene's world; prm_ points into it, except while a replay waits for the end of a drag:
+  // then prm_ points into planned_world_ (else null; both declared before prm_, so that they
+  // outlive it), and planned_scene_ (otherwise equal to scene_) is the scene it ran in, whose
+  // obstacles the event log names.
   std::unique_ptr<CollisionWorld> world_;
-  // The scene prm_ ran in (the event log names its obstacles): scene_ but while a replay waits
-  // for the end of a drag; then also the world it ran in (else null; declared before prm_,
-  // which points into it, so that it outlives prm_).
   Scene planned_scene_;
   std::unique_ptr<CollisionWorld> planned_world_;
   std::unique_ptr<Prm> prm_;

@@ -240,9 +240,10 @@ class TorusLesson : public Lesson {
  private:
   // After any change of the scene: the world, the exact C-obstacle map, the planner (replayed).
   void rebuild(long steps) {
+    if (!planned_world_) planned_world_ = std::move(world_);  // prm_ points into it: kept until replaced
     rebuild_world();
     prm_ = std::make_unique<Prm>(*world_, scene_.start, scene_.goal, params_);
-    planned_world_.reset();  // after the planner that ran in it
+    planned_world_.reset();
     planned_scene_ = scene_;
     prm_->run_to(steps);
     ++version_;
@@ -384,7 +385,7 @@ class TorusLesson : public Lesson {
     ctx.views["cspace"] = &cspace_view_;
     cspace_view_.draw_grid("theta1", "theta2");
     cspace_view_.push_clip();
-    draw_arm_cobstacles(cspace_view_, *map_, kCObstacle);
+    if (!replay_pending()) draw_arm_cobstacles(cspace_view_, *map_, kCObstacle);  // else over the faded roadmap
     const Space& space = world_->space();
     refresh_labels();
     roadmap_layer_.draw(cspace_view_, space, prm_->roadmap(), labels_, (static_cast<long long>(version_) << 32) + prm_->steps());
@@ -456,12 +457,15 @@ class TorusLesson : public Lesson {
       torus_view_.draw_curve(pts, c, t);
     };
     const Roadmap& r = prm_->roadmap();
-    if (r.edges.size() <= 6000)
+    // While a replay waits for the end of a drag, the old roadmap and path would lie on the new
+    // C-obstacles with nothing to say so (the square view fades them): not drawn.
+    const bool show_roadmap = !replay_pending();
+    if (r.edges.size() <= 6000 && show_roadmap)
       for (const RoadmapEdge& e : r.edges)
         if (e.alive)
           curve(r.vertices[static_cast<std::size_t>(e.a)], r.vertices[static_cast<std::size_t>(e.b)],
                 theme::with_alpha(theme::kBlue, r.edges.size() > 1500 ? 45 : 100), 1.0f);
-    for (std::size_t i = 0; i + 1 < prm_->path().size(); ++i)
+    for (std::size_t i = 0; show_roadmap && i + 1 < prm_->path().size(); ++i)
       curve(r.vertices[static_cast<std::size_t>(prm_->path()[i])], r.vertices[static_cast<std::size_t>(prm_->path()[i + 1])],
             theme::kPath, 3.5f);
     for (std::size_t i = 1; i < trail_.size(); ++i) curve(trail_[i - 1], trail_[i], theme::kCurrent, 2.5f);
@@ -471,6 +475,9 @@ class TorusLesson : public Lesson {
     dl->AddCircleFilled(s, torus_view_.facing(p.n) ? 6.0f : 3.0f, world_->is_free(q_) ? theme::kRobot : theme::kHit, 16);
     const ImVec2 corner = ImGui::GetItemRectMin();
     dl->AddText(ImVec2(corner.x + 6, corner.y + 4), theme::kLabel, "theta1: around the hole, theta2: around the tube");
+    if (!show_roadmap)
+      dl->AddText(ImVec2(corner.x + 6, corner.y + 4 + ImGui::GetTextLineHeightWithSpacing()), theme::kWarning,
+                  "the roadmap is replayed when you release");
   }
 
   Scene scene_;
@@ -481,9 +488,10 @@ class TorusLesson : public Lesson {
   std::unique_ptr<ArmCSpaceMap> map_;
   double free_fraction_ = 0;
   PrmParams params_;
-  // The scene prm_ ran in (the event log names its obstacles): scene_ but while a replay waits
-  // for the end of a drag; then also the world it ran in (else null; declared before prm_,
-  // which points into it, so that it outlives prm_).
+  // prm_ points into world_, except while a replay waits for the end of a drag: then into
+  // planned_world_ (else null; both declared before prm_, so that they outlive it), and
+  // planned_scene_ (otherwise equal to scene_) is the scene it ran in, whose obstacles the
+  // event log names.
   Scene planned_scene_;
   std::unique_ptr<CollisionWorld> planned_world_;
   std::unique_ptr<Prm> prm_;

@@ -67,18 +67,23 @@ test('after a large run, a drag keeps the old roadmap until the release, then re
   assert.ok(Math.abs(moved.obstacles[0].center[0] - 0.62) < 0.01, `the disk moved: ${moved.obstacles[0].center}`);
   assert.equal(await freshHash(page, moved, after.steps), after.roadmap_hash, 'the replay grew what a fresh run grows');
 
-  // Undo in the middle of such a drag ends it and replays the scene it restores.
+  // Undo in the middle of such a drag ends it, and replays at once (the button is still down)
+  // the scene it restores; the mouse moving on moves nothing.
   const [back] = await worldToPage(page, [moved.obstacles[0].center]);
   await hold(page, back, from, async () => {}, 2);
   assert.equal((await api(page, 'state')).replay_pending, true);
   await api(page, 'undo');
   await waitFrames(page, 2);
+  const undone = await api(page, 'state');
+  assert.equal(undone.replay_pending, false, 'replayed at the undo');
+  assert.equal(undone.roadmap_hash, after.roadmap_hash, 'the roadmap of the restored scene');
+  assert.deepEqual((await api(page, 'get_scene')).obstacles[0].center, moved.obstacles[0].center, 'the drag undone');
+  await page.mouse.move(to.x, from.y);
+  await waitFrames(page, 2);
   await page.mouse.up();
   await waitFrames(page, 2);
-  const undone = await api(page, 'state');
-  assert.equal(undone.replay_pending, false);
-  assert.deepEqual((await api(page, 'get_scene')).obstacles[0].center, moved.obstacles[0].center, 'the drag undone');
-  assert.equal(undone.roadmap_hash, after.roadmap_hash);
+  assert.deepEqual((await api(page, 'get_scene')).obstacles[0].center, moved.obstacles[0].center, 'the drag stays ended');
+  assert.equal((await api(page, 'state')).roadmap_hash, after.roadmap_hash);
 }));
 
 test('after a small run, the roadmap follows the drag live',
