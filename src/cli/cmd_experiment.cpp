@@ -1,5 +1,6 @@
 // cspacelab experiment: PRM's empirical failure rate against the bound, for several n.
 #include <algorithm>
+#include <cstdio>
 #include <stdexcept>
 
 #include "cli/commands.hpp"
@@ -12,8 +13,36 @@ using json = nlohmann::json;
 
 json number_or_null(bool has, double v) { return has ? json(v) : json(nullptr); }
 
+// The candidate pairs a whole experiment may be expected to check unless --max-total-pairs says
+// otherwise: --max-pairs bounds each run, but T runs for each n multiply it (T = 100000 at
+// n = 10^6 passes it and would run for days, printing nothing until the end). 1e9 is 50 runs
+// at the per-run limit: 3 to 8 minutes here (wall-gap, k = 10, bisection, 20 runs of 100000
+// samples and the reference run: 2.4e7 pairs expected, 4.1 s; the radius run measured for
+// --max-pairs: 2e7 in 9 s).
+constexpr double kDefaultMaxTotalPairs = 1e9;
+
+// UsageError if the experiment (T runs per n, and the reference run) is expected to check more
+// candidate pairs in all than `limit`.
+void require_total_budget(const Space& space, const PlannerOptions& options, const ExperimentParams& params,
+                          const std::string& list, int reference_samples, double limit) {
+  double total = expected_candidate_pairs(space, options.neighbors, reference_samples);
+  for (int n : params.sample_counts) total += params.trials * expected_candidate_pairs(space, options.neighbors, n);
+  if (total <= limit) return;
+  char numbers[256];
+  std::snprintf(numbers, sizeof numbers,
+                " (and the reference run) means about %.3g candidate pairs in all, more than the %.3g an experiment "
+                "may check (--max-total-pairs); take fewer trials or fewer samples",
+                total, limit);
+  throw UsageError("--trials " + std::to_string(params.trials) + " with --samples-list " + list + numbers);
+}
+
 int run_experiment(Args& args, std::ostream& os) {
   const auto list = args.take("samples-list"), trials = args.take("trials"), reference = args.take("reference-samples");
+  double max_total = kDefaultMaxTotalPairs;
+  if (const auto text = args.take("max-total-pairs")) {
+    max_total = parse_number(*text, "--max-total-pairs");
+    if (!(max_total >= 1.0)) throw UsageError("--max-total-pairs: must be at least 1");
+  }
   const PlannerOptions options = take_planner_options(args);
   const std::string path = args.take_positional("SCENE.json");
   args.finish();
@@ -45,6 +74,7 @@ int run_experiment(Args& args, std::ostream& os) {
   require_pairs_budget(world.space(), options, *std::max_element(params.sample_counts.begin(), params.sample_counts.end()));
   require_pairs_budget(world.space(), options, ex->params().reference_samples,
                        "the reference run (--reference-samples M, by default 4 x the largest n, within [2000, 1000000]): ");
+  require_total_budget(world.space(), options, params, *list, ex->params().reference_samples, max_total);
   ex->run();
 
   const ExperimentReference& ref = ex->reference();
@@ -81,7 +111,7 @@ const Command kExperimentCommand{
     "experiment", "PRM's failure rate over many runs, for several n, against the bound",
     "Usage: cspacelab experiment SCENE.json --samples-list N1,N2,... [--trials T]\n"
     "                            [--k K | --radius R | --prm-star] [--checker C] [--seed S]\n"
-    "                            [--reference-samples M] [--max-pairs P]\n\n"
+    "                            [--reference-samples M] [--max-pairs P] [--max-total-pairs P]\n\n"
     "Runs PRM T times (default 20, each with its own seed derived from S) for each n, and counts\n"
     "failures: start and goal not connected. Whether a path exists at all, and its length L and\n"
     "clearance r for the bound of section 2.1, come from a reference run with M samples (default\n"
@@ -94,8 +124,9 @@ const Command kExperimentCommand{
     "      \"bound_vacuous\"}], \"neighbors\", \"checker\", \"seed\"}\n"
     "If the reference run finds no path, failures are still counted but mean little.\n"
     "If any run, the reference run included, is expected to check more than P candidate pairs\n"
-    "(default 2e7), nothing runs: an error (exit status 2) says so, and for --radius the largest\n"
-    "radius that fits. (The limit is per run; T x the n's runs take that many times as long.)\n",
+    "(--max-pairs, default 2e7), nothing runs: an error (exit status 2) says so, and for --radius\n"
+    "the largest radius that fits. So does an experiment whose runs, T for each n and the reference\n"
+    "run, are expected to check more than --max-total-pairs (default 1e9, minutes) in all.\n",
     run_experiment};
 
 }  // namespace csl::cli

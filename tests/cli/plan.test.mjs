@@ -133,4 +133,16 @@ test('plan and experiment refuse a run with too many candidate pairs, and say wh
         '--radius', '0.3', '--max-pairs', '20000', '--trials', '1');
   fails(/^cspacelab: --radius 0\.3 with 1000 samples/, 'experiment', GAP, '--samples-list', '100,1000',
         '--radius', '0.3', '--max-pairs', '20000', '--trials', '1');
+
+  // experiment: and all its runs together, T for each n plus the reference run. With k = 10,
+  // a run of n samples is expected to check (n + 2) 10 pairs: 3 x (1020 + 2020) + 20020 for
+  // the reference run's 2000 samples = 29140.
+  const small = ['experiment', GAP, '--samples-list', '100,200', '--trials', '3', '--k', '10'];
+  assert.equal(json(...small, '--max-total-pairs', '29140').rows.length, 2);
+  fails(/^cspacelab: --trials 3 with --samples-list 100,200 \(and the reference run\) means about 2\.91e\+04 candidate pairs in all, more than the 2\.91e\+04 .*--max-total-pairs/,
+        ...small, '--max-total-pairs', '29139');
+  // The default: each run passes --max-pairs, all of them together would take weeks.
+  fails(/--trials 100000 with --samples-list 1000000 .* 1e\+12 candidate pairs in all, more than the 1e\+09/,
+        'experiment', GAP, '--trials', '100000', '--samples-list', '1000000');
+  fails(/--max-total-pairs: must be at least 1/, ...small, '--max-total-pairs', '0');
 });
