@@ -1,6 +1,10 @@
 // cspacelab experiment: PRM's empirical failure rate against the bound, for several n.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <utility>
 #include <stdexcept>
 
 #include "cli/commands.hpp"
@@ -15,35 +19,73 @@ json number_or_null(bool has, double v) { return has ? json(v) : json(nullptr); 
 
 // The candidate pairs a whole experiment may be expected to check unless --max-total-pairs says
 // otherwise: --max-pairs bounds each run, but T runs for each n multiply it (T = 100000 at
-// n = 10^6 passes it and would run for days, printing nothing until the end). 1e9 is 50 runs
-// at the per-run limit: 3 to 8 minutes here (wall-gap, k = 10, bisection, 20 runs of 100000
-// samples and the reference run: 2.4e7 pairs expected, 4.1 s; the radius run measured for
-// --max-pairs: 2e7 in 9 s).
-constexpr double kDefaultMaxTotalPairs = 1e9;
+// n = 10^6 passes it and would run for days, printing nothing until the end). The default is 50
+// runs at the per-run limit: 1e9 with --max-pairs' default, 3 to 8 minutes here (wall-gap,
+// k = 10, bisection, 20 runs of 100000 samples and the reference run: 2.4e7 pairs expected,
+// 4.1 s; the radius run measured for --max-pairs: 2e7 in 9 s).
+constexpr double kDefaultRunsInTotal = 50;
+
+// An expected count of pairs: in full below 10^6, else with `digits` significant digits.
+std::string count_text(double v, int digits = 3) {
+  char text[32];
+  if (v < 1e6 && digits <= 6)
+    std::snprintf(text, sizeof text, "%.0f", v);
+  else
+    std::snprintf(text, sizeof text, "%.*g", digits, v);
+  return text;
+}
+
+// The limit as given (the shortest text that reads back as it), and the total with as few digits
+// as tell it apart from the limit.
+std::pair<std::string, std::string> total_and_limit(double total, double limit) {
+  std::string limit_text = count_text(limit, 17);
+  for (int digits = 1; digits < 17; ++digits) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.*g", digits, limit);
+    if (std::strtod(text, nullptr) == limit) {
+      limit_text = text;
+      break;
+    }
+  }
+  if (limit < 1e6 && limit == std::floor(limit)) limit_text = count_text(limit);
+  for (int digits = 3; digits < 17; ++digits)
+    if (count_text(total, digits) != limit_text) return {count_text(total, digits), limit_text};
+  return {count_text(total, 17), limit_text};
+}
 
 // UsageError if the experiment (T runs per n, and the reference run) is expected to check more
 // candidate pairs in all than `limit`.
 void require_total_budget(const Space& space, const PlannerOptions& options, const ExperimentParams& params,
                           const std::string& list, int reference_samples, double limit) {
-  double total = expected_candidate_pairs(space, options.neighbors, reference_samples);
+  const double reference = expected_candidate_pairs(space, options.neighbors, reference_samples);
+  double total = reference;
   for (int n : params.sample_counts) total += params.trials * expected_candidate_pairs(space, options.neighbors, n);
   if (total <= limit) return;
-  char numbers[256];
-  std::snprintf(numbers, sizeof numbers,
-                " (and the reference run) means about %.3g candidate pairs in all, more than the %.3g an experiment "
-                "may check (--max-total-pairs); take fewer trials or fewer samples",
-                total, limit);
-  throw UsageError("--trials " + std::to_string(params.trials) + " with --samples-list " + list + numbers);
+  const auto [total_text, limit_text] = total_and_limit(total, limit);
+  // A long list is named by its size and largest value: the error stays short.
+  const std::string named = list.size() <= 40 ? list
+                                              : "(" + std::to_string(params.sample_counts.size()) + " values up to " +
+                                                    std::to_string(*std::max_element(params.sample_counts.begin(),
+                                                                                     params.sample_counts.end())) +
+                                                    ")";
+  const bool radius = options.neighbors.kind == NeighborRule::Kind::Radius;
+  throw UsageError("--trials " + std::to_string(params.trials) + " with --samples-list " + named + " means about " +
+                   total_text + " candidate pairs in all (the reference run: " + count_text(reference) +
+                   "), more than the " + limit_text +
+                   " an experiment may check (--max-total-pairs); take fewer trials, fewer samples or " +
+                   (radius ? "a smaller --radius" : "fewer neighbours (--k)") +
+                   (reference > limit ? ", and fewer --reference-samples" : ""));
 }
 
 int run_experiment(Args& args, std::ostream& os) {
   const auto list = args.take("samples-list"), trials = args.take("trials"), reference = args.take("reference-samples");
-  double max_total = kDefaultMaxTotalPairs;
-  if (const auto text = args.take("max-total-pairs")) {
-    max_total = parse_number(*text, "--max-total-pairs");
+  const auto max_total_text = args.take("max-total-pairs");
+  const PlannerOptions options = take_planner_options(args);
+  double max_total = kDefaultRunsInTotal * options.max_pairs;
+  if (max_total_text) {
+    max_total = parse_number(*max_total_text, "--max-total-pairs");
     if (!(max_total >= 1.0)) throw UsageError("--max-total-pairs: must be at least 1");
   }
-  const PlannerOptions options = take_planner_options(args);
   const std::string path = args.take_positional("SCENE.json");
   args.finish();
   if (!list) throw UsageError("missing --samples-list (e.g. --samples-list 50,100,200)");
@@ -126,7 +168,8 @@ const Command kExperimentCommand{
     "If any run, the reference run included, is expected to check more than P candidate pairs\n"
     "(--max-pairs, default 2e7), nothing runs: an error (exit status 2) says so, and for --radius\n"
     "the largest radius that fits. So does an experiment whose runs, T for each n and the reference\n"
-    "run, are expected to check more than --max-total-pairs (default 1e9, minutes) in all.\n",
+    "run, are expected to check more than --max-total-pairs in all (default 50 x --max-pairs: 1e9,\n"
+    "minutes; raising --max-pairs raises it too).\n",
     run_experiment};
 
 }  // namespace csl::cli

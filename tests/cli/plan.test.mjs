@@ -139,10 +139,14 @@ test('plan and experiment refuse a run with too many candidate pairs, and say wh
   // the reference run's 2000 samples = 29140.
   const small = ['experiment', GAP, '--samples-list', '100,200', '--trials', '3', '--k', '10'];
   assert.equal(json(...small, '--max-total-pairs', '29140').rows.length, 2);
-  fails(/^cspacelab: --trials 3 with --samples-list 100,200 \(and the reference run\) means about 2\.91e\+04 candidate pairs in all, more than the 2\.91e\+04 .*--max-total-pairs/,
+  fails(/^cspacelab: --trials 3 with --samples-list 100,200 means about 29140 candidate pairs in all \(the reference run: 20020\), more than the 29139 an experiment may check \(--max-total-pairs\); take fewer trials, fewer samples or fewer neighbours \(--k\)$/,
         ...small, '--max-total-pairs', '29139');
-  // The default: each run passes --max-pairs, all of them together would take weeks.
-  fails(/--trials 100000 with --samples-list 1000000 .* 1e\+12 candidate pairs in all, more than the 1e\+09/,
+  // The default: 50 runs at --max-pairs. Each of these runs passes it; all of them together would
+  // take days.
+  fails(/--trials 100000 with --samples-list 1000000 means about 1e\+12 candidate pairs in all .* more than the 1e\+09 /,
         'experiment', GAP, '--trials', '100000', '--samples-list', '1000000');
+  // 1000 x 20020 + 80020 (reference: 8000 samples) > 50 x 80020.
+  fails(/means about 2\.01e\+07 candidate pairs in all \(the reference run: 80020\), more than the 4\.001e\+06 /,
+        'experiment', GAP, '--trials', '1000', '--samples-list', '2000', '--k', '10', '--max-pairs', '80020');
   fails(/--max-total-pairs: must be at least 1/, ...small, '--max-total-pairs', '0');
 });
