@@ -5,24 +5,10 @@
 // (which may stop short of the end: the new scene's run can take more steps).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { withPage, worldToPage, waitFrames, keys, api, screenshot } from './lib/harness.mjs';
+import { withPage, worldToPage, waitFrames, keys, api, screenshot, hold } from './lib/harness.mjs';
 
 const DISK = { type: 'disk', center: [0.5, 0.5], radius: 0.1 };
 const SCENE = { version: 1, start: [0.05, 0.05], goal: [0.95, 0.95], obstacles: [DISK] };
-
-// Presses on `from`, moves to `to` in steps and keeps the button down; `during(i)` runs after
-// each step. The caller releases.
-async function hold(page, from, to, during, steps = 4) {
-  await page.mouse.move(from.x, from.y);
-  await waitFrames(page, 2);
-  await page.mouse.down();
-  await waitFrames(page, 2);
-  for (let i = 1; i <= steps; ++i) {
-    await page.mouse.move(from.x + (to.x - from.x) * i / steps, from.y + (to.y - from.y) * i / steps);
-    await waitFrames(page, 2);
-    await during(i);
-  }
-}
 
 // The roadmap hash of a fresh planner for `scene` run to `steps` (a new scene starts at step 0).
 async function freshHash(page, scene, steps) {
@@ -48,13 +34,13 @@ test('after a large run, a drag keeps the old roadmap until the release, then re
   assert.equal(before.done, true);
   assert.equal(before.replay_pending, false);
   const [from, to] = await worldToPage(page, [DISK.center, [0.62, 0.55]]);
-  await hold(page, from, to, async (i) => {
+  await hold(page, from, to, { steps: 4, frames: 2, each: async (i) => {
     const s = await api(page, 'state');
     assert.equal(s.replay_pending, true, `step ${i} of the drag: the replay waits`);
     assert.equal(s.roadmap_hash, before.roadmap_hash, 'the roadmap is the one from before the drag');
     const centre = (await api(page, 'get_scene')).obstacles[0].center;
     assert.ok(Math.abs(centre[0] - (0.5 + 0.12 * i / 4)) < 0.01, `the disk follows the mouse: ${centre}`);
-  });
+  } });
   await screenshot(page, 'drag-replay-pending.png');
   await page.mouse.up();
   await waitFrames(page, 2);
@@ -70,7 +56,7 @@ test('after a large run, a drag keeps the old roadmap until the release, then re
   // Undo in the middle of such a drag ends it, and replays at once (the button is still down)
   // the scene it restores; the mouse moving on moves nothing.
   const [back] = await worldToPage(page, [moved.obstacles[0].center]);
-  await hold(page, back, from, async () => {}, 2);
+  await hold(page, back, from, { steps: 2, frames: 2 });
   assert.equal((await api(page, 'state')).replay_pending, true);
   await api(page, 'undo');
   await waitFrames(page, 2);
@@ -91,11 +77,11 @@ test('after a small run, the roadmap follows the drag live',
   const before = await startRun(page, { samples: 400, neighbors: 'k:10', seed: 3 });
   const [from, to] = await worldToPage(page, [DISK.center, [0.62, 0.55]]);
   const seen = new Set([before.roadmap_hash]);
-  await hold(page, from, to, async () => {
+  await hold(page, from, to, { steps: 4, frames: 2, each: async () => {
     const s = await api(page, 'state');
     assert.equal(s.replay_pending, false, 'replayed on every frame');
     seen.add(s.roadmap_hash);
-  });
+  } });
   await page.mouse.up();
   await waitFrames(page, 2);
   assert.ok(seen.size >= 3, `the roadmap changed during the drag: ${seen.size} roadmaps`);
@@ -117,12 +103,12 @@ test('the torus lesson: the C-obstacles follow the drag, the replay waits for th
   const disk = scene.obstacles[0];
   const [from, to] = await worldToPage(page, [disk.center, [disk.center[0] - 0.12, disk.center[1] + 0.1]], 'workspace');
   const fractions = new Set([before.free_fraction]);
-  await hold(page, from, to, async () => {
+  await hold(page, from, to, { steps: 4, frames: 2, each: async () => {
     const s = await api(page, 'state');
     assert.equal(s.prm.replay_pending, true);
     assert.equal(s.prm.roadmap_hash, before.prm.roadmap_hash);
     fractions.add(s.free_fraction);
-  });
+  } });
   assert.ok(fractions.size >= 2, 'the C-obstacle map changed during the drag');
   await page.mouse.up();
   await waitFrames(page, 2);

@@ -97,17 +97,27 @@ export async function worldToPage(page, points, view = 'workspace') {
  * a frame, so frames pass between the press, the moves and the release.
  */
 export async function drag(page, from, to, steps = 8) {
+  await hold(page, from, to, { steps });
+  await waitFrames(page, 1);
+  await page.mouse.up();
+  await waitFrames(page, 2);
+}
+
+/**
+ * The first part of drag(): presses at `from` and moves to `to` in `steps`, `frames` frames after
+ * each, and keeps the button down (the caller releases). `each(i)` runs after step i: a look at
+ * the app in the middle of the drag.
+ */
+export async function hold(page, from, to, { steps = 8, frames = 1, each = async () => {} } = {}) {
   await page.mouse.move(from.x, from.y);
   await waitFrames(page, 2);
   await page.mouse.down();
   await waitFrames(page, 2);
   for (let i = 1; i <= steps; ++i) {
     await page.mouse.move(from.x + (to.x - from.x) * i / steps, from.y + (to.y - from.y) * i / steps);
-    await waitFrames(page, 1);
+    await waitFrames(page, frames);
+    await each(i);
   }
-  await waitFrames(page, 1);
-  await page.mouse.up();
-  await waitFrames(page, 2);
 }
 
 /** Draws a disk as a student does: with the D tool, a drag from its centre to its rim (world points). */
