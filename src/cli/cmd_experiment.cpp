@@ -1,10 +1,6 @@
 // cspacelab experiment: PRM's empirical failure rate against the bound, for several n.
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <cstring>
-#include <utility>
 #include <stdexcept>
 
 #include "cli/commands.hpp"
@@ -25,34 +21,6 @@ json number_or_null(bool has, double v) { return has ? json(v) : json(nullptr); 
 // 4.1 s; the radius run measured for --max-pairs: 2e7 in 9 s).
 constexpr double kDefaultRunsInTotal = 50;
 
-// An expected count of pairs: in full below 10^6, else with `digits` significant digits.
-std::string count_text(double v, int digits = 3) {
-  char text[32];
-  if (v < 1e6 && digits <= 6)
-    std::snprintf(text, sizeof text, "%.0f", v);
-  else
-    std::snprintf(text, sizeof text, "%.*g", digits, v);
-  return text;
-}
-
-// The limit as given (the shortest text that reads back as it), and the total with as few digits
-// as tell it apart from the limit.
-std::pair<std::string, std::string> total_and_limit(double total, double limit) {
-  std::string limit_text = count_text(limit, 17);
-  for (int digits = 1; digits < 17; ++digits) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.*g", digits, limit);
-    if (std::strtod(text, nullptr) == limit) {
-      limit_text = text;
-      break;
-    }
-  }
-  if (limit < 1e6 && limit == std::floor(limit)) limit_text = count_text(limit);
-  for (int digits = 3; digits < 17; ++digits)
-    if (count_text(total, digits) != limit_text) return {count_text(total, digits), limit_text};
-  return {count_text(total, 17), limit_text};
-}
-
 // UsageError if the experiment (T runs per n, and the reference run) is expected to check more
 // candidate pairs in all than `limit`.
 void require_total_budget(const Space& space, const PlannerOptions& options, const ExperimentParams& params,
@@ -61,7 +29,7 @@ void require_total_budget(const Space& space, const PlannerOptions& options, con
   double total = reference;
   for (int n : params.sample_counts) total += params.trials * expected_candidate_pairs(space, options.neighbors, n);
   if (total <= limit) return;
-  const auto [total_text, limit_text] = total_and_limit(total, limit);
+  const auto [total_text, limit_text] = pairs_and_limit_text(total, limit);
   // A long list is named by its size and largest value: the error stays short.
   const std::string named = list.size() <= 40 ? list
                                               : "(" + std::to_string(params.sample_counts.size()) + " values up to " +
@@ -70,7 +38,7 @@ void require_total_budget(const Space& space, const PlannerOptions& options, con
                                                     ")";
   const bool radius = options.neighbors.kind == NeighborRule::Kind::Radius;
   throw UsageError("--trials " + std::to_string(params.trials) + " with --samples-list " + named + " means about " +
-                   total_text + " candidate pairs in all (the reference run: " + count_text(reference) +
+                   total_text + " candidate pairs in all (the reference run: " + pairs_text(reference) +
                    "), more than the " + limit_text +
                    " an experiment may check (--max-total-pairs); take fewer trials, fewer samples or " +
                    (radius ? "a smaller --radius" : "fewer neighbours (--k)") +

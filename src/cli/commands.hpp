@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <string>
+#include <utility>
 
 #include "cli/args.hpp"
 #include "core/collision.hpp"
@@ -56,6 +57,13 @@ struct PlannerOptions {
   double max_pairs = kDefaultMaxPairs;  ///< --max-pairs
 };
 PlannerOptions take_planner_options(Args& args);
+/// An expected count of candidate pairs as an error names it: in full below 10^6, else with
+/// `digits` significant digits.
+std::string pairs_text(double pairs, int digits = 3);
+/// `pairs` over a limit it exceeds, and the limit, as text: the limit as given (the shortest text
+/// that reads back as it), `pairs` with as few digits as tell the two apart (never "2e+07 ...
+/// more than the 2e+07").
+std::pair<std::string, std::string> pairs_and_limit_text(double pairs, double limit);
 /// UsageError if PRM with `samples` samples is expected to check more candidate pairs than
 /// options.max_pairs (expected_candidate_pairs()): said before the run, with what would fit.
 /// `run`, if not empty, names the run first ("the reference run: ").

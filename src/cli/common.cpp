@@ -1,5 +1,8 @@
 // Helpers shared by the CLI's commands: files, scenes, configurations, output.
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <stdexcept>
 #include <ostream>
@@ -76,23 +79,48 @@ PlannerOptions take_planner_options(Args& args) {
   return o;
 }
 
+std::string pairs_text(double v, int digits) {
+  char text[32];
+  if (v < 1e6 && digits <= 6)
+    std::snprintf(text, sizeof text, "%.0f", v);
+  else
+    std::snprintf(text, sizeof text, "%.*g", digits, v);
+  return text;
+}
+
+std::pair<std::string, std::string> pairs_and_limit_text(double pairs, double limit) {
+  std::string limit_text = pairs_text(limit, 17);
+  for (int digits = 1; digits < 17; ++digits) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.*g", digits, limit);
+    if (std::strtod(text, nullptr) == limit) {
+      limit_text = text;
+      break;
+    }
+  }
+  if (limit < 1e6 && limit == std::floor(limit)) limit_text = pairs_text(limit);
+  for (int digits = 3; digits < 17; ++digits)
+    if (pairs_text(pairs, digits) != limit_text) return {pairs_text(pairs, digits), limit_text};
+  return {pairs_text(pairs, 17), limit_text};
+}
+
 void require_pairs_budget(const Space& space, const PlannerOptions& options, int samples, const std::string& run) {
   const NeighborRule& rule = options.neighbors;
   if (within_pairs_budget(space, rule, samples, options.max_pairs)) return;
-  const double pairs = expected_candidate_pairs(space, rule, samples);
+  const auto [pairs, limit] = pairs_and_limit_text(expected_candidate_pairs(space, rule, samples), options.max_pairs);
   char text[400];
   if (rule.kind == NeighborRule::Kind::Radius) {
     std::snprintf(text, sizeof text,
-                  "--radius %g with %d samples means about %.3g candidate pairs, more than the %.3g a run may "
+                  "--radius %g with %d samples means about %s candidate pairs, more than the %s a run may "
                   "check (--max-pairs); with this n, r at most %s",
-                  rule.radius, samples, pairs, options.max_pairs,
+                  rule.radius, samples, pairs.c_str(), limit.c_str(),
                   radius_for_pairs_text(space, samples, options.max_pairs).c_str());
   } else {
     const std::string named = rule.kind == NeighborRule::Kind::PrmStar ? "--prm-star" : "--k " + std::to_string(rule.k);
     std::snprintf(text, sizeof text,
-                  "%s with %d samples means up to %.3g candidate pairs, more than the %.3g a run may check "
+                  "%s with %d samples means up to %s candidate pairs, more than the %s a run may check "
                   "(--max-pairs); take fewer samples or fewer neighbours (--k)",
-                  named.c_str(), samples, pairs, options.max_pairs);
+                  named.c_str(), samples, pairs.c_str(), limit.c_str());
   }
   throw UsageError(run + text);
 }

@@ -119,7 +119,7 @@ test('plan and experiment refuse a run with too many candidate pairs, and say wh
   fails(/r at most 0\.05637$/, 'plan', GAP, '--samples', '2000', '--radius', '0.5', '--max-pairs', '20000');
 
   // k rules: (n + 2) k pairs at most.
-  fails(/--k 50 with 1000 samples means up to 5\.01e\+04 candidate pairs.*--k/, 'plan', GAP, '--samples', '1000', '--k', '50', '--max-pairs', '10000');
+  fails(/--k 50 with 1000 samples means up to 50100 candidate pairs, more than the 10000 .*--k\)$/, 'plan', GAP, '--samples', '1000', '--k', '50', '--max-pairs', '10000');
   assert.equal(json('plan', GAP, '--samples', '1000', '--k', '9', '--max-pairs', '10000').samples, 1000);
   fails(/--max-pairs: must be at least 1/, 'plan', GAP, '--max-pairs', '0');
 
@@ -127,6 +127,9 @@ test('plan and experiment refuse a run with too many candidate pairs, and say wh
   fails(/--radius 5 with 200000 samples means about 2e\+10 candidate pairs, more than the 2e\+07 .*r at most 0\.0178/,
         'plan', GAP, '--samples', '200000', '--radius', '5');
   fails(/--prm-star with 1000000 samples means up to 5\.7e\+07 candidate pairs/, 'plan', GAP, '--samples', '1000000', '--prm-star');
+  // Just over: the count has as many digits as tell it from the limit.
+  fails(/--k 20 with 1000000 samples means up to 2\.000004e\+07 candidate pairs, more than the 2e\+07 /,
+        'plan', GAP, '--samples', '1000000', '--k', '20');
 
   // experiment: the reference run (4 x the largest n, at least 2000) counts too.
   fails(/the reference run .*--radius 0\.3 with 2000 samples/, 'experiment', GAP, '--samples-list', '100',
