@@ -102,6 +102,7 @@ class StepPrmLesson : public Lesson {
              {"samples_drawn", prm_->samples_drawn()},
              {"solved", prm_->solved()},
              {"replay_pending", replay_pending()},
+             {"planner_builds", rebuilds_},
              {"path", path},
              {"path_length", prm_->solved() ? json(prm_->path_length()) : json(nullptr)},
              {"roadmap_hash", hash},
@@ -148,6 +149,7 @@ class StepPrmLesson : public Lesson {
     prm_ = std::make_unique<Prm>(*world_, scene_.start, scene_.goal, params_);
     planned_world_.reset();
     planned_scene_ = scene_;
+    planned_json_ = scene_to_json(scene_);
     prm_->run_to(steps);
     labels_at_ = -1;
     logged_through_ = -1;
@@ -158,7 +160,13 @@ class StepPrmLesson : public Lesson {
   // The scene changed (the editor): replay, unless a drag goes on and the replay is too long for
   // a frame (see drag_replay.hpp). Then the planner keeps the world and scene it ran in, and
   // world_ follows the drag for what is drawn from it (the markers' warnings).
+  // A drag back to where it was pressed gives back the scene the planner ran in, exactly (see
+  // SceneEditor::continue_drag): its world again, and nothing to replay.
   void scene_edited() {
+    if (scene_to_json(scene_) == planned_json_) {
+      if (planned_world_) world_ = std::move(planned_world_);
+      return;
+    }
     if (!editor_.dragging() || replay_is_live(*prm_)) return rebuild(prm_->steps());
     if (!planned_world_) planned_world_ = std::move(world_);
     world_ = std::make_unique<CollisionWorld>(scene_);
@@ -262,6 +270,7 @@ class StepPrmLesson : public Lesson {
   // obstacles the event log names.
   std::unique_ptr<CollisionWorld> world_;
   Scene planned_scene_;
+  nlohmann::json planned_json_;  // scene_to_json(planned_scene_), to tell an edit that changes nothing
   std::unique_ptr<CollisionWorld> planned_world_;
   std::unique_ptr<Prm> prm_;
   std::vector<int> labels_;

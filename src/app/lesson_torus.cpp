@@ -163,6 +163,7 @@ class TorusLesson : public Lesson {
                {"seam_crossing_edges", seam_edges()},
                {"solved", prm_->solved()},
                {"replay_pending", replay_pending()},
+               {"planner_builds", version_},
                {"path", path},
                {"path_length", prm_->solved() ? json(prm_->path_length()) : json(nullptr)},
                {"roadmap_hash", hash}}}};
@@ -245,6 +246,7 @@ class TorusLesson : public Lesson {
     prm_ = std::make_unique<Prm>(*world_, scene_.start, scene_.goal, params_);
     planned_world_.reset();
     planned_scene_ = scene_;
+    planned_json_ = scene_to_json(scene_);
     prm_->run_to(steps);
     ++version_;
     logged_ = -1;
@@ -252,6 +254,9 @@ class TorusLesson : public Lesson {
 
   void rebuild_world() {
     world_ = std::make_unique<CollisionWorld>(scene_);
+    rebuild_map();
+  }
+  void rebuild_map() {
     map_ = std::make_unique<ArmCSpaceMap>(std::get<ArmRobot>(scene_.robot), scene_.obstacles);
     std::vector<std::uint8_t> pixels;
     free_fraction_ = map_->rasterize(128, pixels);
@@ -260,7 +265,16 @@ class TorusLesson : public Lesson {
   // The scene changed (the editor): replay, unless a drag goes on and the replay is too long for
   // a frame (see drag_replay.hpp). Then the planner keeps the world it ran in, and the world and
   // the C-obstacles follow the drag live.
+  // A drag back to where it was pressed gives back the scene the planner ran in, exactly (see
+  // SceneEditor::continue_drag): its world again, and nothing to replay.
   void scene_edited() {
+    if (scene_to_json(scene_) == planned_json_) {
+      if (planned_world_) {
+        world_ = std::move(planned_world_);
+        rebuild_map();
+      }
+      return;
+    }
     if (!editor_.dragging() || replay_is_live(*prm_)) return rebuild(prm_->steps());
     if (!planned_world_) planned_world_ = std::move(world_);
     rebuild_world();
@@ -493,12 +507,13 @@ class TorusLesson : public Lesson {
   // planned_scene_ (otherwise equal to scene_) is the scene it ran in, whose obstacles the
   // event log names.
   Scene planned_scene_;
+  nlohmann::json planned_json_;  // scene_to_json(planned_scene_), to tell an edit that changes nothing
   std::unique_ptr<CollisionWorld> planned_world_;
   std::unique_ptr<Prm> prm_;
   RoadmapLayer roadmap_layer_;
   std::vector<int> labels_;
   long labels_at_ = -1;
-  int version_ = 0, labels_version_ = -1;
+  int version_ = 0, labels_version_ = -1;  // version_: planners built (rebuild())
   long logged_ = -1;
   Config q_;
   std::optional<Config> ghost_;

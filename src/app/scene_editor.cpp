@@ -226,47 +226,72 @@ bool SceneEditor::begin_drag(WorkspaceView& view, Scene& scene, const Options& o
 bool SceneEditor::continue_drag(WorkspaceView& view, Scene& scene, LabContext& ctx) {
   const Vec2 m = view.mouse_world();
   const bool down = ImGui::IsMouseDown(ImGuiMouseButton_Left);
+  // What is dragged moves by the mouse's offset from the press, from where it was at the press:
+  // a press that does not move changes nothing (no jump to the cursor, no replay), and bringing
+  // the mouse back to where it was pressed puts the scene back exactly, bit for bit (offsets
+  // added frame after frame would drift by rounding).
+  if (!before_drag_) {  // begin_drag() sets it for every drag it starts; never drag blind
+    drop_drag();
+    return false;
+  }
+  const Vec2 offset = m - grab_;
+  const Scene& was = *before_drag_;
   bool changed = false;
   switch (drag_) {
     case Drag::Start:
     case Drag::Goal: {
       Config& q = drag_ == Drag::Start ? scene.start : scene.goal;
+      const Config& q0 = drag_ == Drag::Start ? was.start : was.goal;
       // Positions stay inside the workspace (the point robot's configuration space).
-      q[0] = std::clamp(m.x(), scene.workspace_min.x(), scene.workspace_max.x());
-      q[1] = std::clamp(m.y(), scene.workspace_min.y(), scene.workspace_max.y());
-      changed = true;
+      const double x = std::clamp(q0[0] + offset.x(), scene.workspace_min.x(), scene.workspace_max.x());
+      const double y = std::clamp(q0[1] + offset.y(), scene.workspace_min.y(), scene.workspace_max.y());
+      changed = x != q[0] || y != q[1];
+      q[0] = x;
+      q[1] = y;
       break;
     }
     case Drag::Obstacle: {
-      translate(scene.obstacles[static_cast<std::size_t>(target_)], m - grab_);
-      grab_ = m;
-      changed = true;
+      Obstacle& o = scene.obstacles[static_cast<std::size_t>(target_)];
+      Obstacle moved = was.obstacles[static_cast<std::size_t>(target_)];
+      if (offset != Vec2::Zero()) translate(moved, offset);
+      changed = obstacle_to_json(moved) != obstacle_to_json(o);
+      o = std::move(moved);
       break;
     }
     case Drag::DiskRim: {
       Disk& d = std::get<Disk>(scene.obstacles[static_cast<std::size_t>(target_)]);
-      d.radius = std::max(view.pixels(2.0f), length(m - d.center));
-      changed = true;
+      const double r0 = std::get<Disk>(was.obstacles[static_cast<std::size_t>(target_)]).radius;
+      // The rim follows the mouse's change of distance from the centre (the press may be a few
+      // pixels off the rim).
+      const double r = offset == Vec2::Zero()
+                           ? r0
+                           : std::max(view.pixels(2.0f), r0 + (length(m - d.center) - length(grab_ - d.center)));
+      changed = r != d.radius;
+      d.radius = r;
       break;
     }
     case Drag::Vertex: {
       auto& verts = std::get<PolygonObstacle>(scene.obstacles[static_cast<std::size_t>(target_)]).vertices;
-      const Vec2 old = verts[static_cast<std::size_t>(handle_)];
-      verts[static_cast<std::size_t>(handle_)] = m;
+      const auto i = static_cast<std::size_t>(handle_);
+      const Vec2 old = verts[i];
+      verts[i] = std::get<PolygonObstacle>(was.obstacles[static_cast<std::size_t>(target_)]).vertices[i] + offset;
       // A move that would make the polygon cross itself is not taken.
       if (*polygon_problem(verts)) {
-        verts[static_cast<std::size_t>(handle_)] = old;
+        verts[i] = old;
         if (ctx.notice.empty() || ImGui::GetTime() > ctx.notice_until)
           ctx.notify("That vertex position would make the polygon cross itself.", 2.0);
       } else {
-        changed = true;
+        changed = verts[i] != old;
       }
       break;
     }
     case Drag::WallEnd: {
       Wall& w = std::get<Wall>(scene.obstacles[static_cast<std::size_t>(target_)]);
-      (handle_ == 0 ? w.a : w.b) = m;
-      changed = true;
+      const Wall& w0 = std::get<Wall>(was.obstacles[static_cast<std::size_t>(target_)]);
+      const Vec2 end = (handle_ == 0 ? w0.a : w0.b) + offset;
+      Vec2& at = handle_ == 0 ? w.a : w.b;
+      changed = end != at;
+      at = end;
       break;
     }
     case Drag::NewDisk:

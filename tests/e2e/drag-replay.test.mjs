@@ -118,3 +118,44 @@ test('the torus lesson: the C-obstacles follow the drag, the replay waits for th
   const moved = await api(page, 'get_scene');
   assert.equal(await freshHash(page, moved, after.prm.steps), after.prm.roadmap_hash, 'the replay grew what a fresh run grows');
 }));
+
+// What a drag moves follows the mouse's offset from the press, from where it was then: a press
+// that does not move changes nothing, and coming back to the press point restores the scene bit
+// for bit, so the planner that ran in it is kept rather than replayed.
+test('a press without a move, or a drag back to where it was pressed, replays nothing',
+  () => withPage({ viewport: { width: 1100, height: 720 } }, async ({ page }) => {
+  const before = await startRun(page, { samples: 6000, neighbors: 'k:10', seed: 3 });
+  // Off the centre: the old editor moved a pressed disk's centre to the cursor.
+  const [from, to] = await worldToPage(page, [[0.53, 0.48], [0.62, 0.55]]);
+  const unchanged = async (what) => {
+    const s = await api(page, 'state');
+    assert.equal(s.replay_pending, false, `${what}: nothing waits`);
+    assert.equal(s.planner_builds, before.planner_builds, `${what}: no planner built`);
+    assert.equal(s.roadmap_hash, before.roadmap_hash);
+    assert.deepEqual((await api(page, 'get_scene')).obstacles, [DISK], `${what}: the disk is where it was`);
+  };
+  await hold(page, from, from, { steps: 1, frames: 3 });
+  await unchanged('pressed');
+  await page.mouse.up();
+  await waitFrames(page, 2);
+  await unchanged('released');
+
+  await hold(page, from, to, { steps: 3, frames: 2 });
+  assert.equal((await api(page, 'state')).replay_pending, true, 'moved: the replay waits');
+  await page.mouse.move(from.x, from.y, { steps: 3 });
+  await waitFrames(page, 2);
+  await unchanged('back at the press point');
+  await page.mouse.up();
+  await waitFrames(page, 2);
+  await unchanged('released there');
+  // The drags added no undo step: undo takes back the scene's loading, the last edit before them.
+  assert.equal(await api(page, 'undo'), true);
+  assert.notDeepEqual((await api(page, 'get_scene')).obstacles, [DISK], 'undo went past the drags');
+
+  // A small run replays live; pressing without moving builds no planner there either.
+  const small = await startRun(page, { samples: 400, neighbors: 'k:10', seed: 3 });
+  await hold(page, from, from, { steps: 1, frames: 3 });
+  await page.mouse.up();
+  await waitFrames(page, 2);
+  assert.equal((await api(page, 'state')).planner_builds, small.planner_builds);
+}));
