@@ -288,6 +288,13 @@ class AnalysisLesson : public Lesson {
       free_volume_ = measured_volume_;
     }
     if (bound(0).rate > 0) ImGui::Text("the bound reaches 1%% at n = %.0f", bound(0).samples_for(0.01));
+    if (clearance_ > 0) {
+      // P8 beside it (the orange curve): the same r, all of F = [0,1]^d tiled.
+      const TilingBound t = whole_space_tiling_bound(clearance_, dim_, 0);
+      ImGui::TextWrapped("P8, the whole cube [0,1]^%d tiled instead: m = %.4g balls, %.4g of them reaching out of "
+                         "the cube (hit less often); 1%% at n = %.4g",
+                         dim_, t.balls, t.boundary_balls, t.samples_for(0.01));
+    }
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ImGui::TextWrapped("measured: L and the path's clearance from a reference run with 3000 samples "
                        "(r = that clearance / the robot's K), mu(F) by Monte Carlo");

@@ -25,8 +25,11 @@ int run_bound(Args& args, std::ostream& os) {
       if (length || volume) throw UsageError("--tiling is for F = [0,1]^d: no --length or --free-volume");
       const TilingBound t = whole_space_tiling_bound(r, d, n);
       print_json(os, {{"balls", t.balls},
+                      {"balls_per_axis", t.per_axis},
                       {"covering_balls", t.covering_balls},
+                      {"boundary_balls", t.boundary_balls},
                       {"sigma", t.sigma},
+                      {"interior_bound", t.interior_bound},
                       {"failure_bound", t.bound},
                       {"vacuous", t.vacuous},
                       {"samples_for_target", t.samples_for(goal)},
@@ -59,10 +62,16 @@ const Command kBoundCommand{
     "  Prob(failure) <= m exp(-sigma r^d n),  sigma = mu(B_1) / (2^d mu(F)), mu(F) = V.\n"
     "  -> {\"balls\": m, \"sigma\": s, \"failure_bound\": p, \"vacuous\": p >= 1, \"exponent\": s r^d n,\n"
     "      \"samples_for_target\": the n at which the bound reaches p (default 0.01), \"target\"}\n"
-    "Whole-space tiling (P8), F = [0,1]^d: a grid of balls of radius r/2, r/2 apart along each\n"
-    "axis, m = ceil(2/r)^d, with sigma = mu(B_1) / 2^d.\n"
-    "  -> {\"balls\": m, \"covering_balls\": ceil(sqrt(d)/r)^d (enough to cover every point),\n"
-    "      \"sigma\", \"failure_bound\", \"vacuous\", \"samples_for_target\", \"target\"}\n"
+    "Whole-space tiling (P8), F = [0,1]^d: N = ceil(max(2, sqrt(d)) / r) balls of radius r/2 per\n"
+    "axis, 1/N apart (neighbours r/2 apart at most, and every point covered), m = N^d, with\n"
+    "sigma = mu(B_1) / 2^d. interior_bound = m exp(-sigma r^d n) is the path bound with m balls, as\n"
+    "if every ball lay in F; the balls at the cube's faces stick out and are hit less often, so\n"
+    "failure_bound counts a ball reaching out of the cube along j axes as hit at rate\n"
+    "sigma min(r,1)^d / 2^j: sum_j C(d,j) E^j (N-E)^(d-j) exp(-sigma min(r,1)^d n / 2^j), E of the\n"
+    "N balls per axis within min(r,1)/2 of a face.\n"
+    "  -> {\"balls\": m, \"balls_per_axis\": N, \"covering_balls\": ceil(sqrt(d)/r)^d (enough to\n"
+    "      cover every point), \"boundary_balls\": those reaching out of the cube, \"sigma\",\n"
+    "      \"interior_bound\", \"failure_bound\", \"vacuous\", \"samples_for_target\", \"target\"}\n"
     "The failure bound is not clamped to 1: a value above 1 is reported as vacuous.\n",
     run_bound};
 

@@ -1,7 +1,9 @@
 #include "core/analysis.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <initializer_list>
+#include <limits>
 #include <stdexcept>
 
 #include "core/angles.hpp"
@@ -30,7 +32,12 @@ FailureBound path_tiling_bound(double length, double clearance, int d, double fr
   require(std::isfinite(samples) && samples >= 0, "samples must be a finite number >= 0");
   FailureBound b;
   // Section 2.1: m = ceil(L / (r/2)) balls along the path, sigma = mu(B_1) / (2^d mu(F)).
-  b.balls = std::ceil(length / (clearance / 2));
+  // A quotient within 1e-12 of an integer is that integer: L and r are typed as decimals, and
+  // 0.07 / 0.01 is 7.000000000000001 in binary, where a student counts 7 balls, not 8.
+  const double quotient = length / (clearance / 2);
+  require(std::isfinite(quotient), "more than 1e308 balls: take a shorter path or a larger clearance");
+  b.balls = std::ceil(quotient);
+  if (b.balls > 1 && quotient - (b.balls - 1) <= 1e-12 * quotient) b.balls -= 1;
   b.sigma = unit_ball_volume(d) / (std::pow(2.0, d) * free_volume);
   b.rate = b.sigma * std::pow(clearance, d);
   b.exponent = b.rate * samples;
@@ -39,32 +46,87 @@ FailureBound path_tiling_bound(double length, double clearance, int d, double fr
   return b;
 }
 
-// P8, derived. Take F = [0,1]^d. The path argument needs balls of radius r/2 inside F whose
-// centres are at most r/2 apart along the path, so that samples in neighbouring balls are
-// joined by a free straight line; F is convex here, so any straight line in it is free and
-// only the tiling matters. Tiling the whole cube the same way, a grid with spacing r/2 along
-// every axis, takes ceil(1 / (r/2)) = ceil(2/r) centres per axis:
-//   m = ceil(2/r)^d,  Prob(failure) <= ceil(2/r)^d exp(-sigma r^d n),  sigma = mu(B_1) / 2^d.
-// (Balls of radius r/2 on that grid cover the cube only while their radius reaches a cell's
-// far corner, (r/2) sqrt(d)/2 <= r/2, i.e. d <= 4; a true covering needs spacing r/sqrt(d),
-// ceil(sqrt(d)/r)^d balls. Both are reported.)
-// Against the path bound ceil(2L/r) exp(-sigma r^d n): the exponential decay in n is the same,
-// but the factor in front grows like (2/r)^d instead of 2L/r, so reaching the same failure
-// probability costs about (d-1) ln(2/r) / (sigma r^d) more samples: much worse, and the more
-// so in high dimension and with small clearance, because it pays for every region of the
-// space rather than for one corridor.
+// P8, derived. Take F = [0,1]^d, so mu(F) = 1 and sigma = mu(B_1) / 2^d. The path argument
+// needs balls of radius r/2 whose neighbours' centres are at most r/2 apart, so that samples
+// in neighbouring balls are within r of each other (F is convex here, so any straight line in
+// it is free). Tiling the whole cube: a grid of N balls per axis, centred in the cells of
+// width 1/N. Neighbours r/2 apart needs 1/N <= r/2; for the balls to cover every point the
+// cell's half-diagonal must be within a ball, sqrt(d) / (2N) <= r/2, i.e. 1/N <= r/sqrt(d)
+// (the stronger condition once d > 4). So
+//   N = ceil(max(2, sqrt(d)) / r),  m = N^d  (ceil(2/r)^d for d <= 4).
+// The "very slight" modification puts m where the path had ceil(L / (r/2)):
+//   m exp(-sigma r^d n)   (interior_bound).
+// That step assumed each ball lies in F, so that a sample hits it with probability sigma r^d.
+// The path's balls do (their centres have clearance r); the grid's balls at the faces do not:
+// a corner ball of radius 0.05 in the unit square has only 63% of its area inside. So, for a
+// sound bound: a ball whose centre is within rho = min(r/2, 1/2) of the faces along j axes
+// still holds, inside F, one of the 2^j equal pieces into which the coordinate reflections
+// through its centre cut B(c, rho): the one on the inner side along each of those axes, which
+// stays in F because rho <= 1/2 (and along the other axes the ball stays in F anyway). So it is
+// hit with probability at least sigma min(r, 1)^d / 2^j, and with E per axis of the N balls
+// within rho of a face,
+//   Prob(failure) <= sum_j C(d, j) E^j (N - E)^(d-j) exp(-sigma min(r,1)^d n / 2^j)   (bound).
+// Against the path bound ceil(2L/r) exp(-sigma r^d n): the factor in front grows like
+// (2/r)^d instead of 2L/r, which costs about (d - 1) ln(2/r) / (sigma r^d) more samples for the
+// same failure probability (interior balls); the corner balls, hit up to 2^d times less often,
+// cost more still. Much worse, and the more so in high dimension: it pays for every region of
+// the space, faces and corners included, rather than for one corridor.
 TilingBound whole_space_tiling_bound(double clearance, int d, double samples) {
   require(std::isfinite(clearance) && clearance > 0, "clearance must be a finite number > 0");
   require(d >= 1 && d <= 64, "dimension must be in 1..64");
   require(std::isfinite(samples) && samples >= 0, "samples must be a finite number >= 0");
   TilingBound t;
-  t.balls = std::pow(std::ceil(2.0 / clearance), d);
-  t.covering_balls = std::pow(std::ceil(std::sqrt(static_cast<double>(d)) / clearance), d);
+  t.dim = d;
+  const double root_d = std::sqrt(static_cast<double>(d));
+  t.per_axis = std::ceil(std::max(2.0, root_d) / clearance);
+  t.balls = std::pow(t.per_axis, d);
+  t.covering_balls = std::pow(std::ceil(root_d / clearance), d);
+  require(std::isfinite(t.balls), "more than 1e308 balls: take a larger clearance or a smaller dimension");
   t.sigma = unit_ball_volume(d) / std::pow(2.0, d);
   t.rate = t.sigma * std::pow(clearance, d);
-  t.bound = t.balls * std::exp(-t.rate * samples);
+  // Cells along an axis whose centre (i + 1/2) / N is within rho of face 0 (as many at face
+  // 1); a hair more rather than less, so rounding can only count a ball as reaching out.
+  const double rho = std::min(clearance, 1.0) / 2;
+  const double near = std::ceil(rho * t.per_axis * (1.0 + 1e-12) - 0.5);
+  t.edge_per_axis = std::min(t.per_axis, 2.0 * std::max(0.0, near));
+  t.boundary_balls = t.balls - std::pow(t.per_axis - t.edge_per_axis, d);
+  t.hit_rate = t.sigma * std::pow(std::min(clearance, 1.0), d);
+  t.interior_bound = t.balls * std::exp(-t.rate * samples);
+  t.bound = t.bound_at(samples);
   t.vacuous = t.bound >= 1.0;
   return t;
+}
+
+double TilingBound::bound_at(double n) const {
+  // The sum over j, in logarithms: its terms can be far beyond a double while the sum is small.
+  const double inner = per_axis - edge_per_axis;
+  double logs[65];
+  int count = 0;
+  double top = -std::numeric_limits<double>::infinity();
+  double choose = 1.0;  // C(d, j), exact enough in a double for d <= 64
+  for (int j = 0; j <= dim; ++j) {
+    if (j > 0) choose = choose * (dim - j + 1) / j;
+    if ((j > 0 && edge_per_axis == 0) || (j < dim && inner == 0)) continue;  // no such balls
+    const double l = std::log(choose) + (j > 0 ? j * std::log(edge_per_axis) : 0.0) +
+                     (j < dim ? (dim - j) * std::log(inner) : 0.0) - hit_rate * n / std::ldexp(1.0, j);
+    logs[count++] = l;
+    top = std::max(top, l);
+  }
+  double sum = 0.0;
+  for (int i = 0; i < count; ++i) sum += std::exp(logs[i] - top);
+  return std::exp(top + std::log(sum));
+}
+
+double TilingBound::samples_for(double target) const {
+  require(target > 0.0 && target < 1.0, "target probability must be in (0, 1)");
+  if (bound_at(0.0) <= target) return 0.0;
+  // The bound falls with n; all m balls at the slowest rate reach the target by hi.
+  double lo = 0.0, hi = std::log(balls / target) * std::ldexp(1.0, dim) / hit_rate;
+  for (int i = 0; i < 200 && hi - lo > 1e-9 * hi; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (bound_at(mid) > target ? lo : hi) = mid;
+  }
+  return hi;
 }
 
 double FailureBound::samples_to_reach(double balls, double rate, double target) {

@@ -31,14 +31,27 @@ FailureBound path_tiling_bound(double length, double clearance, int d, double fr
 
 /// P8: tile all of F = [0,1]^d instead of one path (see the derivation in analysis.cpp).
 struct TilingBound {
-  double balls = 0;           ///< m = ceil(2/r)^d: the homework's spacing, r/2 between neighbours
+  int dim = 0;
+  double per_axis = 0;        ///< N = ceil(max(2, sqrt(d)) / r): balls per axis, 1/N apart
+  double balls = 0;           ///< m = N^d: neighbours r/2 apart at most, and every point covered
   double covering_balls = 0;  ///< ceil(sqrt(d)/r)^d: enough for the balls to cover every point
+  double boundary_balls = 0;  ///< of the m, those that stick out of the cube
   double sigma = 0;           ///< mu(B_1) / 2^d (mu(F) = 1)
   double rate = 0;            ///< sigma r^d
-  double bound = 0;           ///< balls * exp(-sigma r^d n)
-  bool vacuous = false;
+  /// m exp(-sigma r^d n): the path argument with m in place of ceil(L / (r/2)), as if every
+  /// ball lay in F. Not a bound on its own: a ball sticking out of the cube is hit less often.
+  double interior_bound = 0;
+  double bound = 0;           ///< the failure bound, boundary balls included (the derivation)
+  bool vacuous = false;       ///< bound >= 1
   /// Samples for the bound to reach `target` in (0, 1).
-  double samples_for(double target) const { return FailureBound::samples_to_reach(balls, rate, target); }
+  double samples_for(double target) const;
+  /// The bound after n samples (what `bound` holds for the n it was made with).
+  double bound_at(double n) const;
+
+  // Per axis, the balls within reach of a face (`edge_per_axis`) and the rate a ball reaching
+  // out along j axes is at least hit with, `hit_rate` / 2^j (see the derivation).
+  double edge_per_axis = 0;
+  double hit_rate = 0;
 };
 TilingBound whole_space_tiling_bound(double clearance, int d, double samples);
 

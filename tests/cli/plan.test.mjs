@@ -65,7 +65,18 @@ test('bound and bound --tiling', () => {
   assert.equal(json('bound', '--length', '1', '--clearance', '0.1', '--dim', '2', '--free-volume', '1', '--samples', '5').vacuous, true);
   const t = json('bound', '--tiling', '--clearance', '0.1', '--dim', '3', '--samples', '1000');
   assert.equal(t.balls, 8000);
+  assert.equal(t.balls_per_axis, 20);
+  assert.equal(t.boundary_balls, 8000 - 18 ** 3);  // the first and last along some axis
   assert.ok(Math.abs(t.sigma - 4 / 3 * Math.PI / 8) < 1e-15);
+  const e = Math.PI / 6 * 1e-3 * 1000;
+  assert.ok(Math.abs(t.interior_bound / (8000 * Math.exp(-e)) - 1) < 1e-12);
+  // Balls reaching out along j axes count at rate e / 2^j: C(3,j) 2^j 18^(3-j) of them.
+  const sound = 18 ** 3 * Math.exp(-e) + 3 * 2 * 18 ** 2 * Math.exp(-e / 2) + 3 * 4 * 18 * Math.exp(-e / 4) + 8 * Math.exp(-e / 8);
+  assert.ok(Math.abs(t.failure_bound / sound - 1) < 1e-12, `${t.failure_bound} against ${sound}`);
+  // P8 counts for a covering: past d = 4, ceil(sqrt(d)/r) per axis.
+  assert.equal(json('bound', '--tiling', '--clearance', '0.1', '--dim', '6', '--samples', '0').balls_per_axis, 25);
+  // L / (r/2) as the decimals typed mean it: 7 balls, although 0.07 / 0.01 is 7.000000000000001.
+  assert.equal(json('bound', '--length', '0.07', '--clearance', '0.02', '--dim', '2', '--free-volume', '1', '--samples', '10').balls, 7);
 });
 
 test('visibility: exact and Monte Carlo agree', () => {
@@ -97,6 +108,8 @@ test('bad input for plan, bound, visibility, experiment', () => {
   fails(/--k: k must be an integer/, 'plan', GAP, '--k', '0');
   fails(/--radius: the radius must be > 0/, 'plan', GAP, '--radius', '-1');
   fails(/clearance must be a finite number > 0/, 'bound', '--length', '1', '--clearance', '0', '--dim', '2', '--free-volume', '1', '--samples', '10');
+  fails(/more than 1e308 balls: take a shorter path or a larger clearance/, 'bound', '--length', '1e308', '--clearance', '1e-300', '--dim', '1', '--free-volume', '1', '--samples', '1e303');
+  fails(/more than 1e308 balls/, 'bound', '--tiling', '--clearance', '1e-10', '--dim', '64', '--samples', '10');
   fails(/missing --free-volume/, 'bound', '--length', '1', '--clearance', '0.1', '--dim', '2', '--samples', '10');
   fails(/x1 must be in \[0, 1\/2\)/, 'visibility', '--x', '0.7', '--y', '0.5', '--gap', '0.1');
   fails(/--gap: 'nan' is not a finite number/, 'visibility', '--x', '0.2', '--y', '0.5', '--gap', 'nan');

@@ -2,6 +2,7 @@
 // (exact, every case, against Monte Carlo), and the Wilson interval.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -29,6 +30,13 @@ TEST_CASE("the path-tiling bound: m = ceil(L/(r/2)), sigma = mu(B1)/(2^d mu(F))"
   CHECK(csl::path_tiling_bound(1.0, 0.1, 2, 0.9, 10).vacuous);
   // m is a ceiling: L = 1.01 needs 21 balls.
   CHECK(csl::path_tiling_bound(1.01, 0.1, 2, 0.9, 0).balls == 21);
+  // ... of L / (r/2) as the decimals typed mean it: 0.07 / 0.01 is 7.000000000000001 in binary.
+  CHECK(0.07 / (0.02 / 2) > 7.0);
+  CHECK(csl::path_tiling_bound(0.07, 0.02, 2, 1.0, 0).balls == 7);
+  CHECK(csl::path_tiling_bound(0.27, 0.18, 2, 1.0, 0).balls == 3);
+  CHECK(csl::path_tiling_bound(0.0700001, 0.02, 2, 1.0, 0).balls == 8);
+  // More balls than a double holds: an error, not a bound of infinity said to be not vacuous.
+  CHECK_THROWS_AS(csl::path_tiling_bound(1e308, 1e-300, 1, 1.0, 1e303), std::invalid_argument);
   // Exponential decay in n: doubling n squares exp(-...).
   const double b1 = csl::path_tiling_bound(2.0, 0.2, 3, 1.0, 500).bound / 20;
   const double b2 = csl::path_tiling_bound(2.0, 0.2, 3, 1.0, 1000).bound / 20;
@@ -41,34 +49,87 @@ TEST_CASE("the path-tiling bound: m = ceil(L/(r/2)), sigma = mu(B1)/(2^d mu(F))"
   CHECK_THROWS_AS(csl::path_tiling_bound(std::nan(""), 0.1, 2, 1.0, 10), std::invalid_argument);
 }
 
-TEST_CASE("P8: tiling all of [0,1]^d costs ceil(2/r)^d balls") {
+namespace {
+// Volume of {x in [0,1]^d : |x - c| <= rho}, d = 1 or 2: exact in 1-D, by a fine midpoint
+// rule over x in 2-D (the chord at each x is exact).
+double inside_volume(int d, const double* c, double rho) {
+  if (d == 1) return std::min(1.0, c[0] + rho) - std::max(0.0, c[0] - rho);
+  const int steps = 20000;
+  double area = 0;
+  for (int i = 0; i < steps; ++i) {
+    const double x = (i + 0.5) / steps, dx = x - c[0];
+    if (std::fabs(dx) >= rho) continue;
+    const double h = std::sqrt(rho * rho - dx * dx);
+    area += std::max(0.0, std::min(1.0, c[1] + h) - std::max(0.0, c[1] - h)) / steps;
+  }
+  return area;
+}
+// Prob(some ball of the P8 grid gets no sample) <= the union over the balls of their exact
+// (1 - mu(B_i cap F))^n: the sharpest union bound, which a sound failure bound must not undercut.
+double exact_union(int d, double r, double n) {
+  const int per_axis = static_cast<int>(std::ceil(std::max(2.0, std::sqrt(d)) / r));
+  double sum = 0;
+  for (int i = 0; i < per_axis; ++i)
+    for (int j = 0; j < (d == 2 ? per_axis : 1); ++j) {
+      const double c[2] = {(i + 0.5) / per_axis, (j + 0.5) / per_axis};
+      sum += std::pow(1.0 - inside_volume(d, c, r / 2), n);
+    }
+  return sum;
+}
+}  // namespace
+
+TEST_CASE("P8: tiling all of [0,1]^d, boundary balls included") {
   const auto t = csl::whole_space_tiling_bound(0.1, 2, 1000);
   CHECK(t.balls == 400);
+  CHECK(t.per_axis == 20);
   CHECK(t.sigma == Approx(csl::kPi / 4));
-  CHECK(t.bound == Approx(400 * std::exp(-csl::kPi / 4 * 0.01 * 1000)));
-  // Scaling: the prefactor grows geometrically with d and like r^-d.
-  for (int d = 1; d <= 6; ++d) {
+  CHECK(t.interior_bound == Approx(400 * std::exp(-csl::kPi / 4 * 0.01 * 1000)));
+  // Centres at (i + 1/2) / 20: the first and last of each axis are within r/2 = 0.05 of a face.
+  CHECK(t.edge_per_axis == 2);
+  CHECK(t.boundary_balls == 400 - 18 * 18);
+  const double e = csl::kPi / 4 * 0.01 * 1000;
+  CHECK(t.bound == Approx(18 * 18 * std::exp(-e) + 2 * 2 * 18 * std::exp(-e / 2) + 4 * std::exp(-e / 4)));
+  // The counts: ceil(2/r) per axis up to d = 4, then ceil(sqrt(d)/r), so that the balls cover
+  // every point (the cells' half-diagonal within r/2) and neighbours stay r/2 apart.
+  for (int d = 1; d <= 4; ++d) {
     CHECK(csl::whole_space_tiling_bound(0.1, d, 0).balls == Approx(std::pow(20.0, d)));
     CHECK(csl::whole_space_tiling_bound(0.05, d, 0).balls == Approx(std::pow(40.0, d)));
   }
-  // A strict covering needs more balls once d > 4 (the grid's cells outgrow the balls).
-  CHECK(csl::whole_space_tiling_bound(0.1, 2, 0).covering_balls <= csl::whole_space_tiling_bound(0.1, 2, 0).balls);
-  CHECK(csl::whole_space_tiling_bound(0.1, 6, 0).covering_balls > csl::whole_space_tiling_bound(0.1, 6, 0).balls);
-  // Reaching 1% costs about (d-1) ln(2/r) / (sigma r^d) more samples than for one path.
-  for (int d = 2; d <= 4; ++d) {
-    const double extra = csl::whole_space_tiling_bound(0.1, d, 0).samples_for(0.01) -
-                         csl::path_tiling_bound(1.0, 0.1, d, 1.0, 0).samples_for(0.01);
-    const double rate = csl::whole_space_tiling_bound(0.1, d, 0).rate;
-    CHECK(extra == Approx((d - 1) * std::log(20.0) / rate));
+  CHECK(csl::whole_space_tiling_bound(0.1, 6, 0).per_axis == 25);
+  CHECK(csl::whole_space_tiling_bound(0.1, 6, 0).balls == csl::whole_space_tiling_bound(0.1, 6, 0).covering_balls);
+  for (int d = 1; d <= 8; ++d) {
+    const auto w = csl::whole_space_tiling_bound(0.1, d, 0);
+    CHECK(std::sqrt(d) / (2 * w.per_axis) <= 0.05 + 1e-15);  // covered
+    CHECK(1 / w.per_axis <= 0.05 + 1e-15);                   // neighbours r/2 apart
   }
-  // Compared with the path bound for a path of length 1 in the same cube: same decay in n, a
-  // far larger factor in front, increasingly so with d.
+  // Sound: never below the exact union bound, which the interior bound (the path argument's
+  // step taken as is) undercuts by orders of magnitude at the faces.
+  for (double r : {0.5, 0.3, 0.1})
+    for (double n : {10.0, 100.0, 1000.0, 10000.0}) {
+      const double exact1 = exact_union(1, r, n), exact2 = exact_union(2, r, n);
+      CHECK(csl::whole_space_tiling_bound(r, 1, n).bound >= exact1 * (1 - 1e-9));
+      CHECK(csl::whole_space_tiling_bound(r, 2, n).bound >= exact2 * (1 - 1e-6));
+    }
+  CHECK(csl::whole_space_tiling_bound(0.5, 1, 100).interior_bound < exact_union(1, 0.5, 100) / 5);
+  CHECK(csl::whole_space_tiling_bound(0.1, 2, 10000).interior_bound < exact_union(2, 0.1, 10000) * 1e-9);
+  // A clearance beyond the cube: the balls are counted at radius 1/2.
+  const auto big = csl::whole_space_tiling_bound(3.0, 2, 50);
+  CHECK(big.balls == 1);
+  CHECK(big.bound >= std::pow(1.0 - csl::kPi / 4, 50));
+  // Samples for a 1% bound, and the bound there is 1%; more than for the interior bound alone.
   for (int d = 1; d <= 5; ++d) {
-    const auto whole = csl::whole_space_tiling_bound(0.1, d, 2000);
-    const auto path = csl::path_tiling_bound(1.0, 0.1, d, 1.0, 2000);
-    CHECK(whole.sigma == Approx(path.sigma));
-    CHECK(whole.bound / path.bound == Approx(std::pow(20.0, d) / 20.0));
+    const auto w = csl::whole_space_tiling_bound(0.1, d, 0);
+    const double need = w.samples_for(0.01);
+    CHECK(w.bound_at(need) == Approx(0.01).epsilon(1e-6));
+    CHECK(need > csl::FailureBound::samples_to_reach(w.balls, w.rate, 0.01));
+    // ... and far more than for one path of length 1 in the same cube, increasingly with d.
+    const double path = csl::path_tiling_bound(1.0, 0.1, d, 1.0, 0).samples_for(0.01);
+    CHECK(need >= path);
+    if (d > 1) CHECK(need / path > csl::whole_space_tiling_bound(0.1, d - 1, 0).samples_for(0.01) /
+                                       csl::path_tiling_bound(1.0, 0.1, d - 1, 1.0, 0).samples_for(0.01));
   }
+  CHECK_THROWS_AS(csl::whole_space_tiling_bound(1e-10, 64, 10), std::invalid_argument);  // > 1e308 balls
+  CHECK_THROWS_AS(csl::whole_space_tiling_bound(0.1, 2, -1), std::invalid_argument);
 }
 
 TEST_CASE("P9: the visibility probability in every case of the cone") {
