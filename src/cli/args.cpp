@@ -66,7 +66,11 @@ double parse_number(const std::string& text, const std::string& what) {
   char* end = nullptr;
   errno = 0;
   double v = std::strtod(begin, &end);
-  if (text.empty() || end != begin + text.size() || errno == ERANGE || !std::isfinite(v))
+  // Plain decimals only: strtod would also take leading spaces and hexadecimal ("0x1p-2").
+  const bool decimal = !text.empty() && text.find_first_of(" \t\n\v\f\rxX") == std::string::npos;
+  // ERANGE with a finite result is an underflow (1e-310 is a subnormal, 1e-400 rounds to 0):
+  // a number all the same, unlike an overflow.
+  if (!decimal || end != begin + text.size() || !std::isfinite(v) || (errno == ERANGE && std::fabs(v) > 1.0))
     throw UsageError(what + ": '" + text + "' is not a finite number");
   return v;
 }

@@ -41,15 +41,23 @@ void print_help(std::ostream& out) {
 }
 
 int run(const std::vector<std::string>& argv, std::ostream& out) {
-  if (argv.empty() || argv[0] == "--help" || argv[0] == "-h") {
+  // No command is a usage error like any other: one line on stderr, nothing on stdout.
+  if (argv.empty()) throw UsageError("no command given (see cspacelab --help)");
+  const auto nothing_after = [&](std::size_t used) {
+    if (argv.size() > used) throw UsageError("unexpected argument '" + argv[used] + "'");
+  };
+  if (argv[0] == "--help" || argv[0] == "-h") {
+    nothing_after(1);
     print_help(out);
-    return argv.empty() ? 2 : 0;
+    return 0;
   }
   if (argv[0] == "--version") {
+    nothing_after(1);
     out << "{\"version\": \"" << kVersion << "\"}\n";
     return 0;
   }
   if (argv[0] == "help") {
+    nothing_after(2);
     if (argv.size() < 2) {
       print_help(out);
       return 0;

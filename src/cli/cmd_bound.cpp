@@ -1,4 +1,5 @@
 // cspacelab bound: the failure bounds of section 2.1 and P8.
+#include <cstdint>
 #include <stdexcept>
 
 #include "cli/commands.hpp"
@@ -6,6 +7,12 @@
 
 namespace csl::cli {
 namespace {
+
+// A count as an integer while a double holds it exactly (2^53), else as the double it is.
+nlohmann::json count_json(double m) {
+  if (m <= 9007199254740992.0) return static_cast<std::int64_t>(m);
+  return m;
+}
 
 int run_bound(Args& args, std::ostream& os) {
   const bool tiling = args.take_flag("tiling");
@@ -24,10 +31,10 @@ int run_bound(Args& args, std::ostream& os) {
     if (tiling) {
       if (length || volume) throw UsageError("--tiling is for F = [0,1]^d: no --length or --free-volume");
       const TilingBound t = whole_space_tiling_bound(r, d, n);
-      print_json(os, {{"balls", t.balls},
-                      {"balls_per_axis", t.per_axis},
-                      {"covering_balls", t.covering_balls},
-                      {"boundary_balls", t.boundary_balls},
+      print_json(os, {{"balls", count_json(t.balls)},
+                      {"balls_per_axis", count_json(t.per_axis)},
+                      {"covering_balls", count_json(t.covering_balls)},
+                      {"boundary_balls", count_json(t.boundary_balls)},
                       {"sigma", t.sigma},
                       {"interior_bound", t.interior_bound},
                       {"failure_bound", t.bound},
@@ -38,7 +45,7 @@ int run_bound(Args& args, std::ostream& os) {
     }
     const FailureBound b = path_tiling_bound(parse_number(need(length, "length"), "--length"), r, d,
                                              parse_number(need(volume, "free-volume"), "--free-volume"), n);
-    print_json(os, {{"balls", b.balls},
+    print_json(os, {{"balls", count_json(b.balls)},
                     {"sigma", b.sigma},
                     {"failure_bound", b.bound},
                     {"vacuous", b.vacuous},

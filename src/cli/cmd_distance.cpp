@@ -2,6 +2,9 @@
 #include "cli/commands.hpp"
 #include "core/angles.hpp"
 #include "core/geometry.hpp"
+#include "core/scene.hpp"
+
+#include <cmath>
 
 namespace csl::cli {
 namespace {
@@ -20,10 +23,12 @@ int run_distance(Args& args, std::ostream& os) {
     const double a = parse_number(args.take_positional("angle A"), "A");
     const double b = parse_number(args.take_positional("angle B"), "B");
     args.finish();
-    print_json(os, {{"distance", s1_distance(a, b)},
-                    {"modulus", s1_distance(a, b)},
+    // Each angle into the chart first: B - A of two huge angles can round by turns, or overflow.
+    const double wa = wrap_angle(a), wb = wrap_angle(b);
+    print_json(os, {{"distance", s1_distance(wa, wb)},
+                    {"modulus", s1_distance(wa, wb)},
                     {"rotation", s1_distance_rotation(a, b)},
-                    {"signed_turn", angle_difference(a, b)}});
+                    {"signed_turn", angle_difference(wa, wb)}});
     return 0;
   }
   args.finish();
@@ -31,12 +36,19 @@ int run_distance(Args& args, std::ostream& os) {
     if (!v) throw UsageError(std::string("missing --") + flag);
     return *v;
   };
+  // Scenes' limit on coordinates: beyond it the squared distances could overflow.
+  const auto parse_point = [](const std::string& text, const std::string& what) {
+    const Vec2 v = cli::parse_point(text, what);
+    if (!(std::fabs(v.x()) <= kMaxCoordinate && std::fabs(v.y()) <= kMaxCoordinate))
+      throw UsageError(what + ": coordinates must be within +-1e6, as in scenes");
+    return v;
+  };
   if (kind == "segment-disk") {
     if (q1 || q2) throw UsageError("segment-disk takes --p1 --p2 --center --radius");
     const Vec2 a = parse_point(need(p1, "p1"), "--p1"), b = parse_point(need(p2, "p2"), "--p2");
     const Vec2 c = parse_point(need(center, "center"), "--center");
     const double r = parse_number(need(radius, "radius"), "--radius");
-    if (r < 0.0) throw UsageError("--radius: must be >= 0");
+    if (r < 0.0 || r > kMaxCoordinate) throw UsageError("--radius: must be in [0, 1e6], as in scenes");
     print_json(os, {{"distance", segment_disk_distance(a, b, c, r)},
                     {"signed", segment_disk_signed_distance(a, b, c, r)},
                     {"closest_point", point_json(closest_point_on_segment(c, a, b))},
@@ -67,11 +79,12 @@ const Command kDistanceCommand{
     "  rounding, which grows with the angles: a double near 1e9 rad is itself only good to 1e-7\n"
     "  rad, and near 1e16 B - A rounds to a multiple of 2 rad, where neither result means much.\n"
     "  signed_turn is the shorter turn from A to B, in [-pi, pi).\n"
-    "segment-disk: the segment p1p2 and the closed disk of radius R >= 0 at center ->\n"
+    "segment-disk: the segment p1p2 and the closed disk of radius R >= 0 at center (coordinates\n"
+    "  and R within 1e6, as in scenes) ->\n"
     "  {\"distance\": d, \"signed\": s, \"closest_point\": [x, y], \"closest_parameter\": u}\n"
     "  d = max(0, s), s = |c - closest point| - R (negative: overlap), the closest point of the\n"
     "  segment to the centre is p1 + u (p2 - p1), u in [0, 1].\n"
-    "segment-segment: {\"distance\": d, \"intersect\": bool}\n"
+    "segment-segment: {\"distance\": d, \"intersect\": bool} (coordinates within 1e6)\n"
     "Negative angles are fine as positionals: cspacelab distance s1 -3 3\n",
     run_distance};
 

@@ -21,6 +21,11 @@ int run_visibility(Args& args, std::ostream& os) {
   Rng rng(static_cast<std::uint64_t>(parse_count(seed.value_or("1"), "--seed", 9007199254740991LL)));
   try {
     const double exact = visibility_probability(x1, y1, d);
+    if (t == 0) {  // the exact value alone: no estimate from no samples
+      print_json(os, {{"exact", exact}, {"monte_carlo", nullptr}, {"trials", 0}, {"ci_low", nullptr},
+                      {"ci_high", nullptr}, {"within_ci", nullptr}});
+      return 0;
+    }
     const Proportion mc = visibility_monte_carlo(x1, y1, d, t, rng);
     print_json(os, {{"exact", exact},
                     {"monte_carlo", mc.estimate},
@@ -43,7 +48,8 @@ const Command kVisibilityCommand{
     "y = 1/2. From (X, Y), X < 1/2, the whole left half is visible, and of the right half the\n"
     "part inside the cone through the opening (clipped to the square, whichever edges it meets).\n"
     "  -> {\"exact\": p, \"monte_carlo\": p^ from T uniform samples (default 100000, seed 1),\n"
-    "      \"trials\": T, \"ci_low\", \"ci_high\": its 95% Wilson interval, \"within_ci\": bool}\n",
+    "      \"trials\": T, \"ci_low\", \"ci_high\": its 95% Wilson interval, \"within_ci\": bool}\n"
+    "With --trials 0 the exact value alone: the Monte Carlo fields are null.\n",
     run_visibility};
 
 }  // namespace csl::cli

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <stdexcept>
 #include <ostream>
@@ -14,12 +15,19 @@
 namespace csl::cli {
 
 std::string read_file(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw UsageError(path + ": is a directory, not a scene file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw UsageError(path + ": cannot read file");
-  std::ostringstream s;
-  s << in.rdbuf();
+  // In pieces, stopping past the limit: a huge file is refused without being read into memory.
+  std::string text;
+  char piece[1 << 16];
+  while (in.read(piece, sizeof piece) || in.gcount() > 0) {
+    text.append(piece, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > kMaxSceneBytes) throw UsageError(path + ": larger than 32 MB, more than any scene within the limits");
+  }
   if (in.bad()) throw UsageError(path + ": read error");
-  return s.str();
+  return text;
 }
 
 Scene load_scene(const std::string& path) {

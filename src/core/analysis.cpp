@@ -19,6 +19,7 @@ double unit_ball_volume(int d) {
 }
 
 namespace {
+constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
 void require(bool ok, const char* what) {
   if (!ok) throw std::invalid_argument(what);
 }
@@ -32,14 +33,15 @@ FailureBound path_tiling_bound(double length, double clearance, int d, double fr
   require(std::isfinite(samples) && samples >= 0, "samples must be a finite number >= 0");
   FailureBound b;
   // Section 2.1: m = ceil(L / (r/2)) balls along the path, sigma = mu(B_1) / (2^d mu(F)).
-  // A quotient within 1e-12 of an integer is that integer: L and r are typed as decimals, and
+  // A quotient a few ulps above an integer is that integer: L and r are typed as decimals, and
   // 0.07 / 0.01 is 7.000000000000001 in binary, where a student counts 7 balls, not 8.
   const double quotient = length / (clearance / 2);
   require(std::isfinite(quotient), "more than 1e308 balls: take a shorter path or a larger clearance");
   b.balls = std::ceil(quotient);
-  if (b.balls > 1 && quotient - (b.balls - 1) <= 1e-12 * quotient) b.balls -= 1;
+  if (b.balls > 1 && b.balls != quotient && quotient - (b.balls - 1) <= 8 * kEpsilon * quotient) b.balls -= 1;
   b.sigma = unit_ball_volume(d) / (std::pow(2.0, d) * free_volume);
   b.rate = b.sigma * std::pow(clearance, d);
+  require(std::isfinite(b.rate), "clearance^d overflows a double: take a smaller clearance");
   b.exponent = b.rate * samples;
   b.bound = b.balls * std::exp(-b.exponent);
   b.vacuous = b.bound >= 1.0;
@@ -48,8 +50,8 @@ FailureBound path_tiling_bound(double length, double clearance, int d, double fr
 
 // P8, derived. Take F = [0,1]^d, so mu(F) = 1 and sigma = mu(B_1) / 2^d. The path argument
 // needs balls of radius r/2 whose neighbours' centres are at most r/2 apart, so that samples
-// in neighbouring balls are within r of each other (F is convex here, so any straight line in
-// it is free). Tiling the whole cube: a grid of N balls per axis, centred in the cells of
+// in neighbouring balls both lie in the ball of radius r around one centre, which is free (F
+// is convex here, so any straight line in it is free anyway). Tiling the whole cube: a grid of N balls per axis, centred in the cells of
 // width 1/N. Neighbours r/2 apart needs 1/N <= r/2; for the balls to cover every point the
 // cell's half-diagonal must be within a ball, sqrt(d) / (2N) <= r/2, i.e. 1/N <= r/sqrt(d)
 // (the stronger condition once d > 4). So
@@ -84,12 +86,18 @@ TilingBound whole_space_tiling_bound(double clearance, int d, double samples) {
   require(std::isfinite(t.balls), "more than 1e308 balls: take a larger clearance or a smaller dimension");
   t.sigma = unit_ball_volume(d) / std::pow(2.0, d);
   t.rate = t.sigma * std::pow(clearance, d);
+  require(std::isfinite(t.rate), "clearance^d overflows a double: take a smaller clearance");
   // Cells along an axis whose centre (i + 1/2) / N is within rho of face 0 (as many at face
   // 1); a hair more rather than less, so rounding can only count a ball as reaching out.
   const double rho = std::min(clearance, 1.0) / 2;
   const double near = std::ceil(rho * t.per_axis * (1.0 + 1e-12) - 0.5);
   t.edge_per_axis = std::min(t.per_axis, 2.0 * std::max(0.0, near));
-  t.boundary_balls = t.balls - std::pow(t.per_axis - t.edge_per_axis, d);
+  // The balls reaching out along at least one axis, summed by j (N^d - (N - E)^d cancels).
+  double choose = 1.0;
+  for (int j = 1; j <= d; ++j) {
+    choose = choose * (d - j + 1) / j;
+    t.boundary_balls += choose * std::pow(t.edge_per_axis, j) * std::pow(t.per_axis - t.edge_per_axis, d - j);
+  }
   t.hit_rate = t.sigma * std::pow(std::min(clearance, 1.0), d);
   t.interior_bound = t.balls * std::exp(-t.rate * samples);
   t.bound = t.bound_at(samples);

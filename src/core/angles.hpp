@@ -21,6 +21,13 @@ inline double wrap_angle(double a) {
   double r = (a - k * kTwoPiHi) - k * kTwoPiLo;
   if (r < -kPi) r += kTwoPi;
   if (r >= kPi) r -= kTwoPi;
+  if (r >= -kPi && r < kPi) return r;
+  // |a| beyond about 1e17: k * kTwoPiHi is no longer near a, and r is far outside the chart.
+  // fmod is exact (the remainder by the double kTwoPiHi, whose own error times k is then more
+  // than a turn: such an angle says nothing about a direction), but it lands in the chart.
+  r = std::fmod(a, kTwoPiHi);
+  if (r < -kPi) r += kTwoPiHi;
+  if (r >= kPi) r -= kTwoPiHi;
   return r;
 }
 

@@ -147,7 +147,8 @@ struct EdgeCheckResult {
 EdgeCheckResult check_edge(const CollisionWorld& world, const EdgeCheckerSpec& spec, const Config& p,
                            const Config& q, bool want_trace = false);
 
-/// The smallest N in [2, max_n] for which the grid checker finds a collision on p -> q, if any.
+/// The smallest N in [2, max_n] for which the grid checker finds a collision on p -> q, if any
+/// (none, at once, when the exact bisection check proves the edge free).
 std::optional<int> min_grid_resolution(const CollisionWorld& world, const Config& p, const Config& q, int max_n);
 
 }  // namespace csl

@@ -35,6 +35,9 @@ inline constexpr std::size_t kMaxPolygonVertices = 256;
 inline constexpr std::size_t kMaxRobotVertices = 32;
 inline constexpr double kMaxCoordinate = 1e6;  ///< |any coordinate or length| in a scene
 inline constexpr std::size_t kMaxNameLength = 200;
+/// Bytes of scene JSON: the largest scene the other limits allow (1000 polygons of 256
+/// vertices at full precision) is about 12 MB, indented perhaps 16.
+inline constexpr std::size_t kMaxSceneBytes = std::size_t{32} << 20;
 
 struct Scene {
   std::string name;

@@ -53,6 +53,19 @@ test('distance s1 and segment-disk (P10, P11)', () => {
   const s1 = json('distance', 's1', '-3', '3');
   assert.ok(Math.abs(s1.distance - (2 * Math.PI - 6)) < 1e-15);
   assert.ok(Math.abs(s1.rotation - s1.modulus) < 1e-14);
+  // Huge angles mean little, but the answer stays a distance on S^1, in [0, pi].
+  for (const [a, b] of [['1e18', '0'], ['1e308', '-1e308'], ['-1e300', '3']]) {
+    const h = json('distance', 's1', a, b);
+    for (const v of [h.distance, h.modulus, h.rotation]) assert.ok(v >= 0 && v <= Math.PI, `${a} ${b}: ${v}`);
+    assert.ok(h.signed_turn >= -Math.PI && h.signed_turn < Math.PI);
+  }
+  fails(/--p2: coordinates must be within \+-1e6/, 'distance', 'segment-disk', '--p1', '0,0', '--p2', '1e308,0', '--center', '0,1', '--radius', '1');
+  fails(/--radius: must be in \[0, 1e6\]/, 'distance', 'segment-disk', '--p1', '0,0', '--p2', '1,0', '--center', '0,1', '--radius', '1e7');
+  // Numbers are plain decimals; one too small for a normal double is still a number.
+  fails(/--p1: '0x1p-2' is not a finite number/, 'distance', 'segment-disk', '--p1', '0x1p-2,0', '--p2', '1,0', '--center', '0,1', '--radius', '1');
+  fails(/--p1: ' 0' is not a finite number/, 'distance', 'segment-disk', '--p1', ' 0,0', '--p2', '1,0', '--center', '0,1', '--radius', '1');
+  fails(/--radius: '1e999' is not a finite number/, 'distance', 'segment-disk', '--p1', '0,0', '--p2', '1,0', '--center', '0,1', '--radius', '1e999');
+  assert.equal(json('distance', 'segment-disk', '--p1', '0,0', '--p2', '1,0', '--center', '0,1', '--radius', '1e-310').distance, 1 - 1e-310);
   const sd = json('distance', 'segment-disk', '--p1', '0,0', '--p2', '1,0', '--center', '0.2,0.05', '--radius', '0.1');
   assert.equal(sd.distance, 0);
   assert.ok(Math.abs(sd.signed + 0.05) < 1e-15);
@@ -75,7 +88,7 @@ test('bad input: one line naming the problem, exit status 2', () => {
   fails(/--checker: unknown checker 'exact'/, 'check', P12, '--checker', 'exact');
   fails(/--checker: .*N must be an integer/, 'check', P12, '--checker', 'grid:1');
   fails(/unknown option --frobnicate/, 'check', P12, '--frobnicate');
-  fails(/--radius: must be >= 0/, 'distance', 'segment-disk', '--p1', '0,0', '--p2', '1,0', '--center', '0,0', '--radius', '-1');
+  fails(/--radius: must be in \[0, 1e6\]/, 'distance', 'segment-disk', '--p1', '0,0', '--p2', '1,0', '--center', '0,0', '--radius', '-1');
   fails(/unknown distance kind 'l2'/, 'distance', 'l2');
   fails(/missing --center/, 'distance', 'segment-disk', '--p1', '0,0', '--p2', '1,0', '--radius', '1');
 });

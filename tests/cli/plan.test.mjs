@@ -85,6 +85,9 @@ test('visibility: exact and Monte Carlo agree', () => {
   assert.ok(Math.abs(v.exact - v.monte_carlo) < 0.006);
   assert.equal(v.trials, 200000);
   assert.equal(json('visibility', '--x', '0.1', '--y', '0.5', '--gap', '0').exact, 0.5);
+  // No samples, no estimate: the exact value alone.
+  const none = json('visibility', '--x', '0.25', '--y', '0.5', '--gap', '0.2', '--trials', '0');
+  assert.deepEqual([none.exact, none.trials, none.monte_carlo, none.ci_low, none.ci_high, none.within_ci], [0.7, 0, null, null, null, null]);
 });
 
 test('experiment: rows with failure rates, intervals and the bound', () => {
@@ -109,6 +112,8 @@ test('bad input for plan, bound, visibility, experiment', () => {
   fails(/--radius: the radius must be > 0/, 'plan', GAP, '--radius', '-1');
   fails(/clearance must be a finite number > 0/, 'bound', '--length', '1', '--clearance', '0', '--dim', '2', '--free-volume', '1', '--samples', '10');
   fails(/more than 1e308 balls: take a shorter path or a larger clearance/, 'bound', '--length', '1e308', '--clearance', '1e-300', '--dim', '1', '--free-volume', '1', '--samples', '1e303');
+  fails(/clearance\^d overflows a double/, 'bound', '--length', '1', '--clearance', '1e300', '--dim', '2', '--free-volume', '1', '--samples', '0');
+  fails(/clearance\^d overflows a double/, 'bound', '--tiling', '--clearance', '1e300', '--dim', '2', '--samples', '0');
   fails(/more than 1e308 balls/, 'bound', '--tiling', '--clearance', '1e-10', '--dim', '64', '--samples', '10');
   fails(/missing --free-volume/, 'bound', '--length', '1', '--clearance', '0.1', '--dim', '2', '--samples', '10');
   fails(/x1 must be in \[0, 1\/2\)/, 'visibility', '--x', '0.7', '--y', '0.5', '--gap', '0.1');

@@ -23,7 +23,8 @@ test('--version prints JSON', () => {
 });
 
 test('unknown commands and options are one-line errors with exit status 2', () => {
-  for (const args of [['frobnicate'], ['validate'], ['validate', 'x.json', '--bogus']]) {
+  for (const args of [[], ['frobnicate'], ['validate'], ['validate', 'x.json', '--bogus'], ['--version', 'x'],
+                      ['help', 'plan', 'x'], ['--help', 'x']]) {
     const r = run(...args);
     assert.equal(r.status, 2, args.join(' '));
     assert.equal(r.stdout, '');
@@ -48,6 +49,19 @@ test('validate names the offending field of a bad scene', () => {
   r = run('validate', path.join(dir, 'missing.json'));
   assert.equal(r.status, 2);
   assert.match(r.stderr, /cannot read file/);
+
+  r = run('validate', dir);
+  assert.equal(r.status, 2);
+  assert.match(r.stderr, /is a directory, not a scene file/);
+
+  // Past 32 MB no scene is within the limits: refused without reading it all (its valid JSON
+  // would otherwise parse).
+  const huge = path.join(dir, 'huge.json');
+  fs.writeFileSync(huge, ' '.repeat(33 << 20) + '{"version": 1}');
+  r = run('validate', huge);
+  assert.equal(r.status, 2);
+  assert.match(r.stderr, /larger than 32 MB/);
+  fs.rmSync(huge);
 
   const good = path.join(dir, 'good.json');
   fs.writeFileSync(good, JSON.stringify({ version: 1, obstacles: [{ type: 'disk', center: [0.2, 0.05], radius: 0.1 }] }));

@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <optional>
 
 #include "core/edge_check.hpp"
 #include "core/scene.hpp"
@@ -186,6 +187,30 @@ TEST_CASE("point robot, random disk worlds: bisection agrees with the analytic a
   // The fixed-resolution check is only approximate: it misses some of those collisions.
   CHECK(grid_misses > 50);
   MESSAGE("grid:10 missed " << grid_misses << " of " << collisions << " colliding edges");
+}
+
+TEST_CASE("min_grid_resolution: the first N at which the grid sees a collision, as N by N finds it") {
+  // Its shortcut (an edge bisection proves free: none) must not change an answer.
+  csl::Rng rng(77);
+  int found = 0, none = 0;
+  for (int world_i = 0; world_i < 40; ++world_i) {
+    std::vector<csl::Obstacle> obstacles;
+    for (int k = 0; k < 5; ++k)
+      obstacles.push_back(csl::Disk{{rng.uniform01(), rng.uniform01()}, rng.uniform(0.005, 0.06)});
+    obstacles.push_back(csl::Wall{{rng.uniform01(), rng.uniform01()}, {rng.uniform01(), rng.uniform01()}});
+    const csl::CollisionWorld world(csl::PointRobot{}, obstacles, {0, 0}, {1, 1});
+    for (int edge_i = 0; edge_i < 8; ++edge_i) {
+      const auto p = world.space().sample(rng), q = world.space().sample(rng);
+      if (!world.is_free(p) || !world.is_free(q)) continue;
+      std::optional<int> brute;
+      for (int n = 2; n <= 120 && !brute; ++n)
+        if (csl::check_edge(world, EdgeCheckerSpec::parse("grid:" + std::to_string(n)), p, q).collision) brute = n;
+      REQUIRE(csl::min_grid_resolution(world, p, q, 120) == brute);
+      (brute ? found : none) += 1;
+    }
+  }
+  CHECK(found > 30);
+  CHECK(none > 30);
 }
 
 // check_known_free is what a roadmap uses: against the stepped check of the same edge, the same
