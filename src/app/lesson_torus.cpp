@@ -430,16 +430,25 @@ class TorusLesson : public Lesson {
       else if (length(Vec2(scene_.start[0], scene_.start[1]) - m) <= grab) drag_marker_ = 1;
       else posing_ = true;
       marker_before_ = scene_;
+      marker_grab_ = m;
     }
     if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
-      if (drag_marker_ != 0) editor_.record(marker_before_);
+      if (drag_marker_ != 0 && scene_to_json(marker_before_) != scene_to_json(scene_)) editor_.record(marker_before_);
       drag_marker_ = 0;
       posing_ = false;
       return;
     }
     if (drag_marker_ != 0) {
-      (drag_marker_ == 1 ? scene_.start : scene_.goal) = at_mouse;
-      rebuild(0);
+      // By the mouse's offset from the press, as the workspace editor moves things: a press a
+      // few pixels off the marker does not make it jump (and restart the run).
+      const Config& was = drag_marker_ == 1 ? marker_before_.start : marker_before_.goal;
+      const Vec2 offset = m - marker_grab_;
+      const Config moved = offset == Vec2::Zero() ? was : space.wrap(config({was[0] + offset.x(), was[1] + offset.y()}));
+      Config& marker = drag_marker_ == 1 ? scene_.start : scene_.goal;
+      if (moved != marker) {
+        marker = moved;
+        rebuild(0);
+      }
     } else if (posing_) {
       q_ = at_mouse;
       exercise_ = Exercise::None;
@@ -523,6 +532,7 @@ class TorusLesson : public Lesson {
   int drag_marker_ = 0;
   bool posing_ = false;
   Scene marker_before_;
+  Vec2 marker_grab_{0, 0};  // where a marker drag was pressed (C-space)
   bool animate_ = false;
   double phase_ = 0.0;
   Exercise exercise_ = Exercise::None;

@@ -159,3 +159,38 @@ test('a press without a move, or a drag back to where it was pressed, replays no
   await waitFrames(page, 2);
   assert.equal((await api(page, 'state')).planner_builds, small.planner_builds);
 }));
+
+test('the torus lesson: a drag out and back keeps the planner; a press beside a C-space marker moves nothing',
+  () => withPage({ viewport: { width: 1280, height: 800 } }, async ({ page }) => {
+  await api(page, 'select_lesson', { id: 'torus' });
+  await api(page, 'set_params', { params: { samples: 5000, neighbors: 'k:10', seed: 2 } });
+  await api(page, 'run');
+  await keys(page, 'v');
+  await waitFrames(page, 2);
+  const scene = await api(page, 'get_scene');
+  const before = await api(page, 'state');
+  const disk = scene.obstacles[0];
+  const [from, to] = await worldToPage(page, [disk.center, [disk.center[0] - 0.12, disk.center[1] + 0.1]], 'workspace');
+  await hold(page, from, to, { steps: 3, frames: 2 });
+  assert.equal((await api(page, 'state')).prm.replay_pending, true);
+  await page.mouse.move(from.x, from.y, { steps: 3 });
+  await waitFrames(page, 2);
+  await page.mouse.up();
+  await waitFrames(page, 2);
+  let s = await api(page, 'state');
+  assert.equal(s.prm.replay_pending, false);
+  assert.equal(s.prm.planner_builds, before.prm.planner_builds, 'no planner built: the scene is the one it ran in');
+  assert.equal(s.prm.roadmap_hash, before.prm.roadmap_hash);
+  assert.equal(s.free_fraction, before.free_fraction, 'the C-obstacle map of that scene again');
+  assert.deepEqual(await api(page, 'get_scene'), scene);
+
+  // A press 5 pixels beside the start marker in the C-space square, without moving.
+  const [start] = await worldToPage(page, [scene.start], 'cspace');
+  await hold(page, { x: start.x + 5, y: start.y }, { x: start.x + 5, y: start.y }, { steps: 1, frames: 3 });
+  await page.mouse.up();
+  await waitFrames(page, 2);
+  s = await api(page, 'state');
+  assert.deepEqual((await api(page, 'get_scene')).start, scene.start, 'the marker did not jump to the cursor');
+  assert.equal(s.prm.planner_builds, before.prm.planner_builds, 'and the run was not restarted');
+  assert.equal(s.prm.steps, before.prm.steps);
+}));
