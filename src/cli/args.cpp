@@ -33,6 +33,7 @@ bool Args::take_flag(const std::string& name) {
   bool seen = false;
   for (std::size_t i = 0; i < args_.size();) {
     if (args_[i] == flag) {
+      if (seen) throw UsageError(flag + " given twice");  // as for options with values
       seen = true;
       args_.erase(args_.begin() + static_cast<long>(i));
     } else if (args_[i].rfind(flag + "=", 0) == 0) {

@@ -24,7 +24,7 @@ test('--version prints JSON', () => {
 
 test('unknown commands and options are one-line errors with exit status 2', () => {
   for (const args of [[], ['frobnicate'], ['validate'], ['validate', 'x.json', '--bogus'], ['--version', 'x'],
-                      ['help', 'plan', 'x'], ['--help', 'x']]) {
+                      ['help', 'plan', 'x'], ['--help', 'x'], ['visibility', '--x', '0.1', '--y', '0.5', '--gap', '0.1', '--help', '--help']]) {
     const r = run(...args);
     assert.equal(r.status, 2, args.join(' '));
     assert.equal(r.stdout, '');

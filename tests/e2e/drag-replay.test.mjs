@@ -28,6 +28,16 @@ async function startRun(page, params) {
   return api(page, 'state');
 }
 
+// The torus lesson after 5000 samples (over the live-replay budget), the select tool on.
+async function startTorusRun(page) {
+  await api(page, 'select_lesson', { id: 'torus' });
+  await api(page, 'set_params', { params: { samples: 5000, neighbors: 'k:10', seed: 2 } });
+  await api(page, 'run');
+  await keys(page, 'v');
+  await waitFrames(page, 2);
+  return { scene: await api(page, 'get_scene'), before: await api(page, 'state') };
+}
+
 test('after a large run, a drag keeps the old roadmap until the release, then replays once',
   () => withPage({ viewport: { width: 1100, height: 720 } }, async ({ page }) => {
   const before = await startRun(page, { samples: 6000, neighbors: 'k:10', seed: 3 });
@@ -92,13 +102,7 @@ test('after a small run, the roadmap follows the drag live',
 
 test('the torus lesson: the C-obstacles follow the drag, the replay waits for the release',
   () => withPage({ viewport: { width: 1280, height: 800 } }, async ({ page }) => {
-  await api(page, 'select_lesson', { id: 'torus' });
-  await api(page, 'set_params', { params: { samples: 5000, neighbors: 'k:10', seed: 2 } });
-  await api(page, 'run');
-  await keys(page, 'v');
-  await waitFrames(page, 2);
-  const scene = await api(page, 'get_scene');
-  const before = await api(page, 'state');
+  const { scene, before } = await startTorusRun(page);
   assert.equal(before.prm.replay_pending, false);
   const disk = scene.obstacles[0];
   const [from, to] = await worldToPage(page, [disk.center, [disk.center[0] - 0.12, disk.center[1] + 0.1]], 'workspace');
@@ -162,13 +166,7 @@ test('a press without a move, or a drag back to where it was pressed, replays no
 
 test('the torus lesson: a drag out and back keeps the planner; a press beside a C-space marker moves nothing',
   () => withPage({ viewport: { width: 1280, height: 800 } }, async ({ page }) => {
-  await api(page, 'select_lesson', { id: 'torus' });
-  await api(page, 'set_params', { params: { samples: 5000, neighbors: 'k:10', seed: 2 } });
-  await api(page, 'run');
-  await keys(page, 'v');
-  await waitFrames(page, 2);
-  const scene = await api(page, 'get_scene');
-  const before = await api(page, 'state');
+  const { scene, before } = await startTorusRun(page);
   const disk = scene.obstacles[0];
   const [from, to] = await worldToPage(page, [disk.center, [disk.center[0] - 0.12, disk.center[1] + 0.1]], 'workspace');
   await hold(page, from, to, { steps: 3, frames: 2 });
