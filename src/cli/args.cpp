@@ -76,13 +76,15 @@ double parse_number(const std::string& text, const std::string& what) {
   return v;
 }
 
-long long parse_count(const std::string& text, const std::string& what, long long max) {
+long long parse_count(const std::string& text, const std::string& what, long long max, long long min) {
   const char* begin = text.c_str();
   char* end = nullptr;
   errno = 0;
   long long v = std::strtoll(begin, &end, 10);
-  if (text.empty() || end != begin + text.size() || errno == ERANGE || v < 0 || v > max)
-    throw UsageError(what + ": '" + text + "' is not an integer in [0, " + std::to_string(max) + "]");
+  const bool spaced = text.find_first_of(" \t\n\v\f\r") != std::string::npos;  // strtoll skips leading ones
+  if (text.empty() || spaced || end != begin + text.size() || errno == ERANGE || v < min || v > max)
+    throw UsageError(what + ": '" + text + "' is not an integer in [" + std::to_string(min) + ", " +
+                     std::to_string(max) + "]");
   return v;
 }
 

@@ -33,8 +33,8 @@ class Args {
 
 /// A finite number, or UsageError naming `what`.
 double parse_number(const std::string& text, const std::string& what);
-/// A non-negative integer no larger than `max`, or UsageError naming `what`.
-long long parse_count(const std::string& text, const std::string& what, long long max);
+/// An integer in [min, max], or UsageError naming `what` and that range.
+long long parse_count(const std::string& text, const std::string& what, long long max, long long min = 0);
 /// Comma-separated finite numbers ("0.5,-1,2"), or UsageError naming `what`.
 std::vector<double> parse_numbers(const std::string& text, const std::string& what);
 

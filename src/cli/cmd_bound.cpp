@@ -24,7 +24,7 @@ int run_bound(Args& args, std::ostream& os) {
     return *v;
   };
   const double r = parse_number(need(clearance, "clearance"), "--clearance");
-  const int d = static_cast<int>(parse_count(need(dim, "dim"), "--dim", 64));
+  const int d = static_cast<int>(parse_count(need(dim, "dim"), "--dim", 64, 1));
   const double n = parse_number(need(samples, "samples"), "--samples");
   const double goal = target ? parse_number(*target, "--target") : 0.01;
   try {

@@ -27,8 +27,7 @@ int run_check(Args& args, std::ostream& os) {
 
   if (min_grid) {
     if (checker_text || trace) throw UsageError("--min-grid takes neither --checker nor --trace");
-    const int max_n = static_cast<int>(parse_count(max_text.value_or("1000"), "--max", 100000));
-    if (max_n < 2) throw UsageError("--max: must be at least 2");
+    const int max_n = static_cast<int>(parse_count(max_text.value_or("1000"), "--max", 100000, 2));
     const auto n = min_grid_resolution(world, p, q, max_n);
     print_json(os, {{"min_grid", n ? json(*n) : json(nullptr)}, {"max", max_n}});
     return 0;

@@ -18,14 +18,7 @@ int run_cspace(Args& args, std::ostream& os) {
   args.finish();
   if (!out) throw UsageError("missing --out FILE.pgm");
   const std::string text = resolution_text.value_or("512");
-  long long r = 0;
-  try {
-    r = parse_count(text, "--resolution", 8192);
-  } catch (const UsageError&) {
-    r = 0;  // one message for every bad R, below
-  }
-  if (r < 1) throw UsageError("--resolution: '" + text + "' is not an integer in [1, 8192]");
-  const int resolution = static_cast<int>(r);
+  const int resolution = static_cast<int>(parse_count(text, "--resolution", 8192, 1));
 
   const Scene scene = load_scene(path);
   const auto* arm = std::get_if<ArmRobot>(&scene.robot);

@@ -21,14 +21,12 @@ int run_descend(Args& args, std::ostream& os) {
   d.walk_step = take_number(args, "walk-step", d.walk_step, true);
   if (const auto v = args.take("max-steps")) d.max_steps = static_cast<int>(parse_count(*v, "--max-steps", kMaxDescentSteps));
   if (const auto v = args.take("escapes")) d.escapes = static_cast<int>(parse_count(*v, "--escapes", 10000));
-  if (const auto v = args.take("walk-steps")) d.walk_steps = static_cast<int>(parse_count(*v, "--walk-steps", 10000));
-  if (const auto v = args.take("window")) d.window = static_cast<int>(parse_count(*v, "--window", 10000));
+  if (const auto v = args.take("walk-steps")) d.walk_steps = static_cast<int>(parse_count(*v, "--walk-steps", 10000, 1));
+  if (const auto v = args.take("window")) d.window = static_cast<int>(parse_count(*v, "--window", 10000, 1));
   if (const auto v = args.take("seed")) d.seed = static_cast<std::uint64_t>(parse_count(*v, "--seed", 9007199254740991LL));
   const bool events = args.take_flag("events");
   const std::string path = args.take_positional("SCENE.json");
   args.finish();
-  if (d.walk_steps < 1) throw UsageError("--walk-steps: must be at least 1");
-  if (d.window < 1) throw UsageError("--window: must be at least 1");
 
   const Scene scene = load_scene(path);
   const Config start = from ? parse_config(*from, scene, "--from") : scene.start;

@@ -68,8 +68,7 @@ int run_experiment(Args& args, std::ostream& os) {
       throw UsageError("--samples-list: sample counts are integers in [0, 1000000]");
     params.sample_counts.push_back(static_cast<int>(n));
   }
-  params.trials = static_cast<int>(parse_count(trials.value_or("20"), "--trials", 100000));
-  if (params.trials < 1) throw UsageError("--trials: at least 1");
+  params.trials = static_cast<int>(parse_count(trials.value_or("20"), "--trials", 100000, 1));
   if (reference) params.reference_samples = static_cast<int>(parse_count(*reference, "--reference-samples", kMaxPrmSamples));
   params.seed = options.seed;
   params.neighbors = options.neighbors;

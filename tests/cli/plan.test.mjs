@@ -119,7 +119,9 @@ test('bad input for plan, bound, visibility, experiment', () => {
   fails(/x1 must be in \[0, 1\/2\)/, 'visibility', '--x', '0.7', '--y', '0.5', '--gap', '0.1');
   fails(/--gap: 'nan' is not a finite number/, 'visibility', '--x', '0.2', '--y', '0.5', '--gap', 'nan');
   fails(/missing --samples-list/, 'experiment', GAP);
-  fails(/--trials: at least 1/, 'experiment', GAP, '--samples-list', '10', '--trials', '0');
+  fails(/--trials: '0' is not an integer in \[1, 100000\]/, 'experiment', GAP, '--samples-list', '10', '--trials', '0');
+  fails(/--trials: '-1' is not an integer in \[1, 100000\]/, 'experiment', GAP, '--samples-list', '10', '--trials', '-1');
+  fails(/--samples: ' 5' is not an integer/, 'plan', GAP, '--samples', ' 5');
 });
 
 // A radius makes the candidate pairs grow with n^2: a run expected to check more than

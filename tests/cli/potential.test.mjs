@@ -169,7 +169,7 @@ test('bad input: one line naming the problem, exit status 2', () => {
   fails(/the goal is in collision with obstacles\[0\]/, 'descend', CUP, '--to', '0.5,0.65');
   fails(/--step: must be > 0, got -0.1/, 'descend', CUP, '--step', '-0.1');
   fails(/--max-steps: '1000000' is not an integer in \[0, 100000\]/, 'descend', CUP, '--max-steps', '1000000');
-  fails(/--walk-steps: must be at least 1/, 'descend', CUP, '--walk-steps', '0');
+  fails(/--walk-steps: '0' is not an integer in \[1, 10000\]/, 'descend', CUP, '--walk-steps', '0');
   fails(/--escapes: 'two' is not an integer/, 'descend', CUP, '--escapes', 'two');
   fails(/--tolerance: must be >= 0/, 'descend', CUP, '--tolerance', '-1');
   fails(/unexpected argument 'extra'/, 'descend', CUP, 'extra');
