@@ -3,13 +3,17 @@
 // n on a log scale, with P8's whole-space tiling bound beside it and measured failure rates
 // from repeated runs (in the background of the frame loop, with progress and cancel); and
 // P9's visibility probability for the wall-with-a-gap square, exact and by Monte Carlo.
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <limits>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <utility>
 #include <memory>
 #include <sstream>
+#include <string>
 
 #include "app/bundled_scenes.hpp"
 #include "app/draw.hpp"
@@ -27,6 +31,13 @@ namespace {
 using json = nlohmann::json;
 
 constexpr double kFrameBudgetMs = 8.0;  // experiment work per frame: the UI stays responsive
+
+// A count in full (wrapped text may break after the point of "1.689e+05"), up to 1e15.
+std::string count_text(double m) {
+  char text[40];
+  std::snprintf(text, sizeof text, m < 1e15 ? "%.0f" : "%.3g", m);
+  return text;
+}
 
 class AnalysisLesson : public Lesson {
  public:
@@ -130,7 +141,8 @@ class AnalysisLesson : public Lesson {
               {"monte_carlo", mc_.estimate},
               {"trials", mc_.trials},
               {"ci_low", mc_.low},
-              {"ci_high", mc_.high}}}};
+              {"ci_high", mc_.high},
+              {"mc_seed", p9_seed_}}}};
   }
 
   void set_params(const json& j) override {
@@ -141,6 +153,7 @@ class AnalysisLesson : public Lesson {
     int trials = trials_, tab = tab_;
     double x = p9_x_, y = p9_y_, gap = p9_gap_;
     long long mc = mc_trials_;
+    std::uint64_t mc_seed = p9_seed_;
     bool run = false, cancel = false;
     const auto positive = [](const json& v, const char* what) {
       if (!v.is_number() || !(v.get<double>() > 0) || !std::isfinite(v.get<double>()))
@@ -174,6 +187,9 @@ class AnalysisLesson : public Lesson {
       } else if (k == "gap") {
         if (!v.is_number()) throw ApiError("gap: a number in [0, 1]");
         gap = v.get<double>();
+      } else if (k == "mc_seed") {
+        if (!v.is_number_unsigned() || v.get<std::uint64_t>() > 9007199254740991ull) throw ApiError("mc_seed: 0..2^53-1");
+        mc_seed = v.get<std::uint64_t>();
       } else if (k == "mc_trials") {
         if (!v.is_number_integer() || v.get<long long>() < 1 || v.get<long long>() > 1000000)
           throw ApiError("mc_trials: 1..1000000");
@@ -193,11 +209,12 @@ class AnalysisLesson : public Lesson {
     std::snprintf(counts_text_, sizeof counts_text_, "%s", text.c_str());
     trials_ = trials;
     tab_ = tab;
-    const bool p9_changed = x != p9_x_ || y != p9_y_ || gap != p9_gap_ || mc != mc_trials_;
+    const bool p9_changed = x != p9_x_ || y != p9_y_ || gap != p9_gap_ || mc != mc_trials_ || mc_seed != p9_seed_;
     p9_x_ = x;
     p9_y_ = y;
     p9_gap_ = gap;
     mc_trials_ = mc;
+    p9_seed_ = mc_seed;
     if (p9_changed) sample_p9();
     if (cancel) experiment_.reset();
     if (run) start_experiment();
@@ -205,7 +222,7 @@ class AnalysisLesson : public Lesson {
 
   json params() const override {
     return {{"sample_counts", sample_counts_}, {"trials", trials_}, {"tab", tab_ == 0 ? "bound" : "visibility"},
-            {"point", {p9_x_, p9_y_}}, {"gap", p9_gap_}, {"mc_trials", mc_trials_}};
+            {"point", {p9_x_, p9_y_}}, {"gap", p9_gap_}, {"mc_trials", mc_trials_}, {"mc_seed", p9_seed_}};
   }
 
   /// "run" from the API: finish the experiment now (starting one if none).
@@ -246,15 +263,7 @@ class AnalysisLesson : public Lesson {
     length_ = measured_length_;
     clearance_ = measured_clearance_;
     free_volume_ = measured_volume_;
-    if (path_exists_) {
-      // The same reference planner, for drawing its path.
-      PrmParams pp;
-      pp.samples = p.reference_samples;
-      pp.seed = p.seed ^ 0x5eed5eed5eed5eedull;
-      Prm prm(*world_, scene_.start, scene_.goal, pp);
-      prm.run();
-      for (int v : prm.path()) reference_path_.push_back(prm.roadmap().vertices[static_cast<std::size_t>(v)]);
-    }
+    reference_path_ = ref.path;
   }
 
   void start_experiment() {
@@ -287,17 +296,20 @@ class AnalysisLesson : public Lesson {
       clearance_ = measured_clearance_;
       free_volume_ = measured_volume_;
     }
-    if (bound(0).rate > 0) ImGui::Text("the bound reaches 1%% at n = %.0f", bound(0).samples_for(0.01));
+    if (bound(0).rate > 0)
+      ImGui::Text("the bound reaches 1%% at n = %s", count_text(std::ceil(bound(0).samples_for(0.01))).c_str());
     if (clearance_ > 0) {
       // P8 beside it (the orange curve): the same r, all of F = [0,1]^d tiled.
       const TilingBound t = whole_space_tiling_bound(clearance_, dim_, 0);
-      ImGui::TextWrapped("P8, the whole cube [0,1]^%d tiled instead: m = %.4g balls, %.4g of them reaching out of "
-                         "the cube (hit less often); 1%% at n = %.4g",
-                         dim_, t.balls, t.boundary_balls, t.samples_for(0.01));
+      ImGui::TextWrapped("P8, the whole cube [0,1]^%d tiled instead: m = %s balls, %s of them at its faces (partly "
+                         "outside the cube, so samples hit them less often); its bound reaches 1%% at n = %s",
+                         dim_, count_text(t.balls).c_str(), count_text(t.boundary_balls).c_str(),
+                         count_text(std::ceil(t.samples_for(0.01))).c_str());
     }
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    ImGui::TextWrapped("measured: L and the path's clearance from a reference run with 3000 samples "
-                       "(r = that clearance / the robot's K), mu(F) by Monte Carlo");
+    ImGui::TextWrapped("measured: L and r on the widest path (the largest clearance) of a reference roadmap of "
+                       "3000 samples, r = its least clearance in the workspace / the robot's Lipschitz constant; "
+                       "mu(F) by Monte Carlo");
     ImGui::PopStyleColor();
 
     ui::section("Experiment: run PRM many times");
@@ -419,11 +431,29 @@ class AnalysisLesson : public Lesson {
     ImGui::Text("(x1, y1) = (%.3f, %.3f)", p9_x_, p9_y_);
     ImGui::TextColored(ImVec4(0.0f, 0.3f, 0.55f, 1.0f), "exact:        p = %.5f", visibility_probability(p9_x_, p9_y_, p9_gap_));
     ImGui::Text("Monte Carlo: p = %.5f  [%.5f, %.5f]", mc_.estimate, mc_.low, mc_.high);
-    ImGui::TextDisabled("from %lld samples, 95%% Wilson interval", mc_.trials);
+    const double exact = visibility_probability(p9_x_, p9_y_, p9_gap_);
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("from %lld samples, 95%% Wilson interval: it %s", mc_.trials,
+                       exact >= mc_.low && exact <= mc_.high ? "holds the exact value"
+                                                             : "misses the exact value (1 sample set in 20 does)");
+    ImGui::PopStyleColor();
+    if (ImGui::SmallButton("new samples")) {
+      ++p9_seed_;
+      sample_p9();
+    }
   }
 
+  // A sample set of its own for every point, gap and count (a function of them and the seed,
+  // so the same view shows the same dots): one set reused everywhere would carry its one
+  // chance excess, say 50.8% of its points on the left, to every point a student tries.
   void sample_p9() {
-    Rng rng(p9_seed_);
+    std::uint64_t seed = p9_seed_;
+    for (double v : {p9_x_, p9_y_, p9_gap_, static_cast<double>(mc_trials_)}) {
+      std::uint64_t bits = 0;
+      std::memcpy(&bits, &v, sizeof bits);
+      seed = Rng(seed ^ bits).next_u64();
+    }
+    Rng rng(seed);
     long long seen = 0;
     mc_points_.clear();
     for (long long i = 0; i < mc_trials_; ++i) {
@@ -443,18 +473,28 @@ class AnalysisLesson : public Lesson {
     const double lo = 0.5 - 0.5 * p9_gap_, hi = 0.5 + 0.5 * p9_gap_, run = 0.5 - p9_x_;
     const ImU32 shade = theme::with_alpha(theme::kSkyBlue, 70);
     dl->AddRectFilled(v.to_screen(Vec2(0, 1)), v.to_screen(Vec2(0.5, 0)), shade);
-    std::vector<ImVec2> cone;
-    const int kSteps = 64;
-    for (int i = 0; i <= kSteps; ++i) {
-      const double x = 0.5 + 0.5 * i / kSteps;
-      cone.push_back(v.to_screen(Vec2(x, std::clamp(lo + (lo - p9_y_) / run * (x - 0.5), 0.0, 1.0))));
+    // The cone clipped to the square lies between two rays clamped to [0, 1]: not convex when
+    // both rays leave through the same edge (the clamped upper ray then bends the other way),
+    // but x-monotone. So, strips between the x where either ray meets y = 0 or y = 1, each a
+    // trapezoid, exactly; without anti-aliasing, which would draw the seams between strips.
+    const double slope_lo = (lo - p9_y_) / run, slope_hi = (hi - p9_y_) / run;
+    std::vector<double> xs = {0.5, 1.0};
+    for (const auto& [y0, slope] : {std::pair{lo, slope_lo}, std::pair{hi, slope_hi}})
+      for (double edge : {0.0, 1.0})
+        if (slope != 0.0) {
+          const double x = 0.5 + (edge - y0) / slope;
+          if (x > 0.5 && x < 1.0) xs.push_back(x);
+        }
+    std::sort(xs.begin(), xs.end());
+    const auto ray = [](double y0, double slope, double x) { return std::clamp(y0 + slope * (x - 0.5), 0.0, 1.0); };
+    const ImDrawListFlags flags = dl->Flags;
+    dl->Flags &= ~ImDrawListFlags_AntiAliasedFill;
+    for (std::size_t i = 0; i + 1 < xs.size(); ++i) {
+      const double a = xs[i], b = xs[i + 1];
+      dl->AddQuadFilled(v.to_screen(Vec2(a, ray(lo, slope_lo, a))), v.to_screen(Vec2(b, ray(lo, slope_lo, b))),
+                        v.to_screen(Vec2(b, ray(hi, slope_hi, b))), v.to_screen(Vec2(a, ray(hi, slope_hi, a))), shade);
     }
-    for (int i = kSteps; i >= 0; --i) {
-      const double x = 0.5 + 0.5 * i / kSteps;
-      cone.push_back(v.to_screen(Vec2(x, std::clamp(hi + (hi - p9_y_) / run * (x - 0.5), 0.0, 1.0))));
-    }
-    // The cone's clipped outline is convex: one filled polygon.
-    dl->AddConvexPolyFilled(cone.data(), static_cast<int>(cone.size()), shade);
+    dl->Flags = flags;
     for (const auto& p : mc_points_) {
       const ImVec2 c = v.to_screen(Vec2(p[0], p[1]));
       dl->AddRectFilled(ImVec2(c.x - 1, c.y - 1), ImVec2(c.x + 1, c.y + 1),

@@ -118,7 +118,8 @@ class PotentialLesson : public Lesson {
     changed |= slider("switch d", &f.switch_distance, 0.01, 1.0, "quadratic pull within d of the goal, conic beyond");
     if (robot_kind() == Kind::Polygon) {
       double theta = from_[2];
-      if (slider("theta", &theta, -kPi, kPi, "the robot's orientation (drag the robot to move it)")) set_from(config({from_[0], from_[1], theta}));
+      if (slider("start theta", &theta, -kPi, kPi, "the robot's orientation where the descent starts (drag the robot to move it)"))
+        set_from(config({from_[0], from_[1], theta}));
     }
     if (changed && f.problem().empty()) {
       field_params_ = f;
@@ -445,8 +446,10 @@ class PotentialLesson : public Lesson {
         break;
       case DescentOutcome::LocalMinimum:
         ImGui::TextColored(ImVec4(0.75f, 0.25f, 0.0f, 1.0f), "stuck in a local minimum");
-        ImGui::TextWrapped("Attraction and repulsion cancel here, away from the goal. Allow escapes: random walks "
-                           "out of the basin, then descent again.");
+        ImGui::TextWrapped("The descent makes no progress here, away from the goal: attraction and repulsion "
+                           "nearly cancel, so its steps of fixed length go back and forth around a minimum of U "
+                           "(|tau| is small there, not zero), or every step is blocked. Allow escapes: random "
+                           "walks out of the basin, then descent again.");
         break;
       case DescentOutcome::MaxSteps: ImGui::TextColored(ImVec4(0.75f, 0.25f, 0.0f, 1.0f), "out of steps"); break;
     }

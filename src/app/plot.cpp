@@ -23,14 +23,16 @@ void Plot::begin(const char* id, ImVec2 size, const Axis& x, const Axis& y) {
   x_ = x;
   y_ = y;
   legend_.clear();
+  shade_label_.clear();
   const ImVec2 o = ImGui::GetCursorScreenPos();
   ImGui::InvisibleButton(id, size);
-  min_ = ImVec2(o.x + 64.0f, o.y + 12.0f);
+  ImFont* font = fonts().small;
+  const float fs = font->FontSize * ImGui::GetIO().FontGlobalScale;
+  // The y axis's label on a line of its own above the plot, clear of the top tick's number.
+  min_ = ImVec2(o.x + 64.0f, o.y + fs + 12.0f);
   max_ = ImVec2(o.x + size.x - 30.0f, o.y + size.y - 44.0f);
   ImDrawList* dl = ImGui::GetWindowDrawList();
   dl->AddRectFilled(min_, max_, theme::kCanvasBg);
-  ImFont* font = fonts().small;
-  const float fs = font->FontSize * ImGui::GetIO().FontGlobalScale;
   // Ticks: decades on log axes, five steps on linear ones.
   const auto ticks = [](const Axis& a) {
     std::vector<double> t;
@@ -59,7 +61,7 @@ void Plot::begin(const char* id, ImVec2 size, const Axis& x, const Axis& y) {
   dl->AddRect(min_, max_, theme::kFrame);
   const ImVec2 xs = font->CalcTextSizeA(fs, 1e9f, 0.0f, x_.label.c_str());
   dl->AddText(font, fs, ImVec2(0.5f * (min_.x + max_.x - xs.x), max_.y + 22), theme::kLabel, x_.label.c_str());
-  dl->AddText(font, fs, ImVec2(o.x + 2, min_.y - 2), theme::kLabel, y_.label.c_str());
+  dl->AddText(font, fs, ImVec2(o.x + 2, o.y + 2), theme::kLabel, y_.label.c_str());
 }
 
 void Plot::line(const std::vector<double>& xs, const std::vector<double>& ys, ImU32 color, float thickness,
@@ -98,11 +100,18 @@ void Plot::shade_above(double from, ImU32 color, const char* label) {
   const float sy = std::max(min_.y, std::min(max_.y, to_screen(x_.lo, from).y));
   ImDrawList* dl = ImGui::GetWindowDrawList();
   dl->AddRectFilled(min_, ImVec2(max_.x, sy), color);
-  if (label) dl->AddText(ImVec2(max_.x - 8 - ImGui::CalcTextSize(label).x, min_.y + 4), theme::kLabel, label);
+  if (label) shade_label_ = label;  // drawn by end(), over the lines
 }
 
 void Plot::end() {
   ImDrawList* dl = ImGui::GetWindowDrawList();
+  if (!shade_label_.empty()) {  // on a backing of the canvas's colour, so lines do not cross it
+    const ImVec2 size = ImGui::CalcTextSize(shade_label_.c_str());
+    const ImVec2 at(max_.x - 8 - size.x, min_.y + 4);
+    dl->AddRectFilled(ImVec2(at.x - 3, at.y - 1), ImVec2(at.x + size.x + 3, at.y + size.y + 1),
+                      theme::with_alpha(theme::kCanvasBg, 220), 3.0f);
+    dl->AddText(at, theme::kLabel, shade_label_.c_str());
+  }
   float y = max_.y - 8.0f - 18.0f * static_cast<float>(legend_.size());
   for (const auto& [text, color] : legend_) {
     dl->AddLine(ImVec2(min_.x + 10, y + 8), ImVec2(min_.x + 30, y + 8), color, 3.0f);

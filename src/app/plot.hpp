@@ -34,6 +34,7 @@ class Plot {
   ImVec2 min_{0, 0}, max_{0, 0};  // the plotting area
   Axis x_{0, 1, false, ""}, y_{0, 1, false, ""};
   std::vector<std::pair<std::string, ImU32>> legend_;
+  std::string shade_label_;
 };
 
 }  // namespace csl::app

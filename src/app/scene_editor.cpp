@@ -447,9 +447,9 @@ bool SceneEditor::toolbar(Scene& scene, LabContext&) {
 
 void SceneEditor::help_window() {
   if (!show_help_) return;
-  ImGui::SetNextWindowSize(ImVec2(420, 0), ImGuiCond_Appearing);
   ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-  if (ImGui::Begin("Keyboard and mouse", &show_help_, ImGuiWindowFlags_NoCollapse)) {
+  // Sized to its table: a fixed width cut the descriptions off.
+  if (ImGui::Begin("Keyboard and mouse", &show_help_, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_AlwaysAutoResize)) {
     static const char* const kRows[][2] = {
         {"V / D / P / W", "tool: select / disk / polygon / wall"},
         {"drag (Select)", "move an obstacle, start or goal; its handles resize"},
@@ -464,7 +464,7 @@ void SceneEditor::help_window() {
         {"Space / . / ,", "play or pause / step / step back"},
         {"?", "this help"},
     };
-    if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg)) {
+    if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
       for (const auto& row : kRows) {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();

@@ -29,6 +29,7 @@ struct ExperimentParams {
 struct ExperimentReference {
   bool path_exists = false;
   int samples = 0;
+  std::vector<Config> path;            ///< the path measured: the reference roadmap's widest
   double path_length = 0.0;            ///< L
   double workspace_clearance = 0.0;    ///< least eta along the path
   double clearance = 0.0;              ///< r = eta / K, in C-space
@@ -76,6 +77,11 @@ class Experiment {
   std::size_t next_row_ = 0;
   int next_trial_ = 0;
 };
+
+/// The roadmap's start-goal path (vertices 0 to 1) whose least clearance is largest, as far as
+/// its vertices' clearances and the edges' motion bounds prove, and the shortest of those;
+/// empty if start and goal are not connected. (Straight-line edges.)
+std::vector<int> widest_path(const CollisionWorld& world, const Roadmap& roadmap);
 
 /// The least clearance eta along a path of configurations, sampled at most `spacing` apart.
 double path_clearance(const CollisionWorld& world, const std::vector<Config>& path, double spacing);

@@ -38,6 +38,44 @@ test('PRM analysis: an experiment, and P9 by clicking', () => withPage(async ({ 
   await page.mouse.move(5, 5);
   const shot2 = await screenshot(page, 'analysis-p9.png');
   assert.ok((await inspectPng(browser, shot2.png)).colours > 20);
+
+  // Each point, gap and sample count gets its own samples (a function of them and mc_seed).
+  const here = (await api(page, 'state')).visibility;
+  await api(page, 'set_params', { params: { mc_seed: here.mc_seed + 1 } });
+  assert.notEqual((await api(page, 'state')).visibility.monte_carlo, here.monte_carlo, 'new samples');
+  await api(page, 'set_params', { params: { mc_seed: here.mc_seed } });
+  assert.equal((await api(page, 'state')).visibility.monte_carlo, here.monte_carlo, 'the same seed, the same samples');
+}));
+
+// The shaded region is exactly what (x1, y1) sees, also where the cone's clipped outline is not
+// convex: both rays through the opening leave the square through its bottom edge.
+test('PRM analysis: the P9 picture shades exactly the visible part of the right half',
+  () => withPage({ viewport: { width: 1280, height: 800 } }, async ({ page, browser }) => {
+  await api(page, 'select_lesson', { id: 'analysis' });
+  const [x1, y1, gap] = [0.45, 0.95, 0.1];
+  await api(page, 'set_params', { params: { tab: 'visibility', point: [x1, y1], gap, mc_trials: 100 } });
+  await page.mouse.move(5, 5);
+  await waitFrames(page, 3);
+  const lo = 0.5 - gap / 2, hi = 0.5 + gap / 2;
+  const rayY = (end, x) => end + (end - y1) / (0.5 - x1) * (x - 0.5);
+  const probes = [], expected = [];
+  for (let x = 0.5025; x < 1; x += 0.01)
+    for (let y = 0.0025; y < 1; y += 0.01) {
+      // Away from the rays (the lines drawn over the shade), a grid line or the border.
+      const near = (a, b) => Math.abs(a - b) < 0.004;
+      if ([rayY(lo, x), rayY(hi, x), 0, 1].some((v) => near(v, y)) || near(x, 1)) continue;
+      if (near(x % 0.05, 0) || near(x % 0.05, 0.05) || near(y % 0.05, 0) || near(y % 0.05, 0.05)) continue;
+      probes.push([x, y]);
+      expected.push(y >= rayY(lo, x) && y <= rayY(hi, x));
+    }
+  const at = await worldToPage(page, probes, 'p9');
+  const dpr = await page.evaluate(() => window.devicePixelRatio);
+  const { png } = await screenshot(page, 'analysis-p9-cone.png');
+  const rgb = (await inspectPng(browser, png, at.map((p) => [p.x * dpr, p.y * dpr]))).at;
+  // Shaded: the sky-blue tint (blue well above red); a sample's dot may cover a probe or two.
+  const wrong = rgb.filter(([r, , b], i) => (b - r > 20) !== expected[i]).length;
+  assert.ok(expected.filter(Boolean).length > 5 && expected.some((e) => !e), 'probes on both sides');
+  assert.ok(wrong <= probes.length / 50, `${wrong} of ${probes.length} probes shaded wrongly`);
 }));
 
 // Types an answer into the field that has the keyboard, submits it with Enter: the state after.

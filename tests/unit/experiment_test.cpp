@@ -32,8 +32,9 @@ TEST_CASE("the failure rate falls with n and respects the bound") {
   CHECK(ref.dimension == 2);
   CHECK(ref.free_fraction == doctest::Approx(1.0).epsilon(0.01));  // walls have no area
   CHECK(ref.path_length >= 0.6);
-  // The path must squeeze through the 0.04 gap: its clearance is at most 0.02.
-  CHECK(ref.clearance > 0.0);
+  // The path must squeeze through the 0.04 gap: its clearance is at most 0.02; the widest
+  // path of the reference roadmap passes near the gap's middle, not by a wall's end.
+  CHECK(ref.clearance > 0.012);
   CHECK(ref.clearance <= 0.02);
   ex.run();
   CHECK(ex.progress() == 1.0);
@@ -77,4 +78,44 @@ TEST_CASE("bad experiment parameters are refused") {
   CHECK_THROWS_AS(csl::Experiment(world, config({0.15, 0.85}), config({0.85, 0.75}), params({}, 3)), std::invalid_argument);
   CHECK_THROWS_AS(csl::Experiment(world, config({0.15, 0.85}), config({0.85, 0.75}), params({-5}, 3)), std::invalid_argument);
   CHECK_THROWS_AS(csl::Experiment(world, config({0.15, 0.85}), config({0.85, 0.75}), params({5}, 0)), std::invalid_argument);
+}
+
+TEST_CASE("the widest path: the roadmap's path of largest proven clearance, then the shortest") {
+  const auto world = narrow_gap();
+  csl::PrmParams p;
+  p.samples = 3000;
+  p.seed = 4;
+  csl::Prm prm(world, config({0.15, 0.85}), config({0.85, 0.75}), p);
+  prm.run();
+  REQUIRE(prm.solved());
+  const auto& r = prm.roadmap();
+  const std::vector<int> wide = csl::widest_path(world, r);
+  REQUIRE(wide.size() >= 2);
+  CHECK(wide.front() == 0);
+  CHECK(wide.back() == 1);
+  // A path of the roadmap: consecutive vertices joined by an edge.
+  for (std::size_t i = 0; i + 1 < wide.size(); ++i) {
+    bool joined = false;
+    for (const auto& e : r.edges)
+      joined = joined || (e.alive && ((e.a == wide[i] && e.b == wide[i + 1]) || (e.b == wide[i] && e.a == wide[i + 1])));
+    CHECK(joined);
+  }
+  const auto clearance = [&](const std::vector<int>& path) {
+    std::vector<csl::Config> q;
+    for (int v : path) q.push_back(r.vertices[static_cast<std::size_t>(v)]);
+    return csl::path_clearance(world, q, 1e-4);
+  };
+  // PRM's own (shortest) path passes a wall's end; the widest keeps away, toward the 0.02 the
+  // gap allows (as near as the 3000 samples and the edges' proofs get).
+  const double shortest = clearance(prm.path()), widest = clearance(wide);
+  MESSAGE("clearance: shortest path " << shortest << ", widest " << widest);
+  CHECK(widest > 5 * shortest);
+  CHECK(widest > 0.008);
+  CHECK(widest <= 0.02 + 1e-12);
+  // Unconnected: nothing.
+  csl::PrmParams few = p;
+  few.samples = 0;
+  csl::Prm blocked(world, config({0.15, 0.85}), config({0.85, 0.75}), few);
+  blocked.run();
+  CHECK(csl::widest_path(world, blocked.roadmap()).empty());
 }
