@@ -308,11 +308,12 @@ class CollisionLesson : public Lesson {
                            ImVec2(0, 180)))
       return;
     ImGui::TableSetupScrollFreeze(0, 1);
-    ImGui::TableSetupColumn("#");
-    ImGui::TableSetupColumn("t");
-    ImGui::TableSetupColumn("eta");
-    ImGui::TableSetupColumn("lambda");
-    ImGui::TableSetupColumn("piece");
+    // Weighted: a certified piece's eta column holds a sum ("0.260+0.754").
+    ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_WidthStretch, 0.5f);
+    ImGui::TableSetupColumn("t", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+    ImGui::TableSetupColumn("eta", ImGuiTableColumnFlags_WidthStretch, 1.7f);
+    ImGui::TableSetupColumn("lambda", ImGuiTableColumnFlags_WidthStretch, 1.1f);
+    ImGui::TableSetupColumn("piece", ImGuiTableColumnFlags_WidthStretch, 1.2f);
     ImGui::TableHeadersRow();
     int number = 0;
     for (int i = 0; i < shown_; ++i) {

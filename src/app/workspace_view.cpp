@@ -108,7 +108,12 @@ void WorkspaceView::draw_grid(const char* x_label, const char* y_label) const {
   // Axis names beside the frame.
   ImFont* font = fonts().small;
   const float fs = font->FontSize * ImGui::GetIO().FontGlobalScale;
-  dl->AddText(font, fs, ImVec2(hi.x + 6.0f, lo.y - 0.5f * fs), theme::kLabel, x_label);
+  // The x axis's name right of the frame; where the canvas ends too soon for it (a square view
+  // filling its width), under the frame's right end, below the tick numbers.
+  const ImVec2 xs = font->CalcTextSizeA(fs, 1e9f, 0.0f, x_label);
+  const ImVec2 x_at = hi.x + 6.0f + xs.x <= canvas_max_.x ? ImVec2(hi.x + 6.0f, lo.y - 0.5f * fs)
+                                                          : ImVec2(hi.x - xs.x, lo.y + 8.0f + fs);
+  dl->AddText(font, fs, x_at, theme::kLabel, x_label);
   const ImVec2 ys = font->CalcTextSizeA(fs, 1e9f, 0.0f, y_label);
   dl->AddText(font, fs, ImVec2(lo.x - 0.5f * ys.x, hi.y - ys.y - 4.0f), theme::kLabel, y_label);
   dl->PopClipRect();
