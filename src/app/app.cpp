@@ -9,6 +9,7 @@
 #include "app/fonts.hpp"
 #include "app/js_api.hpp"
 #include "app/theme.hpp"
+#include "app/ui.hpp"
 #include "app/web_bridge.hpp"
 #include "core/version.hpp"
 
@@ -244,13 +245,13 @@ void App::playback_controls() {
   if (ImGui::Button("\xE2\x97\x80 Back")) lesson_->step_back();  // ◀
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("step back (,)");
   ImGui::EndDisabled();
-  ImGui::SameLine();
+  ui::flow(ui::button_width("Step \xE2\x96\xB6"));
   ImGui::BeginDisabled(lesson_->finished());
   if (ImGui::Button("Step \xE2\x96\xB6")) lesson_->step_forward();  // ▶
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("one step (.)");
-  ImGui::SameLine();
+  ui::flow(ui::button_width("Finish phase"));
   if (ImGui::Button("Finish phase")) lesson_->finish_phase();
-  ImGui::SameLine();
+  ui::flow(ui::button_width("Run all"));
   if (ImGui::Button("Run all")) lesson_->run_all();
   ImGui::EndDisabled();
   ImGui::BeginDisabled(lesson_->finished() && !pb.playing);

@@ -59,7 +59,7 @@ class AnalysisLesson : public Lesson {
   void panel(LabContext& ctx) override {
     int tab = tab_;
     if (ImGui::RadioButton("Failure bound", &tab, 0)) tab_ = 0;
-    ImGui::SameLine();
+    ui::flow(ui::toggle_width("Visibility (P9)"));
     if (ImGui::RadioButton("Visibility (P9)", &tab, 1)) tab_ = 1;
     if (tab_ == 0) bound_panel(ctx);
     else visibility_panel();

@@ -41,7 +41,7 @@ class CollisionLesson : public Lesson {
                        "it piece by piece: a piece is free when lambda <= eta(start) + eta(end).");
     int robot = arm_ ? 1 : 0;
     if (ImGui::RadioButton("point robot (P12)", &robot, 0)) load(false);
-    ImGui::SameLine();
+    ui::flow(ui::toggle_width("2-link arm"));
     if (ImGui::RadioButton("2-link arm", &robot, 1)) load(true);
     ImGui::Separator();
     bool changed = false;

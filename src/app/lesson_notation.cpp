@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <iterator>
 
 #include "app/js_api.hpp"
 #include "app/lesson.hpp"
@@ -48,7 +49,7 @@ class NotationLesson : public Lesson {
   void panel(LabContext&) override {
     int mode = practice_ ? 1 : 0;
     if (ImGui::RadioButton("Build a robot", &mode, 0)) practice_ = false;
-    ImGui::SameLine();
+    ui::flow(ui::toggle_width("Practice"));
     if (ImGui::RadioButton("Practice", &mode, 1) && !practice_) {
       practice_ = true;
       focus_answer_ = true;
@@ -154,26 +155,28 @@ class NotationLesson : public Lesson {
     ImGui::PopItemWidth();
     ImGui::Text("joints, base to tip: %s", robot_.joints.empty() ? "(none)" : robot_.joints.c_str());
     if (ImGui::Button("+ revolute") && robot_.joints.size() < 12) robot_.joints += 'R';
-    ImGui::SameLine();
+    ui::flow(ui::button_width("+ prismatic"));
     if (ImGui::Button("+ prismatic") && robot_.joints.size() < 12) robot_.joints += 'P';
-    ImGui::SameLine();
+    ui::flow(ui::button_width("remove last"));
     if (ImGui::Button("remove last") && !robot_.joints.empty()) robot_.joints.pop_back();
-    ImGui::Checkbox("spherical wrist (three more revolute joints)", &robot_.spherical_wrist);
+    ImGui::Checkbox("spherical wrist", &robot_.spherical_wrist);
+    ui::flow(ImGui::CalcTextSize("(3 more revolute joints)").x);
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextDisabled("(3 more revolute joints)");
     ImGui::TextDisabled("the homework's robots:");
     static const char* const kPresets[][2] = {{"P1 mobile", "base=planar"},
                                               {"3R arm", "joints=RRR"},
                                               {"P6 arm", "joints=RRR wrist=spherical"},
                                               {"P7", "base=planar joints=RRR wrist=spherical"}};
-    for (const auto& p : kPresets) {
-      if (ImGui::SmallButton(p[0])) robot_ = parse_robot_description(p[1]);
-      ImGui::SameLine();
+    for (std::size_t i = 0; i < std::size(kPresets); ++i) {
+      if (i > 0) ui::flow(ui::button_width(kPresets[i][0]));
+      if (ImGui::SmallButton(kPresets[i][0])) robot_ = parse_robot_description(kPresets[i][1]);
     }
-    ImGui::NewLine();
 
     const ConfigSpaceInfo info = configuration_space(robot_);
     ui::section("Its configuration space");
     ImGui::TextColored(ImVec4(0.0f, 0.3f, 0.55f, 1.0f), "Q = %s", info.notation.c_str());
-    ImGui::Text("dimension %d: that many numbers fix a configuration", info.dimension);
+    ImGui::TextWrapped("dimension %d: that many numbers fix a configuration", info.dimension);
     for (const NotationFactor& f : info.factors) {
       ImGui::Bullet();
       ImGui::TextWrapped("%s", f.reason.c_str());
@@ -204,7 +207,7 @@ class NotationLesson : public Lesson {
       run_check();
       focus_answer_ = true;  // keep typing: correct the answer and Enter again
     }
-    ImGui::SameLine();
+    ui::flow(ui::button_width("Next exercise"));
     if (ImGui::Button("Next exercise")) {
       exercise_ = (exercise_ + 1) % static_cast<int>(kExercises.size());
       checked_ = false;
@@ -282,8 +285,15 @@ class NotationLesson : public Lesson {
       at = next;
     }
     dl->AddCircle(at, 0.15f * unit, ink, 12, 2.0f);
-    dl->AddText(ImVec2(o.x + 8, o.y + 8), theme::kLabel, "circles: revolute joints (S^1 each)   boxes: prismatic (R)");
-    if (robot_.spherical_wrist) dl->AddText(ImVec2(o.x + 8, o.y + 26), theme::kLabel, "small circles: the spherical wrist's three revolute joints");
+    // The legend, wrapped to the picture (a narrow panel cut it off).
+    ImFont* font = ImGui::GetFont();
+    const float fs = ImGui::GetFontSize(), wrap = std::max(40.0f, size.x - 16);
+    float y = o.y + 8;
+    for (const char* line : {"circles: revolute joints (S^1 each)   boxes: prismatic (R)",
+                             robot_.spherical_wrist ? "small circles: the spherical wrist's three revolute joints" : ""}) {
+      dl->AddText(font, fs, ImVec2(o.x + 8, y), theme::kLabel, line, nullptr, wrap);
+      y += font->CalcTextSizeA(fs, 1e9f, wrap, line).y;
+    }
     // In practice mode the picture must not give the answer away.
     if (!practice_) {
       char q[128];
@@ -310,7 +320,8 @@ class NotationLesson : public Lesson {
     torus_.draw_curve(around, theme::kVermillion, 3.0f);
     torus_.draw_curve(small, theme::kGreen, 3.0f);
     const ImVec2 t0 = ImGui::GetItemRectMin();
-    dl->AddText(ImVec2(t0.x + 6, t0.y + 4), theme::kLabel, "T^2: the loop around the hole cannot shrink");
+    dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(t0.x + 6, t0.y + 4), theme::kLabel,
+                "T^2: the loop around the hole cannot shrink", nullptr, size.x - 12);  // wrapped: a narrow panel
 
     ImGui::Dummy(ImVec2(0, 4));
     sphere_.begin("##sphere", ImVec2(size.x, h), 1.3);
@@ -321,7 +332,8 @@ class NotationLesson : public Lesson {
     for (int i = 0; i <= 96; ++i) latitude.push_back(sphere_point(i / 96.0, 0.02 + 0.5 * (1.0 - phase)));
     sphere_.draw_curve(latitude, theme::kGreen, 3.0f);
     const ImVec2 s0 = ImGui::GetItemRectMin();
-    dl->AddText(ImVec2(s0.x + 6, s0.y + 4), theme::kLabel, "S^2: every loop shrinks to a point");
+    dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(s0.x + 6, s0.y + 4), theme::kLabel,
+                "S^2: every loop shrinks to a point", nullptr, size.x - 12);
   }
 
   RobotDescription robot_;

@@ -101,10 +101,7 @@ class PotentialLesson : public Lesson {
                        "force; gradient descent follows their sum. Drag the robot; step the descent.");
     ImGui::TextDisabled("Example:");
     for (const Example& e : kExamples) {
-      // Same row while the button fits, else the next one (the panel may be narrow).
-      const float w = ImGui::CalcTextSize(e.label).x + 2 * ImGui::GetStyle().FramePadding.x;
-      const float right = ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + w;
-      if (right <= ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x) ImGui::SameLine();
+      ui::flow(ui::button_width(e.label));  // same row while it fits (the panel may be narrow)
       if (ImGui::SmallButton(e.label)) set_example(e.scene, ctx);
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", e.tooltip);
     }

@@ -66,13 +66,13 @@ class TorusLesson : public Lesson {
                        "arm's links; drag obstacles and watch their C-obstacles change.");
     ImGui::Text("q = (%.3f, %.3f)  %s", q_[0], q_[1], world_->is_free(q_) ? "free" : "in collision");
     ImGui::Checkbox("animate the path / loop", &animate_);
-    ImGui::SameLine();
+    ui::flow(ui::button_width("clear trail"));
     if (ImGui::SmallButton("clear trail")) trail_.clear();
     ui::section("Right-hand view");
     ImGui::RadioButton("square", &right_view_, 0);
-    ImGui::SameLine();
+    ui::flow(ui::toggle_width("torus (3-D)"));
     ImGui::RadioButton("torus (3-D)", &right_view_, 1);
-    ImGui::SameLine();
+    ui::flow(ui::toggle_width("both"));
     ImGui::RadioButton("both", &right_view_, 2);
 
     ui::section("PRM on the torus");
@@ -90,7 +90,7 @@ class TorusLesson : public Lesson {
 
     ui::section("Exercise: loops on the torus");
     if (ImGui::Button("a loop around the torus")) start_exercise(Exercise::Around);
-    ImGui::SameLine();
+    ui::flow(ui::button_width("a loop that shrinks"));
     if (ImGui::Button("a loop that shrinks")) start_exercise(Exercise::Shrink);
     if (exercise_ == Exercise::Around)
       ImGui::TextWrapped("theta1 makes a full turn: the point leaves the square on the right and comes back on the "

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "app/theme.hpp"
+#include "app/ui.hpp"
 #include <nlohmann/json.hpp>
 
 namespace csl::app {
@@ -415,22 +416,21 @@ bool SceneEditor::toolbar(Scene& scene, LabContext&) {
       {Tool::Wall, "Wall", "W: drag from one end to the other (zero thickness)"},
   };
   for (const Item& item : kItems) {
+    if (&item != kItems) ui::flow(ui::button_width(item.label));
     const bool active = tool_ == item.tool;
     if (active) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
     if (ImGui::Button(item.label)) set_tool(item.tool);
     if (active) ImGui::PopStyleColor();
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", item.tip);
-    ImGui::SameLine();
   }
-  ImGui::NewLine();
   ImGui::BeginDisabled(!can_undo());
   if (ImGui::Button("Undo")) changed = undo(scene);
   ImGui::EndDisabled();
-  ImGui::SameLine();
+  ui::flow(ui::button_width("Redo"));
   ImGui::BeginDisabled(!can_redo());
   if (ImGui::Button("Redo")) changed = redo(scene);
   ImGui::EndDisabled();
-  ImGui::SameLine();
+  ui::flow(ui::button_width("Delete"));
   ImGui::BeginDisabled(selected_ < 0);
   if (ImGui::Button("Delete") && selected_ >= 0 && selected_ < static_cast<int>(scene.obstacles.size()) &&
       drag_ == Drag::None) {
@@ -440,7 +440,7 @@ bool SceneEditor::toolbar(Scene& scene, LabContext&) {
     changed = true;
   }
   ImGui::EndDisabled();
-  ImGui::SameLine();
+  ui::flow(ui::button_width("Keys (?)"));
   if (ImGui::Button("Keys (?)")) show_help_ = !show_help_;
   return changed;
 }
