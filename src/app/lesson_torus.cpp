@@ -47,7 +47,12 @@ class TorusLesson : public Lesson {
     for (int i = 0; i < due && !prm_->done(); ++i) prm_->step();
     if (prm_->done()) ctx.playback.playing = false;
     if (logged_ != prm_->steps()) {
-      if (prm_->steps() == 0 || prm_->steps() < logged_ || prm_->steps() > logged_ + 1) ctx.log.clear();
+      if (prm_->steps() == 0 || prm_->steps() < logged_ || prm_->steps() > logged_ + 1) {
+        ctx.log.clear();  // as the step-prm lesson does: where the planner stands, then each step
+        ctx.log.add(0, prm_->steps() == 0 ? std::string("ready: press Step or Play to grow a roadmap on the torus")
+                                          : "at step " + std::to_string(prm_->steps()) + " (" +
+                                                phase_name(prm_->phase()) + ")");
+      }
       if (prm_->steps() > 0) ctx.log.add(prm_->steps(), describe(prm_->last_event(), *prm_, planned_scene_));
       logged_ = prm_->steps();
     }

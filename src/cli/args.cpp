@@ -93,7 +93,11 @@ std::vector<double> parse_numbers(const std::string& text, const std::string& wh
   std::size_t pos = 0;
   while (true) {
     std::size_t comma = text.find(',', pos);
-    out.push_back(parse_number(text.substr(pos, comma - pos), what));
+    // Spaces around an item are fine in a list ("0.1, 0.2"), as scripts write them.
+    std::string item = text.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
+    const std::size_t first = item.find_first_not_of(" \t"), last = item.find_last_not_of(" \t");
+    item = first == std::string::npos ? std::string() : item.substr(first, last - first + 1);
+    out.push_back(parse_number(item, what));
     if (comma == std::string::npos) break;
     pos = comma + 1;
   }

@@ -23,8 +23,11 @@ int run_distance(Args& args, std::ostream& os) {
     const double a = parse_number(args.take_positional("angle A"), "A");
     const double b = parse_number(args.take_positional("angle B"), "B");
     args.finish();
-    // Each angle into the chart first: B - A of two huge angles can round by turns, or overflow.
-    const double wa = wrap_angle(a), wb = wrap_angle(b);
+    // B - A as the homework's modulus takes it; only where that overflows (angles near 1e308),
+    // each angle into the chart first. (Wrapping huge angles first would lose what an exact
+    // difference keeps: 1e15 and 1e15 + 1 are 1 rad apart.)
+    const bool finite = std::isfinite(b - a);
+    const double wa = finite ? 0.0 : wrap_angle(a), wb = finite ? b - a : wrap_angle(b);
     print_json(os, {{"distance", s1_distance(wa, wb)},
                     {"modulus", s1_distance(wa, wb)},
                     {"rotation", s1_distance_rotation(a, b)},

@@ -32,7 +32,7 @@ const Command kValidateCommand{
     "q is [x, y] (point), [theta1, theta2] in radians with theta2 relative to link 1 (arm2),\n"
     "or [x, y, theta] (polygon). Segments are walls of zero thickness; a robot within 1e-6\n"
     "of one collides. Limits: 1000 obstacles, 256 vertices per polygon (32 for the robot),\n"
-    "|coordinates| <= 1e6, 32 MB of JSON.\n"
+    "|coordinates| <= 1e6, 64 MB of JSON.\n"
     "Only \"version\" is required; the rest default to: no name, the workspace [0,1]^2, the\n"
     "point robot, no obstacles, start and goal at the workspace's min and max corners (angle 0\n"
     "for the polygon robot; the arm: start [0, 0], goal [pi/2, 0]). The normalised scene spells\n"

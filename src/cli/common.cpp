@@ -24,7 +24,7 @@ std::string read_file(const std::string& path) {
   char piece[1 << 16];
   while (in.read(piece, sizeof piece) || in.gcount() > 0) {
     text.append(piece, static_cast<std::size_t>(in.gcount()));
-    if (text.size() > kMaxSceneBytes) throw UsageError(path + ": larger than 32 MB, more than any scene within the limits");
+    if (text.size() > kMaxSceneBytes) throw UsageError(path + ": larger than 64 MB, more than any scene within the limits");
   }
   if (in.bad()) throw UsageError(path + ": read error");
   return text;

@@ -13,8 +13,9 @@ inline constexpr double kTwoPi = 2.0 * kPi;
 /// IEEE arithmetic), so the result is the same natively and in wasm.
 inline double wrap_angle(double a) {
   if (a >= -kPi && a < kPi) return a;  // the common case, untouched
-  // 2*pi is not a double; subtracting k * (hi + lo) in two steps keeps ~2^-100 accuracy
-  // for the |k| the lab meets.
+  // 2*pi is not a double; subtracting k * (hi + lo) in two steps is exact to ~2^-100 while
+  // k * kTwoPiHi is exact (|k| <= 8: its last three bits are zero), i.e. for the few turns the
+  // lab's angles make; beyond, it rounds by about |a| * 2^-53, the angle's own precision.
   constexpr double kTwoPiHi = 6.28318530717958623200e+00;  // == kTwoPi
   constexpr double kTwoPiLo = 2.44929359829470635445e-16;  // 2*pi - kTwoPiHi
   const double k = std::rint(a / kTwoPiHi);

@@ -192,7 +192,7 @@ Scene scene_from_json(const json& j) {
 }
 
 Scene scene_from_string(const std::string& text) {
-  if (text.size() > kMaxSceneBytes) throw SceneError("scene: larger than 32 MB, more than any scene within the limits");
+  if (text.size() > kMaxSceneBytes) throw SceneError("scene: larger than 64 MB, more than any scene within the limits");
   json j = json::parse(text, nullptr, /*allow_exceptions=*/false);
   if (j.is_discarded()) throw SceneError("scene: not valid JSON");
   return scene_from_json(j);

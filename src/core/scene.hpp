@@ -36,8 +36,8 @@ inline constexpr std::size_t kMaxRobotVertices = 32;
 inline constexpr double kMaxCoordinate = 1e6;  ///< |any coordinate or length| in a scene
 inline constexpr std::size_t kMaxNameLength = 200;
 /// Bytes of scene JSON: the largest scene the other limits allow (1000 polygons of 256
-/// vertices at full precision) is about 12 MB, indented perhaps 16.
-inline constexpr std::size_t kMaxSceneBytes = std::size_t{32} << 20;
+/// vertices at full precision) is about 12 MB, 28 MB indented by 4 a level.
+inline constexpr std::size_t kMaxSceneBytes = std::size_t{64} << 20;
 
 struct Scene {
   std::string name;

@@ -63,7 +63,9 @@ test('distance s1 and segment-disk (P10, P11)', () => {
   fails(/--radius: must be in \[0, 1e6\]/, 'distance', 'segment-disk', '--p1', '0,0', '--p2', '1,0', '--center', '0,1', '--radius', '1e7');
   // Numbers are plain decimals; one too small for a normal double is still a number.
   fails(/--p1: '0x1p-2' is not a finite number/, 'distance', 'segment-disk', '--p1', '0x1p-2,0', '--p2', '1,0', '--center', '0,1', '--radius', '1');
-  fails(/--p1: ' 0' is not a finite number/, 'distance', 'segment-disk', '--p1', ' 0,0', '--p2', '1,0', '--center', '0,1', '--radius', '1');
+  fails(/--radius: ' 1' is not a finite number/, 'distance', 'segment-disk', '--p1', '0,0', '--p2', '1,0', '--center', '0,1', '--radius', ' 1');
+  // In a list, spaces around the items are fine.
+  assert.equal(json('distance', 'segment-disk', '--p1', ' 0, 0 ', '--p2', '1,\t0', '--center', '0, 1', '--radius', '0.5').distance, 0.5);
   fails(/--radius: '1e999' is not a finite number/, 'distance', 'segment-disk', '--p1', '0,0', '--p2', '1,0', '--center', '0,1', '--radius', '1e999');
   assert.equal(json('distance', 'segment-disk', '--p1', '0,0', '--p2', '1,0', '--center', '0,1', '--radius', '1e-310').distance, 1 - 1e-310);
   const sd = json('distance', 'segment-disk', '--p1', '0,0', '--p2', '1,0', '--center', '0.2,0.05', '--radius', '0.1');

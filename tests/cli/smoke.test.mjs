@@ -54,13 +54,13 @@ test('validate names the offending field of a bad scene', () => {
   assert.equal(r.status, 2);
   assert.match(r.stderr, /is a directory, not a scene file/);
 
-  // Past 32 MB no scene is within the limits: refused without reading it all (its valid JSON
+  // Past 64 MB no scene is within the limits: refused without reading it all (its valid JSON
   // would otherwise parse).
   const huge = path.join(dir, 'huge.json');
-  fs.writeFileSync(huge, ' '.repeat(33 << 20) + '{"version": 1}');
+  fs.writeFileSync(huge, ' '.repeat(65 << 20) + '{"version": 1}');
   r = run('validate', huge);
   assert.equal(r.status, 2);
-  assert.match(r.stderr, /larger than 32 MB/);
+  assert.match(r.stderr, /larger than 64 MB/);
   fs.rmSync(huge);
 
   const good = path.join(dir, 'good.json');
