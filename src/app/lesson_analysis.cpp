@@ -281,16 +281,16 @@ class AnalysisLesson : public Lesson {
     ImGui::TextWrapped("A free path of length L with clearance r is covered by m = ceil(L/(r/2)) balls of "
                        "radius r/2; PRM fails only if one of them gets no sample:");
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.0f, 0.3f, 0.55f, 1.0f));
-    ImGui::TextWrapped("P(fail) <= m exp(-sigma r^d n),  sigma = mu(B1) / (2^d mu(F))");
+    ImGui::TextWrapped("P(fail) ≤ m exp(−σ r^d n),  σ = μ(B₁) / (2^d μ(F))");
     ImGui::PopStyleColor();
     if (!path_exists_) ImGui::TextColored(ImVec4(0.7f, 0.25f, 0.0f, 1.0f), "no path found in this scene: enter L, r by hand");
     ImGui::PushItemWidth(-110);
     float l = static_cast<float>(length_), r = static_cast<float>(clearance_), v = static_cast<float>(free_volume_);
     if (ImGui::DragFloat("L (length)", &l, 0.01f, 0.001f, 100.0f, "%.4f")) length_ = static_cast<double>(l);
     if (ImGui::DragFloat("r (clearance)", &r, 0.0005f, 0.0001f, 10.0f, "%.4f")) clearance_ = static_cast<double>(r);
-    if (ImGui::DragFloat("mu(F)", &v, 0.01f, 0.0001f, 1000.0f, "%.4f")) free_volume_ = static_cast<double>(v);
+    if (ImGui::DragFloat("μ(F)", &v, 0.01f, 0.0001f, 1000.0f, "%.4f")) free_volume_ = static_cast<double>(v);
     ImGui::PopItemWidth();
-    ImGui::Text("d = %d   m = %.0f   sigma = %.4g", dim_, bound(0).balls, bound(0).sigma);
+    ImGui::Text("d = %d   m = %.0f   σ = %.4g", dim_, bound(0).balls, bound(0).sigma);
     if (ImGui::SmallButton("use the measured values")) {
       length_ = measured_length_;
       clearance_ = measured_clearance_;
@@ -309,7 +309,7 @@ class AnalysisLesson : public Lesson {
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ImGui::TextWrapped("measured: L and r on the widest path (the largest clearance) of a reference roadmap of "
                        "3000 samples, r = its least clearance in the workspace / the robot's Lipschitz constant; "
-                       "mu(F) by Monte Carlo");
+                       "μ(F) by Monte Carlo");
     ImGui::PopStyleColor();
 
     ui::section("Experiment: run PRM many times");

@@ -38,7 +38,7 @@ class CollisionLesson : public Lesson {
 
   void panel(LabContext& ctx) override {
     ImGui::TextWrapped("Is the straight line from p to q free? Test N configurations along it, or prove "
-                       "it piece by piece: a piece is free when lambda <= eta(start) + eta(end).");
+                       "it piece by piece: a piece is free when λ(p, q) ≤ η(p) + η(q), with p and q its ends.");
     int robot = arm_ ? 1 : 0;
     if (ImGui::RadioButton("point robot (P12)", &robot, 0)) load(false);
     ui::flow(ui::toggle_width("2-link arm"));
@@ -65,7 +65,7 @@ class CollisionLesson : public Lesson {
       }
       ImGui::PopID();
     }
-    if (arm_) ImGui::TextDisabled("p, q = (theta1, theta2) in radians");
+    if (arm_) ImGui::TextDisabled("p, q = (θ₁, θ₂) in radians");
     if (changed) recompute();
 
     ui::section("Fixed resolution");
@@ -260,8 +260,8 @@ class CollisionLesson : public Lesson {
           view_.draw_segment(Vec2(a[0], a[1]), Vec2(b[0], b[1]), theme::kCurrent, 3.0f);
         }
         char text[96];
-        std::snprintf(text, sizeof text, "lambda = %.3f %s eta0 + eta1 = %.3f", e.lambda,
-                      e.lambda <= e.eta0 + e.eta1 ? "<=" : ">", e.eta0 + e.eta1);
+        std::snprintf(text, sizeof text, "λ = %.3f %s η₀ + η₁ = %.3f", e.lambda,
+                      e.lambda <= e.eta0 + e.eta1 ? "≤" : ">", e.eta0 + e.eta1);
         view_.draw_label(Vec2(scene_.workspace_min.x(), scene_.workspace_max.y()), text, theme::kCurrent, ImVec2(6, 6));
       }
     }
@@ -311,8 +311,8 @@ class CollisionLesson : public Lesson {
     // Weighted: a certified piece's eta column holds a sum ("0.260+0.754").
     ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_WidthStretch, 0.5f);
     ImGui::TableSetupColumn("t", ImGuiTableColumnFlags_WidthStretch, 1.0f);
-    ImGui::TableSetupColumn("eta", ImGuiTableColumnFlags_WidthStretch, 1.7f);
-    ImGui::TableSetupColumn("lambda", ImGuiTableColumnFlags_WidthStretch, 1.1f);
+    ImGui::TableSetupColumn("η", ImGuiTableColumnFlags_WidthStretch, 1.7f);
+    ImGui::TableSetupColumn("λ", ImGuiTableColumnFlags_WidthStretch, 1.1f);
     ImGui::TableSetupColumn("piece", ImGuiTableColumnFlags_WidthStretch, 1.2f);
     ImGui::TableHeadersRow();
     int number = 0;
@@ -347,12 +347,12 @@ class CollisionLesson : public Lesson {
     const EdgeEvent& e = bisection_.trace[static_cast<std::size_t>(shown_ - 1)];
     char buf[200];
     if (e.kind == EdgeEvent::Kind::Evaluate && e.t0 == e.t1)
-      std::snprintf(buf, sizeof buf, "endpoint t = %g: eta = %.4f (%s)", e.t, e.eta, e.free ? "free" : "in collision");
+      std::snprintf(buf, sizeof buf, "endpoint t = %g: η = %.4f (%s)", e.t, e.eta, e.free ? "free" : "in collision");
     else if (e.kind == EdgeEvent::Kind::Evaluate)
-      std::snprintf(buf, sizeof buf, "piece [%.4g, %.4g]: lambda = %.4f > %.4f, midpoint t = %.4g has eta = %.4f: %s",
+      std::snprintf(buf, sizeof buf, "piece [%.4g, %.4g]: λ = %.4f > η₀ + η₁ = %.4f, midpoint t = %.4g has η = %.4f: %s",
                     e.t0, e.t1, e.lambda, e.eta0 + e.eta1, e.t, e.eta, e.free ? "free, split" : "in collision");
     else if (e.kind == EdgeEvent::Kind::Certify)
-      std::snprintf(buf, sizeof buf, "piece [%.4g, %.4g]: lambda = %.4f <= eta0 + eta1 = %.4f: proven free", e.t0, e.t1,
+      std::snprintf(buf, sizeof buf, "piece [%.4g, %.4g]: λ = %.4f ≤ η₀ + η₁ = %.4f: proven free", e.t0, e.t1,
                     e.lambda, e.eta0 + e.eta1);
     else
       std::snprintf(buf, sizeof buf, "piece [%.4g, %.4g] too short to split: taken as a collision", e.t0, e.t1);

@@ -66,13 +66,13 @@ std::string describe(const DescentEvent& e) {
   const std::string at = format_config(e.q);
   switch (e.kind) {
     case DescentEvent::Kind::Descend:
-      return "descend to " + at + ": U = " + fmt("%.4g", e.U) + ", |tau| = " + fmt("%.3g", e.force) +
+      return "descend to " + at + ": U = " + fmt("%.4g", e.U) + ", |τ| = " + fmt("%.3g", e.force) +
              (e.halvings > 0 ? " (step halved " + std::to_string(e.halvings) + "x to stay free)" : "");
     case DescentEvent::Kind::RandomWalk: return "random walk to " + at + ": U = " + fmt("%.4g", e.U);
     case DescentEvent::Kind::ReachedGoal: return "reached the goal at " + at;
     case DescentEvent::Kind::LocalMinimum:
       return std::string("local minimum at ") + at + (e.blocked ? " (every shorter step collides)" : "") +
-             ": U = " + fmt("%.4g", e.U) + ", |tau| = " + fmt("%.3g", e.force) + "; a random walk follows";
+             ": U = " + fmt("%.4g", e.U) + ", |τ| = " + fmt("%.3g", e.force) + "; a random walk follows";
     case DescentEvent::Kind::GaveUp:
       return "stopped at " + at + ": " + (e.blocked ? "blocked" : "no progress") + ", no escapes left";
   }
@@ -97,7 +97,7 @@ class PotentialLesson : public Lesson {
 
   void panel(LabContext& ctx) override {
     ImGui::TextWrapped("Every control point is pulled toward where it is at the goal and pushed away from each "
-                       "obstacle closer than rho0. J^T turns each workspace force into a configuration-space "
+                       "obstacle closer than ρ₀. J^T turns each workspace force into a configuration-space "
                        "force; gradient descent follows their sum. Drag the robot; step the descent.");
     ImGui::TextDisabled("Example:");
     for (const Example& e : kExamples) {
@@ -109,13 +109,13 @@ class PotentialLesson : public Lesson {
     ui::section("Field");
     bool changed = false;
     PotentialParams f = field_params_;
-    changed |= slider("rho0", &f.rho0, 0.02, 0.3, "region of influence of each obstacle");
-    changed |= slider("eta", &f.eta, 1e-6, 1e-2, "repulsive gain", true);
-    changed |= slider("zeta", &f.zeta, 0.1, 10.0, "attractive gain", true);
+    changed |= slider("ρ₀", &f.rho0, 0.02, 0.3, "region of influence of each obstacle");
+    changed |= slider("η", &f.eta, 1e-6, 1e-2, "repulsive gain", true);
+    changed |= slider("ζ", &f.zeta, 0.1, 10.0, "attractive gain", true);
     changed |= slider("switch d", &f.switch_distance, 0.01, 1.0, "quadratic pull within d of the goal, conic beyond");
     if (robot_kind() == Kind::Polygon) {
       double theta = from_[2];
-      if (slider("start theta", &theta, -kPi, kPi, "the robot's orientation where the descent starts (drag the robot to move it)"))
+      if (slider("start θ", &theta, -kPi, kPi, "the robot's orientation where the descent starts (drag the robot to move it)"))
         set_from(config({from_[0], from_[1], theta}));
     }
     if (changed && f.problem().empty()) {
@@ -432,7 +432,7 @@ class PotentialLesson : public Lesson {
       return;
     }
     const Descent& d = *descent_;
-    ImGui::Text("step %ld  U = %.4g  |tau| = %.3g", d.steps(), d.potential(), d.force());
+    ImGui::Text("step %ld  U = %.4g  |τ| = %.3g", d.steps(), d.potential(), d.force());
     ImGui::Text("distance to the goal %.3f", d.distance_to_goal());
     ImGui::Text("local minima %d  escapes used %d of %d", d.local_minima(), d.escapes_used(), d.params().escapes);
     switch (d.outcome()) {
@@ -445,7 +445,7 @@ class PotentialLesson : public Lesson {
         ImGui::TextColored(ImVec4(0.75f, 0.25f, 0.0f, 1.0f), "stuck in a local minimum");
         ImGui::TextWrapped("The descent makes no progress here, away from the goal: attraction and repulsion "
                            "nearly cancel, so its steps of fixed length go back and forth around a minimum of U "
-                           "(|tau| is small there, not zero), or every step is blocked. Allow escapes: random "
+                           "(|τ| is small there, not zero), or every step is blocked. Allow escapes: random "
                            "walks out of the basin, then descent again.");
         break;
       case DescentOutcome::MaxSteps: ImGui::TextColored(ImVec4(0.75f, 0.25f, 0.0f, 1.0f), "out of steps"); break;
@@ -456,7 +456,7 @@ class PotentialLesson : public Lesson {
     const PotentialReport r = field_->evaluate(shown());
     if (ImGui::BeginTable("##forces", 4, ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_RowBg)) {
       ImGui::TableSetupColumn("point");
-      ImGui::TableSetupColumn("rho");
+      ImGui::TableSetupColumn("ρ");
       ImGui::TableSetupColumn("|F_att|");
       ImGui::TableSetupColumn("|F_rep|");
       ImGui::TableHeadersRow();
@@ -479,11 +479,11 @@ class PotentialLesson : public Lesson {
       return;
     }
     if (robot_kind() == Kind::Polygon)
-      ImGui::Text("tau = J^T F: force (%.3f, %.3f), torque %.4f", r.tau[0], r.tau[1], r.tau[2]);
+      ImGui::Text("τ = J^T F: force (%.3f, %.3f), torque %.4f", r.tau[0], r.tau[1], r.tau[2]);
     else if (robot_kind() == Kind::Arm)
-      ImGui::Text("tau = J^T F: joint torques (%.3f, %.3f)", r.tau[0], r.tau[1]);
+      ImGui::Text("τ = J^T F: joint torques (%.3f, %.3f)", r.tau[0], r.tau[1]);
     else
-      ImGui::Text("tau = F = (%.3f, %.3f)", r.tau[0], r.tau[1]);
+      ImGui::Text("τ = F = (%.3f, %.3f)", r.tau[0], r.tau[1]);
     ImGui::Text("U = %.4g  (attractive %.4g, repulsive %.4g)", r.U, r.U_att, r.U_rep);
   }
 
@@ -619,7 +619,7 @@ class PotentialLesson : public Lesson {
     cspace_view_.begin("##potential-cspace", size, arm ? Vec2(-kPi, -kPi) : scene_.workspace_min,
                        arm ? Vec2(kPi, kPi) : scene_.workspace_max);
     ctx.views["cspace"] = &cspace_view_;
-    cspace_view_.draw_grid(arm ? "theta1" : "x", arm ? "theta2" : "y");
+    cspace_view_.draw_grid(arm ? "θ₁" : "x", arm ? "θ₂" : "y");
     cspace_view_.push_clip();
     draw_heat_map(cspace_view_, map_u_);
     if (arm) draw_arm_cobstacles(cspace_view_, *map_, theme::rgba(96, 96, 104, 170));
@@ -635,8 +635,8 @@ class PotentialLesson : public Lesson {
     cspace_view_.draw_list()->AddCircleFilled(at, 6.0f, world_->is_free(q) ? theme::kRobot : theme::kHit, 16);
     cspace_view_.draw_list()->AddCircle(at, 6.0f, theme::rgba(255, 255, 255), 16, 2.0f);
     cspace_view_.pop_clip();
-    const std::string text = arm ? "U(theta1, theta2) on the torus; grey: C-obstacles"
-                                  : "U(x, y, theta) at theta = " + fmt("%.3f", cspace_key_) + "; grey: a vertex on an obstacle";
+    const std::string text = arm ? "U(θ₁, θ₂) on the torus; grey: C-obstacles"
+                                  : "U(x, y, θ) at θ = " + fmt("%.3f", cspace_key_) + "; grey: a vertex on an obstacle";
     title(cspace_view_, text.c_str());
     if (cspace_view_.hovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) placing_ = true;
     if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) placing_ = false;

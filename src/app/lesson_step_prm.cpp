@@ -68,7 +68,7 @@ class StepPrmLesson : public Lesson {
                        theme::kWarning, ImVec2(4, 8));
     // Above the view's top left corner, clear of the y axis's label.
     view_.draw_label(Vec2(scene_.workspace_min.x(), scene_.workspace_max.y()),
-                     "point robot: workspace = C-space, Q = R^2", theme::kLabel, ImVec2(16, -22));
+                     "point robot: workspace = C-space, Q = R²", theme::kLabel, ImVec2(16, -22));
     editor_.help_window();
   }
 

@@ -66,7 +66,7 @@ class TorusLesson : public Lesson {
   }
 
   void panel(LabContext& ctx) override {
-    ImGui::TextWrapped("Two joint angles fix the arm: its C-space is the torus T^2 = S^1 x S^1, drawn flat as a "
+    ImGui::TextWrapped("Two joint angles fix the arm: its C-space is the torus T² = S¹ × S¹, drawn flat as a "
                        "square whose opposite edges are glued. Drag in the square to pose the arm, or drag the "
                        "arm's links; drag obstacles and watch their C-obstacles change.");
     ImGui::Text("q = (%.3f, %.3f)  %s", q_[0], q_[1], world_->is_free(q_) ? "free" : "in collision");
@@ -98,7 +98,7 @@ class TorusLesson : public Lesson {
     ui::flow(ui::button_width("a loop that shrinks"));
     if (ImGui::Button("a loop that shrinks")) start_exercise(Exercise::Shrink);
     if (exercise_ == Exercise::Around)
-      ImGui::TextWrapped("theta1 makes a full turn: the point leaves the square on the right and comes back on the "
+      ImGui::TextWrapped("θ₁ makes a full turn: the point leaves the square on the right and comes back on the "
                          "left, because the edges are the same place. On the torus this loop goes around the hole: "
                          "no continuous change of it shrinks it to a point. The arm turns all the way round.");
     if (exercise_ == Exercise::Shrink)
@@ -402,7 +402,7 @@ class TorusLesson : public Lesson {
   void cspace(LabContext& ctx, ImVec2 size) {
     cspace_view_.begin("##torus-cspace", size, Vec2(-kPi, -kPi), Vec2(kPi, kPi));
     ctx.views["cspace"] = &cspace_view_;
-    cspace_view_.draw_grid("theta1", "theta2");
+    cspace_view_.draw_grid("θ₁", "θ₂");
     cspace_view_.push_clip();
     if (!replay_pending()) draw_arm_cobstacles(cspace_view_, *map_, kCObstacle);  // else over the faded roadmap
     const Space& space = world_->space();
@@ -502,7 +502,7 @@ class TorusLesson : public Lesson {
     ImDrawList* dl = ImGui::GetWindowDrawList();
     dl->AddCircleFilled(s, torus_view_.facing(p.n) ? 6.0f : 3.0f, world_->is_free(q_) ? theme::kRobot : theme::kHit, 16);
     const ImVec2 corner = ImGui::GetItemRectMin();
-    dl->AddText(ImVec2(corner.x + 6, corner.y + 4), theme::kLabel, "theta1: around the hole, theta2: around the tube");
+    dl->AddText(ImVec2(corner.x + 6, corner.y + 4), theme::kLabel, "θ₁: around the hole, θ₂: around the tube");
     if (!show_roadmap)
       dl->AddText(ImVec2(corner.x + 6, corner.y + 4 + ImGui::GetTextLineHeightWithSpacing()), theme::kWarning,
                   "the roadmap is replayed when you release");

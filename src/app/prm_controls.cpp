@@ -56,7 +56,7 @@ bool prm_controls(PrmParams& p, const Space& space, int max_samples) {
       changed = true;
     }
     if (most < 1.0f) {
-      ImGui::TextDisabled("r <= %.3f at n = %d (the lab's limit)", static_cast<double>(most), p.samples);
+      ImGui::TextDisabled("r ≤ %.3f at n = %d (the lab's limit)", static_cast<double>(most), p.samples);
       if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Pairs within r grow with n^2. The lab checks at most about %.0f pairs per run,\n"
                           "so that a run takes seconds, not minutes and gigabytes.",
