@@ -51,10 +51,10 @@ FailureBound path_tiling_bound(double length, double clearance, int d, double fr
 // P8, derived. Take F = [0,1]^d, so mu(F) = 1 and sigma = mu(B_1) / 2^d. The path argument
 // needs balls of radius r/2 whose neighbours' centres are at most r/2 apart, so that samples
 // in neighbouring balls both lie in the ball of radius r around one centre, which is free (F
-// is convex here, so any straight line in it is free anyway). Tiling the whole cube: a grid of N balls per axis, centred in the cells of
-// width 1/N. Neighbours r/2 apart needs 1/N <= r/2; for the balls to cover every point the
-// cell's half-diagonal must be within a ball, sqrt(d) / (2N) <= r/2, i.e. 1/N <= r/sqrt(d)
-// (the stronger condition once d > 4). So
+// is convex here, so any straight line in it is free anyway). Tiling the whole cube: a grid
+// of N balls per axis, centred in the cells of width 1/N. Neighbours r/2 apart needs
+// 1/N <= r/2; for the balls to cover every point the cell's half-diagonal must be within a
+// ball, sqrt(d) / (2N) <= r/2, i.e. 1/N <= r/sqrt(d) (the stronger condition once d > 4). So
 //   N = ceil(max(2, sqrt(d)) / r),  m = N^d  (ceil(2/r)^d for d <= 4).
 // The "very slight" modification puts m where the path had ceil(L / (r/2)):
 //   m exp(-sigma r^d n)   (interior_bound).

@@ -28,8 +28,8 @@ std::vector<int> widest_path(const CollisionWorld& world, const Roadmap& roadmap
   const int n = static_cast<int>(v.size());
   if (n < 2) return {};
   std::vector<double> eta(roadmap.clearance);
-  for (int i = 0; i < n; ++i)
-    if (std::isnan(eta[static_cast<std::size_t>(i)])) eta[static_cast<std::size_t>(i)] = world.clearance(v[static_cast<std::size_t>(i)]);
+  for (std::size_t i = 0; i < v.size(); ++i)
+    if (std::isnan(eta[i])) eta[i] = world.clearance(v[i]);
   // Each edge's least clearance, from below. On a piece from x to y, the clearance at q(t) is at
   // least eta_x - t lambda and eta_y - (1 - t) lambda (the robot moves at most that far), whose
   // larger is smallest where they meet, (eta_x + eta_y - lambda) / 2, or at an end. An edge
@@ -50,7 +50,8 @@ std::vector<int> widest_path(const CollisionWorld& world, const Roadmap& roadmap
     const double a = eta[static_cast<std::size_t>(e.a)], b = eta[static_cast<std::size_t>(e.b)];
     const double lambda = world.motion_bound(p, q);
     const double shorter = std::min(a, b);
-    const int pieces = shorter > 0 && 2 * lambda > shorter ? static_cast<int>(std::min(16.0, std::ceil(2 * lambda / shorter))) : 1;
+    const int pieces =
+        shorter > 0 && 2 * lambda > shorter ? static_cast<int>(std::min(16.0, std::ceil(2 * lambda / shorter))) : 1;
     double least = std::min(a, b), previous = a;
     const Config delta = space.difference(p, q);
     for (int k = 1; k <= pieces; ++k) {
@@ -63,7 +64,9 @@ std::vector<int> widest_path(const CollisionWorld& world, const Roadmap& roadmap
     width.push_back(least);
   }
   // The bottleneck: the widest edges first until start and goal meet (ties by order added).
-  std::stable_sort(order.begin(), order.end(), [&](int x, int y) { return width[static_cast<std::size_t>(x)] > width[static_cast<std::size_t>(y)]; });
+  std::stable_sort(order.begin(), order.end(), [&](int x, int y) {
+    return width[static_cast<std::size_t>(x)] > width[static_cast<std::size_t>(y)];
+  });
   UnionFind sets(n);
   double bottleneck = -std::numeric_limits<double>::infinity();
   for (int i : order) {
