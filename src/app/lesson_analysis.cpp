@@ -308,7 +308,8 @@ class AnalysisLesson : public Lesson {
     }
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ImGui::TextWrapped("measured: L and r on the widest path (the largest clearance) of a reference roadmap of "
-                       "3000 samples, r = its least clearance in the workspace / the robot's Lipschitz constant; "
+                       "3000 samples, r = its least clearance in the workspace (proven, a lower bound) / the "
+                       "robot's Lipschitz constant; "
                        "μ(F) by Monte Carlo");
     ImGui::PopStyleColor();
 

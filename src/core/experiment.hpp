@@ -31,7 +31,7 @@ struct ExperimentReference {
   int samples = 0;
   std::vector<Config> path;            ///< the path measured: the reference roadmap's widest
   double path_length = 0.0;            ///< L
-  double workspace_clearance = 0.0;    ///< least eta along the path
+  double workspace_clearance = 0.0;    ///< least eta along the path, proven (a lower bound)
   double clearance = 0.0;              ///< r = eta / K, in C-space
   double free_fraction = 0.0;          ///< mu(F) / mu(Q), estimated
   double free_volume = 0.0;            ///< mu(F)
@@ -77,6 +77,14 @@ class Experiment {
   std::size_t next_row_ = 0;
   int next_trial_ = 0;
 };
+
+/// A lower bound on the least clearance eta along the straight edge p -> q (ends' clearances
+/// eta_p, eta_q), from the motion bound lambda: pieces are halved, a clearance computed at each
+/// cut (at most max_evaluations), until the bound is within 1% of the least found.
+double proven_edge_clearance(const CollisionWorld& world, const Config& p, const Config& q, double eta_p,
+                             double eta_q, int max_evaluations);
+/// The same along a path of straight edges.
+double proven_path_clearance(const CollisionWorld& world, const std::vector<Config>& path, int max_evaluations);
 
 /// The roadmap's start-goal path (vertices 0 to 1) whose least clearance is largest, as far as
 /// its vertices' clearances and the edges' motion bounds prove, and the shortest of those;
