@@ -150,7 +150,6 @@ class StepPrmLesson : public Lesson {
     prm_ = std::make_unique<Prm>(*world_, scene_.start, scene_.goal, params_);
     planned_world_.reset();
     planned_scene_ = scene_;
-    planned_json_ = scene_to_json(scene_);
     prm_->run_to(steps);
     labels_at_ = -1;
     logged_through_ = -1;
@@ -164,7 +163,7 @@ class StepPrmLesson : public Lesson {
   // A drag back to where it was pressed gives back the scene the planner ran in, exactly (see
   // SceneEditor::continue_drag): its world again, and nothing to replay.
   void scene_edited() {
-    if (scene_to_json(scene_) == planned_json_) {
+    if (same_scene(scene_, planned_scene_)) {
       if (planned_world_) world_ = std::move(planned_world_);
       return;
     }
@@ -271,7 +270,6 @@ class StepPrmLesson : public Lesson {
   // obstacles the event log names.
   std::unique_ptr<CollisionWorld> world_;
   Scene planned_scene_;
-  nlohmann::json planned_json_;  // scene_to_json(planned_scene_), to tell an edit that changes nothing
   std::unique_ptr<CollisionWorld> planned_world_;
   std::unique_ptr<Prm> prm_;
   std::vector<int> labels_;

@@ -251,7 +251,6 @@ class TorusLesson : public Lesson {
     prm_ = std::make_unique<Prm>(*world_, scene_.start, scene_.goal, params_);
     planned_world_.reset();
     planned_scene_ = scene_;
-    planned_json_ = scene_to_json(scene_);
     prm_->run_to(steps);
     ++version_;
     logged_ = -1;
@@ -273,7 +272,7 @@ class TorusLesson : public Lesson {
   // A drag back to where it was pressed gives back the scene the planner ran in, exactly (see
   // SceneEditor::continue_drag): its world again, and nothing to replay.
   void scene_edited() {
-    if (scene_to_json(scene_) == planned_json_) {
+    if (same_scene(scene_, planned_scene_)) {
       if (planned_world_) {
         world_ = std::move(planned_world_);
         rebuild_map();
@@ -438,7 +437,7 @@ class TorusLesson : public Lesson {
       marker_grab_ = m;
     }
     if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
-      if (drag_marker_ != 0 && scene_to_json(marker_before_) != scene_to_json(scene_)) editor_.record(marker_before_);
+      if (drag_marker_ != 0 && !same_scene(marker_before_, scene_)) editor_.record(marker_before_);
       drag_marker_ = 0;
       posing_ = false;
       return;
@@ -521,7 +520,6 @@ class TorusLesson : public Lesson {
   // planned_scene_ (otherwise equal to scene_) is the scene it ran in, whose obstacles the
   // event log names.
   Scene planned_scene_;
-  nlohmann::json planned_json_;  // scene_to_json(planned_scene_), to tell an edit that changes nothing
   std::unique_ptr<CollisionWorld> planned_world_;
   std::unique_ptr<Prm> prm_;
   RoadmapLayer roadmap_layer_;

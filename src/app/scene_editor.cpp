@@ -89,7 +89,7 @@ void SceneEditor::replace(Scene& scene, const Scene& next) {
 void SceneEditor::end_drag(Scene& scene) {
   // A move or resize is one undo step; a new disk's or wall's preview is dropped.
   if (before_drag_ && drag_ != Drag::NewDisk && drag_ != Drag::NewWall &&
-      scene_to_json(*before_drag_) != scene_to_json(scene))
+      !same_scene(*before_drag_, scene))
     record(*before_drag_);
   drop_drag();
 }

@@ -198,6 +198,8 @@ Scene scene_from_string(const std::string& text) {
   return scene_from_json(j);
 }
 
+bool same_scene(const Scene& a, const Scene& b) { return scene_to_json(a) == scene_to_json(b); }
+
 json scene_to_json(const Scene& s) {
   json obstacles = json::array();
   for (const Obstacle& o : s.obstacles) obstacles.push_back(obstacle_to_json(o));

@@ -61,6 +61,9 @@ Scene scene_from_json(const nlohmann::json& j);
 Scene scene_from_string(const std::string& text);
 /// The scene as schema-version-1 JSON; scene_from_json(scene_to_json(s)) reproduces s exactly.
 nlohmann::json scene_to_json(const Scene& s);
+/// Whether two scenes are the same in every field: their JSON is equal (it holds every field
+/// exactly; numbers compare by value).
+bool same_scene(const Scene& a, const Scene& b);
 
 /// Checks an obstacle on its own (used by the parser and by editors before they commit a
 /// change); returns what is wrong, or "" if it is valid. `path` prefixes the message.

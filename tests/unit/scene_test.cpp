@@ -2,6 +2,8 @@
 // limits, and the exact JSON round trip.
 #include <doctest/doctest.h>
 
+#include <cmath>
+
 #include <nlohmann/json.hpp>
 
 #include "core/angles.hpp"
@@ -143,4 +145,19 @@ TEST_CASE("obstacle_problem checks one obstacle for editors") {
   CHECK(csl::obstacle_problem(csl::Disk{{0, 0}, -1}, "new") == "new.radius: must be >= 0");
   CHECK(csl::obstacle_problem(csl::PolygonObstacle{{{0, 0}, {1, 1}, {1, 0}, {0, 1}}}, "new") ==
         "new.vertices: the polygon's edges cross (it is self-intersecting)");
+}
+
+TEST_CASE("same_scene: every field counts") {
+  csl::Scene a = csl::scene_from_string(
+      R"({"version": 1, "obstacles": [{"type": "disk", "center": [0.5, 0.5], "radius": 0.1}]})");
+  csl::Scene b = a;
+  CHECK(csl::same_scene(a, b));
+  std::get<csl::Disk>(b.obstacles[0]).center.x() = std::nextafter(0.5, 1.0);
+  CHECK_FALSE(csl::same_scene(a, b));
+  b = a;
+  b.goal[1] = 0.9;
+  CHECK_FALSE(csl::same_scene(a, b));
+  b = a;
+  b.name = "renamed";
+  CHECK_FALSE(csl::same_scene(a, b));
 }
