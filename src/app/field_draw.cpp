@@ -34,11 +34,14 @@ ImU32 HeatScale::color(double value) const {
   return theme::rgba(mix(0), mix(1), mix(2));
 }
 
-HeatMap make_heat_map(ScalarGrid grid, int level_count) {
+HeatMap make_heat_map(ScalarGrid grid, int level_count, bool covered) {
   HeatMap m;
   m.scale = HeatScale::of(grid);
   m.colors.resize(grid.values.size());
-  for (std::size_t k = 0; k < m.colors.size(); ++k) m.colors[k] = m.scale.color(grid.values[k]);
+  for (std::size_t k = 0; k < m.colors.size(); ++k) {
+    const double v = grid.values[k];
+    m.colors[k] = m.scale.color(covered && !std::isfinite(v) ? m.scale.hi : v);
+  }
   for (double l : contour_levels(grid, level_count)) {
     const auto segs = level_set(grid, l);
     m.levels.insert(m.levels.end(), segs.begin(), segs.end());

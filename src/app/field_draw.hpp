@@ -29,7 +29,11 @@ struct HeatMap {
   std::vector<LevelSegment> levels;    ///< `level_count` level lines, all segments together
   int level_count = 0;
 };
-HeatMap make_heat_map(ScalarGrid grid, int level_count);
+/// `covered`: the caller draws the obstacles exactly over the map, so an infinite node (on an
+/// obstacle) takes the scale's darkest colour, the highest potential, rather than the grey:
+/// cells across an obstacle's edge then shade into dark, and the exact edge drawn over them is
+/// the only one seen (grey nodes would show the grid's blocks around it).
+HeatMap make_heat_map(ScalarGrid grid, int level_count, bool covered = false);
 
 /// The grid as smoothly shaded cells (corner colours interpolated).
 void draw_heat_map(const WorkspaceView& view, const HeatMap& map);

@@ -423,7 +423,10 @@ class PotentialLesson : public Lesson {
                              const Config q = kind == Kind::Polygon ? config({p.x(), p.y(), key}) : config({p.x(), p.y()});
                              return field_->potential(q);
                            }),
-                           kLevels);
+                           // The arm's square gets its exact C-obstacles drawn over, opaque (the
+                           // workspace's obstacles are translucent over grey, the polygon's slice
+                           // has no exact overlay).
+                           kLevels, /*covered=*/kind == Kind::Arm);
   }
 
   void status_text() {
@@ -622,8 +625,9 @@ class PotentialLesson : public Lesson {
     cspace_view_.draw_grid(arm ? "θ₁" : "x", arm ? "θ₂" : "y");
     cspace_view_.push_clip();
     draw_heat_map(cspace_view_, map_u_);
-    if (arm) draw_arm_cobstacles(cspace_view_, *map_, theme::rgba(96, 96, 104, 170));
     draw_level_set(cspace_view_, map_u_.levels, kIso, 1.0f);
+    // Over the level lines: the exact edges are the ones seen.
+    if (arm) draw_arm_cobstacles(cspace_view_, *map_, theme::rgba(96, 96, 104));
     const Space& space = world_->space();
     if (descent_) {
       const auto& t = descent_->trajectory();

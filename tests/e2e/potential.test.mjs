@@ -4,6 +4,9 @@
 // its escape; the arm's field on the torus.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
 import { withPage, worldToPage, drag, click, waitFrames, screenshot, inspectPng, api, cli,
          tempJson } from './lib/harness.mjs';
 
@@ -13,6 +16,57 @@ const close = (a, b, tol = 1e-12) => Math.abs(a - b) <= tol * Math.max(1, Math.a
 function cliPotential(scene, q, field) {
   return cli('potential', tempJson(scene), '--at', q.join(','), '--rho0', String(field.rho0), '--eta', String(field.eta),
              '--zeta', String(field.zeta), '--switch', String(field.switch));
+}
+
+// The heat map's colour ramp (field_draw.cpp), and how far an RGB colour is from it.
+const RAMP = [[255, 255, 229], [254, 227, 145], [254, 153, 41], [217, 95, 14], [140, 45, 4]];
+function offRamp(c) {
+  let best = Infinity;
+  for (let k = 0; k + 1 < RAMP.length; ++k)
+    for (let t = 0; t <= 1; t += 1 / 64)
+      best = Math.min(best, Math.hypot(...[0, 1, 2].map((i) => c[i] - (RAMP[k][i] + t * (RAMP[k + 1][i] - RAMP[k][i])))));
+  return best;
+}
+
+// The arm's C-obstacles on the torus square are the exact map's (`cspacelab cspace`): deep
+// inside one the screen is the obstacle grey, and a free point 2-3 map pixels outside shows
+// the heat map's own colour, not a blend with the grey of the 96 x 96 grid's nodes on the
+// obstacle (which drew the obstacles' edges as the grid's blocks).
+async function armEdgesExact(page, browser, scene, png) {
+  const R = 384;
+  const file = path.join(fs.mkdtempSync(path.join(os.tmpdir(), 'csl-e2e-')), 'map.pgm');
+  cli('cspace', tempJson(scene), '--out', file, '--resolution', String(R));
+  const bytes = fs.readFileSync(file);
+  const pixels = bytes.subarray(bytes.length - R * R);
+  const blocked = (i, j) => pixels[((j + R) % R) * R + ((i + R) % R)] === 0;
+  const inside = [], outside = [];
+  for (let j = 0; j < R; ++j)
+    for (let i = 0; i < R; ++i) {
+      let near = Infinity, far = 0;  // nearest blocked and nearest free pixel within 4
+      for (let dj = -4; dj <= 4; ++dj)
+        for (let di = -4; di <= 4; ++di) {
+          const d = Math.hypot(di, dj);
+          if (d > 4) continue;
+          if (blocked(i + di, j + dj)) near = Math.min(near, d);
+          else far = far || d;
+        }
+      const at = [-Math.PI + (i + 0.5) * 2 * Math.PI / R, -Math.PI + (j + 0.5) * 2 * Math.PI / R];
+      if (!blocked(i, j) && near >= 2 && near <= 3) outside.push(at);
+      if (blocked(i, j) && far === 0) inside.push(at);
+    }
+  assert.ok(outside.length > 200 && inside.length > 200, `${outside.length} edge and ${inside.length} inner probes`);
+  const pick = (list) => list.filter((_, k) => k % Math.ceil(list.length / 150) === 0);
+  const probes = [...pick(outside), ...pick(inside)];
+  const dpr = await page.evaluate(() => window.devicePixelRatio);
+  const onPage = await worldToPage(page, probes, 'cspace');
+  const { at } = await inspectPng(browser, png, onPage.map((p) => [p.x * dpr, p.y * dpr]));
+  const n = pick(outside).length;
+  const heat = at.slice(0, n).filter((c) => offRamp(c) < 32).length;
+  const grey = at.slice(n).filter((c) => Math.abs(c[0] - 96) + Math.abs(c[1] - 96) + Math.abs(c[2] - 104) <= 6).length;
+  // A few probes lie under a level line, the trajectory or the marker. (The grid's grey put
+  // 14 of 150 edge probes 32-70 off the ramp, and 80 of 150 inner ones off the grey.)
+  assert.ok(heat >= 0.96 * n, `${heat} of ${n} free probes by an edge in the heat map's colours`);
+  assert.ok(grey >= 0.9 * (at.length - n), `${grey} of ${at.length - n} inner probes in the obstacle grey`);
 }
 
 test('potential fields: forces, dragging, heat map, descent, local minimum and escape, the arm',
@@ -135,7 +189,8 @@ test('potential fields: forces, dragging, heat map, descent, local minimum and e
   const armDesc = cli('descend', tempJson(bundled['arm-2link']), '--from', s.from.join(','));
   assert.equal(armState.descent.outcome, armDesc.outcome);
   assert.deepEqual(armState.descent.trajectory.at(-1), armDesc.final);
-  await screenshot(page, 'potential-arm.png');
+  const armShot = await screenshot(page, 'potential-arm.png');
+  await armEdgesExact(page, browser, bundled['arm-2link'], armShot.png);
   assert.ok(s.heat_map.levels > 0, 'level lines on the torus');
 
   // Undo goes back to the cup: another robot, so the lesson starts over on it (nothing of the
