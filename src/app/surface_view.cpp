@@ -39,38 +39,66 @@ ImVec2 SurfaceView::project(const Vec3& p, double* depth) const {
 
 bool SurfaceView::facing(const Vec3& n) const { return rotate(n).y() < 0.0; }
 
+SurfaceMesh::SurfaceMesh(const std::function<SurfacePoint(double, double)>& f, const std::vector<SurfacePatch>& patches) {
+  faces.reserve(patches.size());
+  for (const SurfacePatch& patch : patches) {
+    Face face;
+    const double us[4] = {patch.u0, patch.u1, patch.u1, patch.u0};
+    const double vs[4] = {patch.va0, patch.va1, patch.vb1, patch.vb0};
+    for (int k = 0; k < 4; ++k) face.corner[k] = f(us[k], vs[k]).p;
+    face.normal = f(0.5 * (patch.u0 + patch.u1), 0.25 * (vs[0] + vs[1] + vs[2] + vs[3])).n;
+    face.color = patch.color;
+    faces.push_back(face);
+  }
+}
+
 void SurfaceView::draw_surface(const std::function<SurfacePoint(double, double)>& f, int nu, int nv,
                                const std::function<ImU32(double, double)>& color) const {
+  std::vector<SurfacePatch> patches;
+  patches.reserve(static_cast<std::size_t>(nu * nv));
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
+      const double u0 = double(i) / nu, u1 = double(i + 1) / nu, v0 = double(j) / nv, v1 = double(j + 1) / nv;
+      patches.push_back({u0, u1, v0, v0, v1, v1, color(0.5 * (u0 + u1), 0.5 * (v0 + v1))});
+    }
+  draw_mesh(SurfaceMesh(f, patches));
+}
+
+void SurfaceView::draw_mesh(const SurfaceMesh& mesh) const {
   struct Quad {
     ImVec2 corner[4];
     double depth;
     ImU32 fill;
   };
   std::vector<Quad> quads;
-  quads.reserve(static_cast<std::size_t>(nu * nv));
+  quads.reserve(mesh.faces.size());
   const Vec3 light = Vec3(-0.4, -0.8, 0.5).normalized();  // in view coordinates
-  for (int i = 0; i < nu; ++i)
-    for (int j = 0; j < nv; ++j) {
-      Quad q;
-      const double u0 = double(i) / nu, u1 = double(i + 1) / nu, v0 = double(j) / nv, v1 = double(j + 1) / nv;
-      const double us[4] = {u0, u1, u1, u0}, vs[4] = {v0, v0, v1, v1};
-      q.depth = 0;
-      for (int k = 0; k < 4; ++k) {
-        double d;
-        q.corner[k] = project(f(us[k], vs[k]).p, &d);
-        q.depth += d;
-      }
-      const SurfacePoint mid = f(0.5 * (u0 + u1), 0.5 * (v0 + v1));
-      const Vec3 n = rotate(mid.n);
-      // Lambert shading; faces turned away (seen through the hole) darker.
-      const double lit = 0.45 + 0.55 * std::fabs(n.dot(light));
-      const ImU32 c = color(0.5 * (u0 + u1), 0.5 * (v0 + v1));
-      const auto channel = [&](int shift) {
-        return static_cast<unsigned>(std::clamp(lit * ((c >> shift) & 0xFF), 0.0, 255.0));
-      };
-      q.fill = theme::rgba(channel(0), channel(8), channel(16), (c >> 24) & 0xFF);
-      quads.push_back(q);
+  for (const SurfaceMesh::Face& face : mesh.faces) {
+    Quad q;
+    q.depth = 0;
+    for (int k = 0; k < 4; ++k) {
+      double d;
+      q.corner[k] = project(face.corner[k], &d);
+      q.depth += d;
     }
+    // Half a pixel larger all round: neighbours need not share corners (a strip cut at its own
+    // v values meets the next at T-junctions), and rasterised edge to edge they leave pinholes.
+    const ImVec2 centre(0.25f * (q.corner[0].x + q.corner[1].x + q.corner[2].x + q.corner[3].x),
+                        0.25f * (q.corner[0].y + q.corner[1].y + q.corner[2].y + q.corner[3].y));
+    for (ImVec2& corner : q.corner) {
+      const float dx = corner.x - centre.x, dy = corner.y - centre.y, len = std::sqrt(dx * dx + dy * dy);
+      if (len > 0.0f) corner = ImVec2(corner.x + 0.5f * dx / len, corner.y + 0.5f * dy / len);
+    }
+    const Vec3 n = rotate(face.normal);
+    // Lambert shading; faces turned away (seen through the hole) darker.
+    const double lit = 0.45 + 0.55 * std::fabs(n.dot(light));
+    const ImU32 c = face.color;
+    const auto channel = [&](int shift) {
+      return static_cast<unsigned>(std::clamp(lit * ((c >> shift) & 0xFF), 0.0, 255.0));
+    };
+    q.fill = theme::rgba(channel(0), channel(8), channel(16), (c >> 24) & 0xFF);
+    quads.push_back(q);
+  }
   std::sort(quads.begin(), quads.end(), [](const Quad& a, const Quad& b) { return a.depth < b.depth; });
   ImDrawList* dl = ImGui::GetWindowDrawList();
   // No anti-aliasing between quads (it would leave seams); the mesh is fine enough.

@@ -19,6 +19,27 @@ struct SurfacePoint {
   Vec3 n;
 };
 
+/// A quadrilateral piece of a surface in its (u, v) parameters, with its colour: corners
+/// (u0, va0), (u1, va1), (u1, vb1), (u0, vb0), so its two v edges may slant (a boundary that
+/// runs across the piece).
+struct SurfacePatch {
+  double u0, u1, va0, va1, vb0, vb1;
+  ImU32 color;
+};
+
+/// Patches placed on a surface once (corners and the normal at the centre, in 3-D), so that a
+/// frame only turns and projects them: a surface cut at a C-obstacle's edges has thousands.
+struct SurfaceMesh {
+  SurfaceMesh() = default;
+  SurfaceMesh(const std::function<SurfacePoint(double u, double v)>& f, const std::vector<SurfacePatch>& patches);
+  struct Face {
+    Vec3 corner[4];
+    Vec3 normal;
+    ImU32 color;
+  };
+  std::vector<Face> faces;
+};
+
 class SurfaceView {
  public:
   /// Lays out the canvas at the cursor (size in logical pixels); a left drag turns the view.
@@ -37,6 +58,8 @@ class SurfaceView {
   /// color(u, v) (at the quad's centre), far ones first.
   void draw_surface(const std::function<SurfacePoint(double u, double v)>& f, int nu, int nv,
                     const std::function<ImU32(double u, double v)>& color) const;
+  /// A mesh's faces, shaded, far ones first.
+  void draw_mesh(const SurfaceMesh& mesh) const;
   /// A curve on a surface: solid where the surface faces the viewer, faint behind.
   void draw_curve(const std::vector<SurfacePoint>& points, ImU32 color, float thickness) const;
   bool hovered() const { return hovered_; }
