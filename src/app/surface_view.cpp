@@ -52,6 +52,63 @@ SurfaceMesh::SurfaceMesh(const std::function<SurfacePoint(double, double)>& f, c
   }
 }
 
+namespace {
+
+// The quad's edges moved half a pixel outwards (its corners along the mitres): neighbours need
+// not share corners (a strip cut at its own v values meets the next at T-junctions), and
+// rasterised edge to edge they leave pinholes. Every edge moves, however thin the quad (moving
+// corners away from the centre hardly moves a thin quad's long edges). A corner where an edge
+// has no length (a tip) takes its neighbours' edges; mitres are capped at 2 px.
+void grow_half_pixel(ImVec2 (&corner)[4]) {
+  int index[4], n = 0;
+  for (int k = 0; k < 4; ++k) {
+    const ImVec2& p = corner[k];
+    if (n > 0) {
+      const ImVec2& last = corner[index[n - 1]];
+      if (std::fabs(p.x - last.x) + std::fabs(p.y - last.y) < 1e-3f) continue;
+    }
+    index[n++] = k;
+  }
+  // The last one kept may duplicate the first: the corners after it then follow the first.
+  const bool wraps = n > 1 && std::fabs(corner[index[0]].x - corner[index[n - 1]].x) +
+                                      std::fabs(corner[index[0]].y - corner[index[n - 1]].y) < 1e-3f;
+  const int last_kept = index[n - 1];
+  if (wraps) --n;
+  if (n < 3) return;
+  float area = 0.0f;  // twice the signed area: which side is out
+  for (int k = 0; k < n; ++k) {
+    const ImVec2 &a = corner[index[k]], &b = corner[index[(k + 1) % n]];
+    area += a.x * b.y - b.x * a.y;
+  }
+  if (area == 0.0f) return;
+  const float side = area > 0.0f ? 1.0f : -1.0f;
+  ImVec2 normal[4];  // outward unit normal of the edge from corner k to corner k + 1
+  for (int k = 0; k < n; ++k) {
+    const ImVec2 &a = corner[index[k]], &b = corner[index[(k + 1) % n]];
+    const float dx = b.x - a.x, dy = b.y - a.y, len = std::sqrt(dx * dx + dy * dy);
+    normal[k] = ImVec2(side * dy / len, -side * dx / len);
+  }
+  ImVec2 moved[4];
+  for (int k = 0; k < n; ++k) {
+    const ImVec2 &m = normal[(k + n - 1) % n], &l = normal[k];
+    const float dot = m.x * l.x + m.y * l.y;
+    // The mitre: both edges move 0.5; (m + l) / (1 + m.l) has length 1/cos(half the turn).
+    float sx = m.x + l.x, sy = m.y + l.y, scale = 0.5f / std::max(1.0f + dot, 1e-3f);
+    const float length = std::sqrt(sx * sx + sy * sy) * scale;
+    if (length > 2.0f) scale *= 2.0f / length;
+    moved[k] = ImVec2(corner[index[k]].x + sx * scale, corner[index[k]].y + sy * scale);
+  }
+  // Corners dropped as duplicates follow the corner they duplicate.
+  ImVec2 out[4];
+  for (int k = 0, j = 0; k < 4; ++k) {
+    while (j + 1 < n && index[j + 1] <= k) ++j;
+    out[k] = wraps && k >= last_kept ? moved[0] : moved[j];
+  }
+  for (int k = 0; k < 4; ++k) corner[k] = out[k];
+}
+
+}  // namespace
+
 void SurfaceView::draw_surface(const std::function<SurfacePoint(double, double)>& f, int nu, int nv,
                                const std::function<ImU32(double, double)>& color) const {
   std::vector<SurfacePatch> patches;
@@ -81,14 +138,7 @@ void SurfaceView::draw_mesh(const SurfaceMesh& mesh) const {
       q.corner[k] = project(face.corner[k], &d);
       q.depth += d;
     }
-    // Half a pixel larger all round: neighbours need not share corners (a strip cut at its own
-    // v values meets the next at T-junctions), and rasterised edge to edge they leave pinholes.
-    const ImVec2 centre(0.25f * (q.corner[0].x + q.corner[1].x + q.corner[2].x + q.corner[3].x),
-                        0.25f * (q.corner[0].y + q.corner[1].y + q.corner[2].y + q.corner[3].y));
-    for (ImVec2& corner : q.corner) {
-      const float dx = corner.x - centre.x, dy = corner.y - centre.y, len = std::sqrt(dx * dx + dy * dy);
-      if (len > 0.0f) corner = ImVec2(corner.x + 0.5f * dx / len, corner.y + 0.5f * dy / len);
-    }
+    grow_half_pixel(q.corner);
     const Vec3 n = rotate(face.normal);
     // Lambert shading; faces turned away (seen through the hole) darker.
     const double lit = 0.45 + 0.55 * std::fabs(n.dot(light));

@@ -30,7 +30,7 @@ std::vector<double> cuts(const ArmCSpaceMap& map, double u, std::vector<AngleInt
 bool paired(const std::vector<double>& a, const std::vector<double>& b) {
   if (a.size() != b.size()) return false;
   for (std::size_t k = 0; k < a.size(); ++k)
-    if (std::fabs(a[k] - b[k]) > kMaxShift) return false;
+    if (!(std::fabs(a[k] - b[k]) <= kMaxShift)) return false;  // NaN too
   return true;
 }
 
@@ -60,12 +60,14 @@ bool pair_with_tips(const std::vector<double>& a, const std::vector<double>& b, 
   while (i < A.size() || j < B.size()) {
     if (i < A.size() && j < B.size() && overlap(A[i], B[j])) {
       if ((i + 1 < A.size() && overlap(A[i + 1], B[j])) || (j + 1 < B.size() && overlap(A[i], B[j + 1]))) return false;
-      if (std::fabs(A[i].lo - B[j].lo) > kMaxShift || std::fabs(A[i].hi - B[j].hi) > kMaxShift) return false;
+      if (!(std::fabs(A[i].lo - B[j].lo) <= kMaxShift && std::fabs(A[i].hi - B[j].hi) <= kMaxShift)) return false;
       push(A[i++], B[j++]);
     } else if (j == B.size() || (i < A.size() && A[i].hi < B[j].lo)) {  // A[i] ends inside the strip
+      if (!(A[i].hi - A[i].lo <= 2.0 * kMaxShift)) return false;  // its ends would move too far
       const double m = 0.5 * (A[i].lo + A[i].hi);
       push(A[i++], {m, m});
     } else {  // B[j] begins inside it
+      if (!(B[j].hi - B[j].lo <= 2.0 * kMaxShift)) return false;
       const double m = 0.5 * (B[j].lo + B[j].hi);
       push({m, m}, B[j++]);
     }
@@ -86,6 +88,7 @@ struct Builder {
     for (std::size_t s = 0; s + 1 < a.size(); ++s) {
       const double wa = a[s + 1] - a[s], wb = b[s + 1] - b[s];
       if (!(wa > 0.0) && !(wb > 0.0)) continue;  // empty at both edges (a closed interval's point)
+      if (!std::isfinite(wa + wb)) continue;      // no NaN into the count of pieces
       const int pieces = std::max(1, static_cast<int>(std::ceil(std::max(wa, wb) * rows)));
       for (int p = 0; p < pieces; ++p) {
         const double f0 = static_cast<double>(p) / pieces, f1 = static_cast<double>(p + 1) / pieces;

@@ -20,11 +20,12 @@ struct CSpaceQuad {
 /// blocked theta2 intervals at its two edges, joined by straight lines where both edges cut
 /// the same intervals; an interval at one edge that meets none at the other ends inside the
 /// strip in a point at its middle (a tip). Where an interval meets two (pieces that merge or
-/// split) or an end moves more than 1/24 of a turn, the strip is halved, down to an eighth,
-/// and an eighth that still differs takes its centre's intervals. So a quad is wrong only
-/// within a strip's width of an edge. Pieces are at most 1/rows of a turn long in v (rows >= 1),
-/// so that a curved surface stays round. The quads tile the square: each strip's pieces run
-/// from v = 0 to v = 1 at both of its edges.
+/// split) or an end moves more than 1/24 of a turn (a tip's ends included: where link 1
+/// starts to collide, a whole column's interval must not narrow to a point), the strip is
+/// halved, down to an eighth, and an eighth that still differs takes its centre's intervals.
+/// So a quad is wrong only within a strip's width of an edge. Pieces are at most 1/rows of a
+/// turn long in v (rows >= 1), so that a curved surface stays round. The quads tile the
+/// square: each strip's pieces run from v = 0 to v = 1 at both of its edges.
 std::vector<CSpaceQuad> cspace_quads(const ArmCSpaceMap& map, int columns, int rows);
 
 }  // namespace csl

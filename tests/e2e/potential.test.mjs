@@ -37,22 +37,23 @@ async function armEdgesExact(page, browser, scene, png) {
   const file = path.join(fs.mkdtempSync(path.join(os.tmpdir(), 'csl-e2e-')), 'map.pgm');
   cli('cspace', tempJson(scene), '--out', file, '--resolution', String(R));
   const bytes = fs.readFileSync(file);
+  fs.rmSync(path.dirname(file), { recursive: true });
   const pixels = bytes.subarray(bytes.length - R * R);
   const blocked = (i, j) => pixels[((j + R) % R) * R + ((i + R) % R)] === 0;
   const inside = [], outside = [];
   for (let j = 0; j < R; ++j)
     for (let i = 0; i < R; ++i) {
-      let near = Infinity, far = 0;  // nearest blocked and nearest free pixel within 4
+      let near = Infinity, free = false;  // the nearest blocked pixel within 4; any free one
       for (let dj = -4; dj <= 4; ++dj)
         for (let di = -4; di <= 4; ++di) {
           const d = Math.hypot(di, dj);
           if (d > 4) continue;
           if (blocked(i + di, j + dj)) near = Math.min(near, d);
-          else far = far || d;
+          else free = true;
         }
       const at = [-Math.PI + (i + 0.5) * 2 * Math.PI / R, -Math.PI + (j + 0.5) * 2 * Math.PI / R];
       if (!blocked(i, j) && near >= 2 && near <= 3) outside.push(at);
-      if (blocked(i, j) && far === 0) inside.push(at);
+      if (blocked(i, j) && !free) inside.push(at);
     }
   assert.ok(outside.length > 200 && inside.length > 200, `${outside.length} edge and ${inside.length} inner probes`);
   const pick = (list) => list.filter((_, k) => k % Math.ceil(list.length / 150) === 0);

@@ -96,7 +96,7 @@ TEST_CASE("cspace_quads tile the torus square: strips side by side, pieces from 
         u = q.u1;
       }
     }
-    CHECK(strips >= kColumns);  // more where a strip was halved
+    CHECK(strips >= kColumns);  // one per column, more where a strip was halved
     CHECK(u == 1.0);
     CHECK(va == 1.0);
     CHECK(vb == 1.0);
@@ -131,6 +131,32 @@ TEST_CASE("cspace_quads agree with the exact map but within a column of an edge,
     CHECK(quad_wrong * 4 < cell_wrong);
     MESSAGE("seed " << seed << ": quads wrong at " << quad_wrong << " points, cells at " << cell_wrong << " of " << n * n);
   }
+}
+
+TEST_CASE("cspace_quads: where link 1 starts to collide the column's edge stays upright") {
+  // A disk within l1 - l2 of the base: link 1 is blocked for theta1 in about +-0.41, and just
+  // outside that link 2 cannot reach the disk, so a whole blocked column meets an empty one.
+  // A tip would draw that straight edge as a wedge the torus's height; halving keeps it within
+  // an eighth of a column.
+  const csl::ArmRobot arm{{0.5, 0.5}, 0.3, 0.2};
+  const std::vector<csl::Obstacle> obstacles{csl::Disk{{0.55, 0.5}, 0.02}};
+  const csl::ArmCSpaceMap map(arm, obstacles);
+  REQUIRE(!map.link1_blocked().empty());
+  const std::vector<CSpaceQuad> quads = csl::cspace_quads(map, kColumns, kRows);
+  const double column = kTwoPi / kColumns;
+  const int n = 400;
+  long wrong = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const double u = (i + 0.5) / n, v = (j + 0.5) / n;
+      const double t1 = -kPi + kTwoPi * u, t2 = -kPi + kTwoPi * v;
+      const CSpaceQuad* q = find(quads, u, v);
+      REQUIRE(q != nullptr);
+      if (q->blocked == map.blocked(t1, t2)) continue;
+      ++wrong;
+      CHECK(near_edge(map, t1, t2, column / 8));
+    }
+  MESSAGE("wrong at " << wrong << " of " << n * n << " points");
 }
 
 TEST_CASE("cspace_quads: bad sizes are refused") {
