@@ -430,9 +430,9 @@ class AnalysisLesson : public Lesson {
     }
     ImGui::PopItemWidth();
     ImGui::Text("(x1, y1) = (%.3f, %.3f)", p9_x_, p9_y_);
-    ImGui::TextColored(ImVec4(0.0f, 0.3f, 0.55f, 1.0f), "exact:        p = %.5f", visibility_probability(p9_x_, p9_y_, p9_gap_));
-    ImGui::Text("Monte Carlo: p = %.5f  [%.5f, %.5f]", mc_.estimate, mc_.low, mc_.high);
     const double exact = visibility_probability(p9_x_, p9_y_, p9_gap_);
+    ImGui::TextColored(ImVec4(0.0f, 0.3f, 0.55f, 1.0f), "exact:        p = %.5f", exact);
+    ImGui::Text("Monte Carlo: p = %.5f  [%.5f, %.5f]", mc_.estimate, mc_.low, mc_.high);
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ImGui::TextWrapped("from %lld samples, 95%% Wilson interval: it %s", mc_.trials,
                        exact >= mc_.low && exact <= mc_.high ? "holds the exact value"

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <deque>
 #include <memory>
+#include <optional>
 
 #include "app/bundled_scenes.hpp"
 #include "app/drag_replay.hpp"
@@ -265,12 +266,7 @@ class TorusLesson : public Lesson {
     map_ = std::make_unique<ArmCSpaceMap>(std::get<ArmRobot>(scene_.robot), scene_.obstacles);
     std::vector<std::uint8_t> pixels;
     free_fraction_ = map_->rasterize(128, pixels);
-    // The 3-D torus: quads whose edges are the C-obstacles' (a grid's cells drew them as blocks).
-    std::vector<SurfacePatch> patches;
-    for (const CSpaceQuad& q : cspace_quads(*map_, 96, 40))
-      patches.push_back({q.u0, q.u1, q.va0, q.va1, q.vb0, q.vb1,
-                         q.blocked ? theme::rgba(110, 110, 120) : theme::rgba(225, 228, 235)});
-    torus_mesh_ = SurfaceMesh([](double u, double v) { return torus_point(u, v); }, patches);
+    torus_mesh_.reset();  // built when the 3-D view next draws (a drag in the square view needs none)
   }
 
   // The scene changed (the editor): replay, unless a drag goes on and the replay is too long for
@@ -478,7 +474,15 @@ class TorusLesson : public Lesson {
   // --- the torus in 3-D: C-obstacles on its surface, the roadmap and path on it, the arm's point.
   void torus(ImVec2 size) {
     torus_view_.begin("##torus-3d", size, 1.5);
-    torus_view_.draw_mesh(torus_mesh_);
+    if (!torus_mesh_) {
+      // Quads whose edges are the C-obstacles' (a grid's cells drew them as blocks).
+      std::vector<SurfacePatch> patches;
+      for (const CSpaceQuad& q : cspace_quads(*map_, 96, 40))
+        patches.push_back({q.u0, q.u1, q.va0, q.va1, q.vb0, q.vb1,
+                           q.blocked ? theme::rgba(110, 110, 120) : theme::rgba(225, 228, 235)});
+      torus_mesh_.emplace([](double u, double v) { return torus_point(u, v); }, patches);
+    }
+    torus_view_.draw_mesh(*torus_mesh_);
     const auto on_torus = [](const Config& q) { return torus_point((q[0] + kPi) / kTwoPi, (q[1] + kPi) / kTwoPi); };
     const Space& space = world_->space();
     const auto curve = [&](const Config& a, const Config& b, ImU32 c, float t) {
@@ -517,7 +521,7 @@ class TorusLesson : public Lesson {
   SurfaceView torus_view_;
   std::unique_ptr<CollisionWorld> world_;
   std::unique_ptr<ArmCSpaceMap> map_;
-  SurfaceMesh torus_mesh_;  // the 3-D torus with map_'s C-obstacles
+  std::optional<SurfaceMesh> torus_mesh_;  // the 3-D torus with map_'s C-obstacles, once drawn
   double free_fraction_ = 0;
   PrmParams params_;
   // prm_ points into world_, except while a replay waits for the end of a drag: then into

@@ -14,20 +14,6 @@ namespace {
 constexpr int kProofPieces = 4096;
 }  // namespace
 
-double path_clearance(const CollisionWorld& world, const std::vector<Config>& path, double spacing) {
-  double least = std::numeric_limits<double>::infinity();
-  if (path.empty()) return least;
-  least = world.clearance(path.front());
-  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
-    const Config delta = world.space().difference(path[i], path[i + 1]);
-    const double length = world.space().distance(path[i], path[i + 1]);
-    const int pieces = std::max(1, static_cast<int>(std::ceil(length / spacing)));
-    for (int k = 1; k <= pieces; ++k)
-      least = std::fmin(least, world.clearance(world.space().along(path[i], delta, double(k) / pieces)));
-  }
-  return least;
-}
-
 double proven_edge_clearance(const CollisionWorld& world, const Config& p, const Config& q, double eta_p,
                              double eta_q, int max_evaluations) {
   // On a piece from x to y the clearance at q(t) is at least eta_x - t lambda and

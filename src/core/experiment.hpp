@@ -91,9 +91,6 @@ double proven_path_clearance(const CollisionWorld& world, const std::vector<Conf
 /// empty if start and goal are not connected. (Straight-line edges.)
 std::vector<int> widest_path(const CollisionWorld& world, const Roadmap& roadmap);
 
-/// The least clearance eta along a path of configurations, sampled at most `spacing` apart.
-double path_clearance(const CollisionWorld& world, const std::vector<Config>& path, double spacing);
-
 /// Monte Carlo estimate of the free fraction of the C-space.
 double free_fraction(const CollisionWorld& world, long samples, Rng& rng);
 
