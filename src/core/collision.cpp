@@ -113,10 +113,22 @@ CollisionWorld::Nearest CollisionWorld::nearest(const Config& q) const {
     // Ties go to the lower scene index, whatever order the loops visit obstacles in.
     if (d < best.clearance || (d == best.clearance && index < best.obstacle)) best = {d, index};
   };
-  for (const DiskData& d : disks_) {
-    const double d2 = is_polygon_ ? box_gap2(robot_box_, d.box) : skeleton_squared_distance(Vec2(d.x, d.y));
-    if (cannot_beat(d2, is_polygon_ ? 0.0 : d.r, best.clearance)) continue;
-    consider(disk_clearance(d), d.index);
+  if (robot_.index() == 0) {
+    // The point robot (every roadmap vertex's clearance): disk_clearance() written out, the
+    // same arithmetic without a call per disk.
+    const double x = point_.x(), y = point_.y();
+    for (const DiskData& d : disks_) {
+      const double dx = x - d.x, dy = y - d.y;
+      const double d2 = dx * dx + dy * dy;
+      if (cannot_beat(d2, d.r, best.clearance)) continue;
+      consider(std::sqrt(d2) - d.r, d.index);
+    }
+  } else {
+    for (const DiskData& d : disks_) {
+      const double d2 = is_polygon_ ? box_gap2(robot_box_, d.box) : skeleton_squared_distance(Vec2(d.x, d.y));
+      if (cannot_beat(d2, is_polygon_ ? 0.0 : d.r, best.clearance)) continue;
+      consider(disk_clearance(d), d.index);
+    }
   }
   for (const ShapeData& s : shapes_) {
     // Walls reach kWallTolerance beyond their box.

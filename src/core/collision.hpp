@@ -42,6 +42,12 @@ class CollisionWorld {
 
   /// lambda(p, q) for this robot (see motion_bound in robot.hpp).
   double motion_bound(const Config& p, const Config& q) const { return csl::motion_bound(robot_, p, q); }
+  /// The same, given the space's distance from p to q (Space::distance(p, q)): for the point
+  /// robot that is lambda itself, bit for bit (the square root of the same sum of the same
+  /// squares), so it is not computed again; the other robots compute theirs.
+  double motion_bound(const Config& p, const Config& q, double distance) const {
+    return robot_.index() == 0 ? distance : csl::motion_bound(robot_, p, q);
+  }
 
  private:
   // Disks get a fast path (most scenes are mostly disks): centre, radius, and the squared

@@ -89,11 +89,15 @@ class EdgeChecker {
   /// (lambda(p, q(t)) = t lambda(p, q) < eta_p, likewise from q): the same verdict from fewer
   /// evaluations, as the grid's configurations are only ever skipped, never replaced.
   void check_known_free(const Config& p, const Config& q, double length, double eta_p, double eta_q);
-  /// The same for the grid and step checkers with the edge's grid_configurations() known.
-  void check_grid_known_free(const Config& p, const Config& q, int configurations, double eta_p, double eta_q);
+  /// The same for the grid and step checkers (what check_known_free() runs for them).
+  void check_grid_known_free(const Config& p, const Config& q, double length, double eta_p, double eta_q);
   /// Grid and step checkers: how many configurations (endpoints included) an edge of this
   /// length gets.
   int grid_configurations(double length) const;
+  /// Grid and step checkers: whether grid_configurations(length) > 2, i.e. the edge has
+  /// configurations between its ends (only these need the ends' clearances), without its
+  /// division.
+  bool has_interior(double length) const;
   bool done() const { return verdict_ != Verdict::Pending; }
   /// One unit of work (see the file comment); call only while !done(). The event stays valid
   /// until the next step() or reset() (no copy per step: roadmaps check millions of edges).
@@ -104,7 +108,7 @@ class EdgeChecker {
   int evaluations() const { return evaluations_; }
   /// check_grid_known_free: the grid's configurations between the ends it did not test because
   /// the endpoints' clearances prove them free (0 otherwise).
-  int skipped() const { return skipped_; }
+  int skipped() const { return skipped_ >= 0 ? skipped_ : grid_configurations(length_) - 2; }
   /// Where the collision was found (t of the configuration), once verdict() == Collision.
   std::optional<double> collision_t() const { return collision_t_; }
   const EdgeCheckerSpec& spec() const { return spec_; }
@@ -125,7 +129,8 @@ class EdgeChecker {
   Config p_, q_, delta_;  // delta_ = q - p the short way round
   Verdict verdict_ = Verdict::Free;
   int evaluations_ = 0;
-  int skipped_ = 0;
+  int skipped_ = 0;           // -1: all of the grid between the ends (counted when asked)
+  double length_ = 0.0;       // check_grid_known_free: the edge's length, for skipped()
   std::optional<double> collision_t_;
   bool known_free_ = false;
   int n_ = 0;                 // grid/step: configurations on this edge

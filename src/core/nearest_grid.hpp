@@ -2,9 +2,11 @@
 // The k nearest neighbours of every point of a set at once, as the PRM's connect phase needs
 // them. In the plane and on the flat torus T^2 (the point robot, the 2-link arm) a uniform grid
 // of cells holding about two points each answers this several times faster than a k-d tree:
-// building it is a counting sort, and each query looks at the few cells around its own,
-// ring by ring, until no unvisited cell can hold a nearer point. Other spaces, and point sets
-// with a dense cluster (where a grid compares most pairs), use the k-d tree.
+// building it is a counting sort, and each query takes the points within a radius guessed from
+// its neighbour's answer and ranks them, without a branch per point; where that cannot answer
+// (too few within, ties) it looks at the cells around its own, ring by ring, until no unvisited
+// cell can hold a nearer point. Other spaces, and point sets with a dense cluster (where a grid
+// compares most pairs), use the k-d tree.
 // Answers are exactly brute force's: the same neighbours in the same order (ties by smaller
 // index), found with the same squared distances (rounded to float in the rows).
 #include <vector>
@@ -22,10 +24,18 @@ struct NearNeighbor {
   float squared_distance;
 };
 
+/// How all_k_nearest found its rows: by selection among the points within a radius (the grid's
+/// common case), or by a search (the grid's ring search, or the k-d tree). The same answers
+/// either way; tests and benchmarks read this to know which one ran.
+struct KNearestStats {
+  std::size_t selected = 0, searched = 0;
+};
+
 /// Row i (k entries, at out[i * k ..]) holds the k points nearest to points[i] among the others,
 /// nearest first, ties by smaller index: NeighborIndex::k_nearest(points[i], k, i) for every i.
 /// Rows of fewer (fewer than k + 1 points) are padded with {-1, 0}.
-void all_k_nearest(const Space& space, const std::vector<Config>& points, int k, std::vector<NearNeighbor>& out);
+void all_k_nearest(const Space& space, const std::vector<Config>& points, int k, std::vector<NearNeighbor>& out,
+                   KNearestStats* stats = nullptr);
 
 /// For rows from all_k_nearest (k per point): seen[i] = 1 where row p's entry i is a point q < p
 /// whose own row holds p, i.e. the pair was proposed from q's side already; 0 elsewhere (and on

@@ -347,8 +347,16 @@ void Prm::find_candidates() {
     const std::size_t row = static_cast<std::size_t>(p_) * static_cast<std::size_t>(k_);
     const NearNeighbor* mine = &knn_[row];
     const unsigned char* seen = &seen_[row];
-    for (int i = 0; i < k_ && mine[i].index >= 0; ++i)
-      if (!seen[i]) candidates_.push_back({mine[i].index, 0.0});
+    // Written whether seen or not, kept only if not: about a third are seen, in no order a
+    // branch could predict.
+    scratch_.resize(static_cast<std::size_t>(k_));  // its size stays k_: no work after the first
+    Neighbor* out = scratch_.data();
+    std::size_t kept = 0;
+    for (int i = 0; i < k_ && mine[i].index >= 0; ++i) {
+      out[kept] = {mine[i].index, 0.0};
+      kept += seen[i] ? 0 : 1;
+    }
+    candidates_.assign(out, out + kept);
   }
   // The exact distance (the rows keep a float): the same formula as the index's, so the same bits.
   if (params_.neighbors.kind != NeighborRule::Kind::Radius)
@@ -377,9 +385,8 @@ void Prm::check_candidate() {
     checker_.check_known_free(roadmap_.vertices[up], roadmap_.vertices[uq], length, roadmap_.clearance[up],
                               roadmap_.clearance[uq]);
   } else {
-    const int configurations = checker_.grid_configurations(length);
     double eta_p = std::numeric_limits<double>::quiet_NaN(), eta_q = eta_p;
-    if (configurations > 2) {
+    if (checker_.has_interior(length)) {
       // The grid checkers skip what the endpoints' clearances prove free: each vertex's is
       // computed when an edge with configurations between its ends first needs it. (Edges
       // without such configurations, most in large roadmaps, read neither: a cache miss each.)
@@ -388,7 +395,7 @@ void Prm::check_candidate() {
       if (std::isnan(eta_p)) eta_p = roadmap_.clearance[up] = world_->clearance(roadmap_.vertices[up]);
       if (std::isnan(eta_q)) eta_q = roadmap_.clearance[uq] = world_->clearance(roadmap_.vertices[uq]);
     }
-    checker_.check_grid_known_free(roadmap_.vertices[up], roadmap_.vertices[uq], configurations, eta_p, eta_q);
+    checker_.check_grid_known_free(roadmap_.vertices[up], roadmap_.vertices[uq], length, eta_p, eta_q);
   }
   ++edge_checks_;
   evaluations_ += checker_.evaluations();

@@ -151,6 +151,26 @@ TEST_CASE("the step checker spaces its configurations at most D apart") {
   CHECK(checker.evaluations() == 2);
 }
 
+TEST_CASE("has_interior(length) is grid_configurations(length) > 2, at the step's boundary too") {
+  const auto world = p12_world();
+  for (const char* spec : {"step:0.3", "step:0.014142135623730951", "step:1e-300", "step:1e300", "grid:2", "grid:3"}) {
+    const csl::EdgeChecker checker(world, EdgeCheckerSpec::parse(spec), false);
+    const double step = EdgeCheckerSpec::parse(spec).step;
+    std::vector<double> lengths = {0.0, 1e-310, 0.1, 1.0, 7.5, 1e300};
+    // Within a few ulps of one step, where the quotient may round to exactly 1.
+    for (double at : {step, 2.0 * step}) {
+      double x = at;
+      for (int i = 0; i < 8; ++i) x = std::nextafter(x, 0.0);
+      for (int i = 0; i < 16; ++i, x = std::nextafter(x, 1e308)) lengths.push_back(x);
+    }
+    for (double length : lengths) {
+      CAPTURE(spec);
+      CAPTURE(length);
+      CHECK(checker.has_interior(length) == (checker.grid_configurations(length) > 2));
+    }
+  }
+}
+
 TEST_CASE("point robot, random disk worlds: bisection agrees with the analytic answer") {
   csl::Rng rng(1234);
   int collisions = 0, frees = 0, grid_misses = 0;

@@ -140,3 +140,34 @@ TEST_CASE("all_k_nearest in other spaces (the k-d tree) = brute force") {
   require_brute_force(Space::se2(0, 0, 2, 1, 0.3), uniform(Space::se2(0, 0, 2, 1, 0.3), 600, 8), 10);
   require_brute_force(Space::torus(3), uniform(Space::torus(3), 600, 9), 10);
 }
+
+TEST_CASE("all_k_nearest: the grid selects most rows, and searches those its ranks cannot order") {
+  // Both ways give the rows above; this checks which one runs. On uniform points the selection
+  // among the points within a radius answers (nearly) every row, in the plane and on the torus.
+  for (const Space& space : {Space::box({0, 0}, {1, 1}), Space::torus(2)}) {
+    const std::vector<Config> points = uniform(space, 3000, 21);
+    csl::KNearestStats stats;
+    std::vector<csl::NearNeighbor> rows;
+    csl::all_k_nearest(space, points, 10, rows, &stats);
+    CHECK(stats.selected + stats.searched == points.size());
+    CHECK(stats.selected >= 2990);
+    // Every point twice: the neighbours come in pairs at equal distances, which ranks by float
+    // cannot order by index, so every row is searched (and still equals brute force).
+    std::vector<Config> twice = points;
+    twice.resize(1000);
+    twice.insert(twice.end(), twice.begin(), twice.end());
+    csl::all_k_nearest(space, twice, 10, rows, &stats);
+    CHECK(stats.selected == 0);
+    CHECK(stats.searched == twice.size());
+    require_brute_force(space, twice, 10);
+  }
+  // More neighbours than the ranks' 64 bits: searched.
+  csl::KNearestStats stats;
+  std::vector<csl::NearNeighbor> rows;
+  const Space box = Space::box({0, 0}, {1, 1});
+  csl::all_k_nearest(box, uniform(box, 300, 22), 65, rows, &stats);
+  CHECK(stats.searched == 300);
+  // The k-d tree searches.
+  csl::all_k_nearest(Space::torus(3), uniform(Space::torus(3), 200, 23), 10, rows, &stats);
+  CHECK(stats.searched == 200);
+}
