@@ -20,6 +20,7 @@ double box_gap2(const Box& a, const Box& b) {
 // Pruning by squared distances must never change a result: compare against bounds inflated
 // by far more than the rounding of the squares (relative 1e-12 against ~1e-16).
 constexpr double kSafe = 1.0 + 1e-12;
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // Whether something at squared distance >= d2 from a shape of reach r cannot beat `best`.
 bool cannot_beat(double d2, double r, double best) {
@@ -134,6 +135,33 @@ CollisionWorld::Nearest CollisionWorld::nearest(const Config& q) const {
     // Walls reach kWallTolerance beyond their box.
     if (cannot_beat(box_gap2(robot_box_, s.box), kWallTolerance, best.clearance)) continue;
     consider(clearance_to(obstacles_[static_cast<std::size_t>(s.index)]), s.index);
+  }
+  return best;
+}
+
+double CollisionWorld::clearance(const Config& q) const {
+  if (robot_.index() != 0) return nearest(q).clearance;
+  // The point robot (every roadmap vertex's eta). The least of sqrt(d2) - r over the disks is
+  // the same whichever order they are taken in, and without the obstacle's index to track no
+  // disk needs a branch: four running minima keep four square roots in flight. nearest()'s
+  // pruning only ever skips disks that cannot be the least, so the bits are its bits.
+  pose(q);
+  const double x = point_.x(), y = point_.y();
+  const auto eta = [x, y](const DiskData& d) {
+    const double dx = x - d.x, dy = y - d.y;
+    return std::sqrt(dx * dx + dy * dy) - d.r;
+  };
+  const auto least = [](double a, double b) { return b < a ? b : a; };  // keeps a when b is NaN
+  double m[4] = {kInfinity, kInfinity, kInfinity, kInfinity};
+  const std::size_t n = disks_.size();
+  std::size_t i = 0;
+  for (; i + 4 <= n; i += 4)
+    for (std::size_t l = 0; l < 4; ++l) m[l] = least(m[l], eta(disks_[i + l]));
+  for (; i < n; ++i) m[0] = least(m[0], eta(disks_[i]));
+  double best = least(least(m[0], m[1]), least(m[2], m[3]));
+  for (const ShapeData& s : shapes_) {  // as nearest() takes them, from the disks' least
+    if (cannot_beat(box_gap2(robot_box_, s.box), kWallTolerance, best)) continue;
+    best = least(best, clearance_to(obstacles_[static_cast<std::size_t>(s.index)]));
   }
   return best;
 }

@@ -30,7 +30,7 @@ class CollisionWorld {
 
   /// eta(q): the least distance from the robot at q to any obstacle (+infinity with none).
   /// <= 0 means collision; negative values, where cheap to know, tell how deep.
-  double clearance(const Config& q) const { return nearest(q).clearance; }
+  double clearance(const Config& q) const;
 
   /// Whether q is collision-free: exactly clearance(q) > 0, but faster (it stops at the first
   /// hit and mostly compares squared distances).

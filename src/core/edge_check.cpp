@@ -77,49 +77,13 @@ void EdgeChecker::check_known_free(const Config& p, const Config& q, double leng
   check_grid_known_free(p, q, length, eta_p, eta_q);
 }
 
-bool EdgeChecker::has_interior(double length) const {
-  if (spec_.kind != EdgeCheckerSpec::Kind::Step) return spec_.resolution > 2;
-  // A length above the step is at least the next double, step + ulp(step), and ulp(s) / s >
-  // 2^-53 for every s: so length / step > 1 + 2^-53 rounds up, past 1, and its ceiling, 2 or
-  // more, gives 3 configurations or more. No division: its latency was on every roadmap edge.
-  return length > spec_.step;
-}
-
-void EdgeChecker::check_grid_known_free(const Config& p, const Config& q, double length, double eta_p,
-                                        double eta_q) {
-  verdict_ = Verdict::Free;
-  evaluations_ = 0;
-  skipped_ = 0;
-  length_ = length;
-  collision_t_.reset();
-  known_free_ = true;
-  queue_.clear();
-  head_ = 0;
-  n_ = 0;
-  next_ = n_;  // nothing left for step() (its verdict is given)
-  if (!has_interior(length)) return;
+void EdgeChecker::walk_grid(const Config& p, const Config& q, double lambda, double eta_p, double eta_q) {
   const Space& space = world_->space();
-  // Configurations i < first and i > final are proven free by the endpoints' balls: the robot
-  // at q(t) is within lambda(p, q(t)) = t lambda of where it is at p, and eta_p clears that.
-  // The margins keep rounding in t, lambda, eta and the pose on the safe side: relative ones,
-  // and an absolute one that grows with the scene's coordinates (poses round to ~1e-16 of them).
-  const bool balls = eta_p > 0.0 || eta_q > 0.0;  // false for NaN: nothing skipped
-  const double slack = 1e-9 + 1e-13 * world_->scale();
-  const double lambda = balls ? world_->motion_bound(p, q, length) * (1.0 + 1e-6) + slack : 0.0;
-  if (balls) {
-    // Balls that overlap along the edge prove every t (t lambda + (1 - t) lambda = lambda <
-    // both radii's sum): the common case, without walking the grid (or counting it).
-    const double reach_p = eta_p * (1.0 - 1e-6) - slack, reach_q = eta_q * (1.0 - 1e-6) - slack;
-    if (lambda < reach_p + reach_q && reach_p > 0.0 && reach_q > 0.0) {
-      skipped_ = -1;  // every configuration between the ends: counted by skipped() if asked
-      return;
-    }
-  }
-  n_ = next_ = grid_configurations(length);
+  n_ = next_ = grid_configurations(length_);
   const double last = static_cast<double>(n_ - 1);
   int first = 1, final = n_ - 2;
-  if (balls) {
-    const auto proven = [&](double t, double eta) { return t * lambda < eta * (1.0 - 1e-6) - slack; };
+  if (lambda > 0.0) {
+    const auto proven = [&](double t, double eta) { return t * lambda < eta * (1.0 - 1e-6) - slack_; };
     while (first <= final && proven(static_cast<double>(first) / last, eta_p)) ++first;
     while (final >= first && proven(1.0 - static_cast<double>(final) / last, eta_q)) --final;
   }

@@ -74,7 +74,7 @@ class EdgeChecker {
   /// the lesson); without it, only whether each is free (faster, for roadmaps). Bisection
   /// always needs eta.
   EdgeChecker(const CollisionWorld& world, EdgeCheckerSpec spec, bool report_clearance = true)
-      : world_(&world), spec_(spec), report_clearance_(report_clearance) {}
+      : world_(&world), spec_(spec), report_clearance_(report_clearance), slack_(1e-9 + 1e-13 * world.scale()) {}
   EdgeChecker(CollisionWorld&&, EdgeCheckerSpec, bool = true) = delete;  // the world must outlive it
 
   /// Starts checking p -> q. With `endpoints_known_free`, the caller vouches that p and q are
@@ -89,15 +89,44 @@ class EdgeChecker {
   /// (lambda(p, q(t)) = t lambda(p, q) < eta_p, likewise from q): the same verdict from fewer
   /// evaluations, as the grid's configurations are only ever skipped, never replaced.
   void check_known_free(const Config& p, const Config& q, double length, double eta_p, double eta_q);
-  /// The same for the grid and step checkers (what check_known_free() runs for them).
-  void check_grid_known_free(const Config& p, const Config& q, double length, double eta_p, double eta_q);
+  /// The same for the grid and step checkers (what check_known_free() runs for them). Inline:
+  /// a roadmap checks every close pair with it, and most are settled here without a
+  /// configuration (no interior, or the ends' balls overlap); the rest walk the grid.
+  void check_grid_known_free(const Config& p, const Config& q, double length, double eta_p, double eta_q) {
+    verdict_ = Verdict::Free;
+    evaluations_ = 0;
+    skipped_ = 0;
+    length_ = length;
+    collision_t_.reset();
+    if (!has_interior(length)) return;
+    // Configurations near p or q are proven free by the endpoints' balls: the robot at q(t) is
+    // within lambda(p, q(t)) = t lambda of where it is at p, and eta_p clears that. The margins
+    // keep rounding in t, lambda, eta and the pose on the safe side: relative ones, and
+    // slack_, which grows with the scene's coordinates (poses round to ~1e-16 of them).
+    if (!(eta_p > 0.0 || eta_q > 0.0)) return walk_grid(p, q, 0.0, eta_p, eta_q);  // NaN: none skipped
+    const double lambda = world_->motion_bound(p, q, length) * (1.0 + 1e-6) + slack_;
+    // Balls that overlap along the edge prove every t (t lambda + (1 - t) lambda = lambda <
+    // both radii's sum): the common case, without walking the grid (or counting it).
+    const double reach_p = eta_p * (1.0 - 1e-6) - slack_, reach_q = eta_q * (1.0 - 1e-6) - slack_;
+    if (lambda < reach_p + reach_q && reach_p > 0.0 && reach_q > 0.0) {
+      skipped_ = -1;  // every configuration between the ends: counted by skipped() if asked
+      return;
+    }
+    walk_grid(p, q, lambda, eta_p, eta_q);
+  }
   /// Grid and step checkers: how many configurations (endpoints included) an edge of this
   /// length gets.
   int grid_configurations(double length) const;
   /// Grid and step checkers: whether grid_configurations(length) > 2, i.e. the edge has
   /// configurations between its ends (only these need the ends' clearances), without its
   /// division.
-  bool has_interior(double length) const;
+  bool has_interior(double length) const {
+    if (spec_.kind != EdgeCheckerSpec::Kind::Step) return spec_.resolution > 2;
+    // A length above the step is at least the next double, step + ulp(step), and ulp(s) / s >
+    // 2^-53 for every s: so length / step > 1 + 2^-53 rounds up, past 1, and its ceiling, 2 or
+    // more, gives 3 configurations or more. No division: its latency was on every roadmap edge.
+    return length > spec_.step;
+  }
   bool done() const { return verdict_ != Verdict::Pending; }
   /// One unit of work (see the file comment); call only while !done(). The event stays valid
   /// until the next step() or reset() (no copy per step: roadmaps check millions of edges).
@@ -118,6 +147,10 @@ class EdgeChecker {
     double t0, eta0, t1, eta1;
     int depth;
   };
+  // check_grid_known_free() past its shortcuts: the grid's configurations between the ends,
+  // but those the balls of radius eta_p and eta_q prove free (lambda: the padded motion bound,
+  // 0 when neither ball is known), in order until one is in collision.
+  void walk_grid(const Config& p, const Config& q, double lambda, double eta_p, double eta_q);
   // Tests q(t) and writes the Evaluate fields of event_.
   void evaluate(double t, bool need_clearance);
   void step_grid();
@@ -126,6 +159,7 @@ class EdgeChecker {
   const CollisionWorld* world_;
   EdgeCheckerSpec spec_;
   bool report_clearance_;
+  double slack_;  // check_grid_known_free: an absolute margin for rounding, from the scene's scale
   Config p_, q_, delta_;  // delta_ = q - p the short way round
   Verdict verdict_ = Verdict::Free;
   int evaluations_ = 0;

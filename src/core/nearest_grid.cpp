@@ -165,12 +165,15 @@ class Grid {
     int* slot = s.slot.data();
     std::uint64_t ranks_seen = 0;
     int entered = 0;
+    // Without a branch: about a third of the points are beyond rank k, in no order (written as
+    // conditionals, the compiler branched, and mispredicted).
     for (int i = 0; i < count; ++i) {
       const int r = rank[i];
-      const bool in = r < k;
-      slot[in ? r : k] = i;
-      entered += in ? 1 : 0;
-      ranks_seen |= in ? std::uint64_t{1} << r : 0;
+      const int in = static_cast<int>(r < k);
+      const int at = std::min(r, k);
+      slot[at] = i;
+      entered += in;
+      ranks_seen |= (std::uint64_t{1} << (at & 63)) & (std::uint64_t{0} - static_cast<std::uint64_t>(in));
     }
     const std::uint64_t all = k == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << k) - 1;
     if (entered != k || ranks_seen != all) return false;
@@ -425,25 +428,26 @@ std::size_t mark_pairs_seen(const std::vector<NearNeighbor>& rows, int k, std::v
   for (std::size_t v = 0; v < n; ++v) last[v] = rows[v * uk + uk - 1];
   constexpr float kBelow = 1.0f - 1e-6f, kAbove = 1.0f + 1e-6f;  // float rounding is 6e-8
   std::size_t pairs = 0;
+  // Every test is computed and combined without a branch (whether q < p, and which way the
+  // floats decide, follow no pattern a branch predictor could learn); only the rare pair the
+  // floats leave open looks through q's row.
   for (std::size_t p = 0; p < n; ++p) {
     const std::size_t row = p * uk;
     for (std::size_t i = 0; i < uk && rows[row + i].index >= 0; ++i) {
       const auto q = static_cast<std::size_t>(rows[row + i].index);
-      bool in_theirs = false;
-      if (q < p) {
-        const float d2 = rows[row + i].squared_distance, theirs = last[q].squared_distance;
-        if (last[q].index < 0 || static_cast<std::size_t>(last[q].index) == p) {
-          in_theirs = true;  // q's row holds every other point, or ends with p
-        } else if (std::isnormal(theirs) && d2 < theirs * kBelow) {
-          in_theirs = true;
-        } else if (std::isnormal(theirs) && d2 > theirs * kAbove) {
-          in_theirs = false;
-        } else {
-          for (std::size_t j = 0; j < uk && !in_theirs; ++j) in_theirs = rows[q * uk + j].index == static_cast<int>(p);
-        }
-      }
-      seen[row + i] = in_theirs ? 1 : 0;
-      pairs += in_theirs ? 0 : 1;
+      const NearNeighbor theirs = last[q];
+      const float d2 = rows[row + i].squared_distance;
+      // q's row holds every other point, or ends with p.
+      const bool whole = (theirs.index < 0) | (static_cast<std::size_t>(theirs.index) == p);
+      const bool normal = std::isnormal(theirs.squared_distance);
+      const bool nearer = normal & (d2 < theirs.squared_distance * kBelow);
+      const bool farther = normal & (d2 > theirs.squared_distance * kAbove);
+      bool in_theirs = whole | nearer;
+      if ((q < p) & !(whole | nearer | farther))
+        for (std::size_t j = 0; j < uk && !in_theirs; ++j) in_theirs = rows[q * uk + j].index == static_cast<int>(p);
+      const bool marked = (q < p) & in_theirs;
+      seen[row + i] = static_cast<unsigned char>(marked);
+      pairs += marked ? 0 : 1;
     }
   }
   return pairs;

@@ -413,7 +413,15 @@ void Prm::check_candidate() {
 }
 
 void Prm::add_edge(int q, RoadmapEdge edge) {
-  roadmap_.edges.push_back(std::move(edge));
+  // Written into its slot field by field: a copy of the whole struct read it back from the
+  // stack as wider loads than the stores that built it, a stalled store-to-load forward on
+  // every edge (perf: half of check_candidate's time).
+  RoadmapEdge& slot = roadmap_.edges.emplace_back();
+  slot.a = edge.a;
+  slot.b = edge.b;
+  slot.length = edge.length;
+  slot.alive = edge.alive;
+  slot.path = edge.path;
   ++edges_alive_;
   components_.unite(p_, q);
 }

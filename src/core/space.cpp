@@ -17,14 +17,14 @@ Space Space::box(const std::vector<double>& lo, const std::vector<double>& hi) {
   }
   const int d = static_cast<int>(lo.size());
   s.factors_.push_back({d == 1 ? "R" : "R^" + std::to_string(d), 0, d});
-  return s;
+  return s.classify();
 }
 
 Space Space::circle(double weight) {
   Space s;
   s.coords_.push_back({true, -kPi, kPi, weight});
   s.factors_.push_back({"S^1", 0, 1});
-  return s;
+  return s.classify();
 }
 
 Space Space::torus(int n) {
@@ -32,14 +32,14 @@ Space Space::torus(int n) {
   Space s;
   for (int i = 0; i < n; ++i) s.coords_.push_back({true, -kPi, kPi, 1.0});
   s.factors_.push_back({n == 1 ? "S^1" : "T^" + std::to_string(n), 0, n});
-  return s;
+  return s.classify();
 }
 
 Space Space::se2(double x_lo, double y_lo, double x_hi, double y_hi, double angular_weight) {
   Space s = box({x_lo, y_lo}, {x_hi, y_hi});
   s.coords_.push_back({true, -kPi, kPi, angular_weight});
   s.factors_ = {{"SE(2)", 0, 3}};
-  return s;
+  return s.classify();
 }
 
 Space Space::product(const Space& a, const Space& b) {
@@ -50,7 +50,13 @@ Space Space::product(const Space& a, const Space& b) {
     f.first += a.dim();
     s.factors_.push_back(f);
   }
-  return s;
+  return s.classify();
+}
+
+Space& Space::classify() {
+  unit_linear_ = !coords_.empty();
+  for (const Coordinate& c : coords_) unit_linear_ = unit_linear_ && !c.angular && c.weight == 1.0;
+  return *this;
 }
 
 std::string Space::notation() const {

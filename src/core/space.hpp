@@ -58,6 +58,13 @@ class Space {
   /// The same on raw coordinate arrays of dim() numbers (for spatial indexes).
   double squared_distance(const double* p, const double* q) const {
     double sum = 0.0;
+    if (unit_linear_) {  // R^d: the loop below, without the angle test and the weight of 1
+      for (std::size_t i = 0; i < coords_.size(); ++i) {
+        const double delta = q[i] - p[i];
+        sum += delta * delta;
+      }
+      return sum;
+    }
     for (std::size_t i = 0; i < coords_.size(); ++i) {
       const double delta = coords_[i].delta(p[i], q[i]) * coords_[i].weight;
       sum += delta * delta;
@@ -88,8 +95,15 @@ class Space {
   double volume() const;
 
  private:
+  // The factories end here: derived facts of coords_.
+  Space& classify();
+
   std::vector<Coordinate> coords_;
   std::vector<SpaceFactor> factors_;
+  // Every coordinate linear with weight 1. Distances are then plain sums of squared
+  // differences: the general formula's bits (x * 1.0 is x), with no angle to test per
+  // coordinate (PRM measures every candidate pair of the point robot).
+  bool unit_linear_ = false;
 };
 
 }  // namespace csl
