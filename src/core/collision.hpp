@@ -72,6 +72,9 @@ class CollisionWorld {
   Robot robot_;
   std::vector<Obstacle> obstacles_;
   std::vector<DiskData> disks_;
+  // The disks' centres and radii again, each in an array of its own: clearance() of the point
+  // robot measures all of them in a loop the compiler vectorises (two square roots at once).
+  std::vector<double> disk_x_, disk_y_, disk_r_;
   std::vector<ShapeData> shapes_;
   bool is_polygon_ = false;
   Space space_;

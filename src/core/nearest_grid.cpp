@@ -17,9 +17,10 @@ constexpr double kPruneSafety = 1.0 + 1e-12;
 constexpr double kPointsPerCell = 2.0;
 // Uniform points at 2 per cell put at most ~10 in one cell for n up to 10^6.
 constexpr int kCrowdedCell = 64;
-// The selection by ranks (Grid::select_nearby) handles k up to 64 (a bit per rank) and looks
-// at no more than this many points within its radius per query (its cost grows with their square).
-constexpr int kMaxRankedK = 64;
+// The selection by ranks (Grid::select_nearby) ranks the query point too, so k + 1 ranks up to
+// 64 (a bit per rank), and looks at no more than this many points within its radius per query
+// (its cost grows with their square).
+constexpr int kMaxRankedK = 63;
 constexpr int kMaxRanked = 256;
 // The next query's radius, squared: the last query's k-th distance (squared) times this. The
 // queries run in cell order, so the last one is a neighbour; 1.5 (the radius x 1.22) keeps about
@@ -100,7 +101,7 @@ class Grid {
       const int id = ids_[at];
       NearNeighbor* o = &out[static_cast<std::size_t>(id) * uk];
       const double qx = xs_[at], qy = ys_[at];
-      if (ranked && select_nearby(qx, qy, id, k, reach2, near, o)) {
+      if (ranked && select_nearby(qx, qy, k, reach2, near, o)) {
         // Duplicates give a k-th distance of 0: not below a tenth of the typical radius.
         reach2 = std::max(kRadiusGrowth2 * static_cast<double>(o[k - 1].squared_distance), 0.01 * typical2);
         ++stats.selected;
@@ -115,40 +116,44 @@ class Grid {
 
  private:
   // Scratch of select_nearby, sized once: the points within its radius (squared distances,
-  // their floats, indices, ranks), and which of them has each rank below k (a spare slot for
-  // the others).
+  // their floats, positions in xs_/ys_/ids_, ranks), and which of them has each rank up to k
+  // (a spare slot for the others).
   struct Nearby {
     std::vector<double> d2;
     std::vector<float> key;
-    std::vector<int> index, rank, slot;
+    std::vector<int> at, rank, slot;
     void reserve(std::size_t k) {
       d2.resize(kMaxRanked);
       key.resize(kMaxRanked + 4);
-      index.resize(kMaxRanked);
+      at.resize(kMaxRanked);
       rank.resize(kMaxRanked + 4);
-      slot.resize(k + 1);
+      slot.resize(k + 2);
     }
   };
 
-  // The k nearest of q (point `self` of the set) by selection rather than search: every point
-  // within sqrt(reach2) of q (a box of cells around that disk, scanned without branches), then
-  // each one's rank among them by the floats of the squared distances (counted without
-  // branches, vectorised). That is the exact answer when the ranks below k are 0 .. k-1 once
-  // each: no two of them share a float, and no point outside has a float as small (it would
-  // share a rank), so they are the k nearest in exact order (rounding to float keeps order,
+  // The k nearest of q (a point of the set) by selection rather than search: every point
+  // within sqrt(reach2) of q (a box of cells around that disk, scanned without branches), q
+  // itself included, then each one's rank among them by the floats of the squared distances
+  // (counted without branches, vectorised). That is the exact answer when the ranks 0 .. k
+  // are taken once each: q is rank 0, at 0, alone (a duplicate of q would share it), no two of
+  // the others share a float, and no point outside has a float as small (it would share a
+  // rank), so ranks 1 .. k are the k nearest in exact order (rounding to float keeps order,
   // and distinct floats come from distinct doubles), and all points farther than the radius
-  // are farther still. Returns false where it cannot say (fewer than k points within the
+  // are farther still. Returns false where it cannot say (fewer than k others within the
   // radius grown twice, more than kMaxRanked, ties): the ring search answers those.
-  bool select_nearby(double qx, double qy, int self, int k, double reach2, Nearby& s, NearNeighbor* out) const {
+  // (q is ranked rather than left out of the scan: a test of every point against q's index
+  // cost more than one rank more.)
+  bool select_nearby(double qx, double qy, int k, double reach2, Nearby& s, NearNeighbor* out) const {
     int count = 0;
     for (int attempt = 0;; ++attempt) {
       count = 0;
-      if (!gather(qx, qy, self, reach2, s, count)) return false;
-      if (count >= k) break;
+      if (!gather(qx, qy, reach2, s, count)) return false;
+      if (count > k) break;
       if (attempt == 2) return false;
       // Too few within: a disk for k + 1 at the density just seen, with a margin (about 9% of
       // the queries; growing 4-fold instead cost 5% more in all, rescanning 4 times the area).
-      reach2 *= 1.3 * (k + 1.0) / (count > 0 ? count : 1);
+      const int others = count - 1;
+      reach2 *= 1.3 * (k + 1.0) / (others > 0 ? others : 1);
     }
     const int padded = (count + 3) & ~3;  // whole vectors of 4 floats
     for (int j = 0; j < count; ++j) s.key[static_cast<std::size_t>(j)] = static_cast<float>(s.d2[static_cast<std::size_t>(j)]);
@@ -161,7 +166,8 @@ class Grid {
         for (int l = 0; l < 4; ++l) below[l] += key[j] < key[i + l] ? 1 : 0;
       for (int l = 0; l < 4; ++l) rank[i + l] = below[l];
     }
-    // slot[r]: which of them has rank r < k (slot[k] takes all the others).
+    // slot[r]: which of them has rank r <= k (slot[k + 1] takes all the others).
+    const int ranks = k + 1;
     int* slot = s.slot.data();
     std::uint64_t ranks_seen = 0;
     int entered = 0;
@@ -169,21 +175,24 @@ class Grid {
     // conditionals, the compiler branched, and mispredicted).
     for (int i = 0; i < count; ++i) {
       const int r = rank[i];
-      const int in = static_cast<int>(r < k);
-      const int at = std::min(r, k);
-      slot[at] = i;
+      const int in = static_cast<int>(r < ranks);
+      const int to = std::min(r, ranks);
+      slot[to] = i;
       entered += in;
-      ranks_seen |= (std::uint64_t{1} << (at & 63)) & (std::uint64_t{0} - static_cast<std::uint64_t>(in));
+      ranks_seen |= (std::uint64_t{1} << (to & 63)) & (std::uint64_t{0} - static_cast<std::uint64_t>(in));
     }
-    const std::uint64_t all = k == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << k) - 1;
-    if (entered != k || ranks_seen != all) return false;
-    for (int r = 0; r < k; ++r) out[r] = {s.index[static_cast<std::size_t>(slot[r])], key[slot[r]]};
+    const std::uint64_t all = ranks == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << ranks) - 1;
+    if (entered != ranks || ranks_seen != all) return false;
+    for (int r = 1; r <= k; ++r) {
+      const int j = slot[r];
+      out[r - 1] = {ids_[static_cast<std::size_t>(s.at[static_cast<std::size_t>(j)])], key[j]};
+    }
     return true;
   }
 
-  // Every point but `self` within sqrt(reach2) of q (and some a little farther) into s, `count`
-  // of them; false if there would be more than kMaxRanked.
-  bool gather(double qx, double qy, int self, double reach2, Nearby& s, int& count) const {
+  // Every point within sqrt(reach2) of q (and some a little farther) into s, `count` of them;
+  // false if there would be more than kMaxRanked.
+  bool gather(double qx, double qy, double reach2, Nearby& s, int& count) const {
     // The box's half-width, padded: a point rounded into the next cell is still in the box.
     const double reach = std::sqrt(reach2) * (1.0 + 1e-9) + slack_;
     int x0, x1, y0, y1;
@@ -204,14 +213,13 @@ class Grid {
         const int end = start_[static_cast<std::size_t>(cell_index(run[1], cy)) + 1];
         if (count + (end - begin) > kMaxRanked) return false;
         double* d2 = s.d2.data();
-        int* index = s.index.data();
-        int kept = count;  // a local: `index` could alias `count` for the compiler
+        int* where = s.at.data();
+        int kept = count;  // a local: `where` could alias `count` for the compiler
         for (int at = begin; at < end; ++at) {  // kept or not, written: no branch
           const double d = squared_distance(qx, qy, static_cast<std::size_t>(at));
-          const int id = ids_[static_cast<std::size_t>(at)];
           d2[kept] = d;
-          index[kept] = id;
-          kept += static_cast<int>(d <= reach2) & static_cast<int>(id != self);
+          where[kept] = at;
+          kept += static_cast<int>(d <= reach2);
         }
         count = kept;
       }
@@ -223,16 +231,25 @@ class Grid {
   // grid in the plane; on the torus unwrapped (c0 may be < 0, c1 >= cells), the whole axis
   // once when the interval is as long as the axis.
   void box_cells(const Axis& a, double q, double reach, int& c0, int& c1) const {
-    double lo = std::floor((q - reach - a.lo) * a.inverse), hi = std::floor((q + reach - a.lo) * a.inverse);
-    const double cells = a.cells;
+    const long long lo = floor_clamped((q - reach - a.lo) * a.inverse), hi = floor_clamped((q + reach - a.lo) * a.inverse);
     if constexpr (kTorus) {
-      if (!(hi - lo + 1.0 < cells)) lo = 0.0, hi = cells - 1.0;
+      const bool whole = !(hi - lo + 1 < a.cells);
+      c0 = whole ? 0 : static_cast<int>(lo);
+      c1 = whole ? a.cells - 1 : static_cast<int>(hi);
     } else {
-      lo = std::max(lo, 0.0);
-      hi = std::min(hi, cells - 1.0);
+      c0 = static_cast<int>(std::max(lo, 0LL));
+      c1 = static_cast<int>(std::min(hi, static_cast<long long>(a.cells) - 1));
     }
-    c0 = static_cast<int>(lo);
-    c1 = static_cast<int>(hi);
+  }
+
+  // floor(v) for box_cells, clamped to +-2^40 (NaN to the low end): both callers' uses clamp
+  // to the grid, or take a whole axis, long before that. Truncation corrected below zero: with
+  // SSE2 alone, std::floor's inline form converted to an integer and back (7% of the search).
+  static long long floor_clamped(double v) {
+    constexpr double kFar = 0x1p40;
+    v = v >= -kFar ? (v <= kFar ? v : kFar) : -kFar;
+    const auto t = static_cast<long long>(v);
+    return t - static_cast<long long>(v < static_cast<double>(t));
   }
 
   int cell_index(int ix, int iy) const { return iy * ax_.cells + ix; }

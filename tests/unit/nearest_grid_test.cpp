@@ -161,11 +161,16 @@ TEST_CASE("all_k_nearest: the grid selects most rows, and searches those its ran
     CHECK(stats.searched == twice.size());
     require_brute_force(space, twice, 10);
   }
-  // More neighbours than the ranks' 64 bits: searched.
+  // The ranks' 64 bits hold the query point and 63 neighbours: k = 63 is selected (and equals
+  // brute force), k = 64 is searched.
   csl::KNearestStats stats;
   std::vector<csl::NearNeighbor> rows;
   const Space box = Space::box({0, 0}, {1, 1});
-  csl::all_k_nearest(box, uniform(box, 300, 22), 65, rows, &stats);
+  const std::vector<Config> few = uniform(box, 300, 22);
+  csl::all_k_nearest(box, few, 63, rows, &stats);
+  CHECK(stats.selected >= 250);
+  require_brute_force(box, few, 63);
+  csl::all_k_nearest(box, few, 64, rows, &stats);
   CHECK(stats.searched == 300);
   // The k-d tree searches.
   csl::all_k_nearest(Space::torus(3), uniform(Space::torus(3), 200, 23), 10, rows, &stats);
