@@ -92,7 +92,8 @@ class EdgeChecker {
   /// The same for the grid and step checkers (what check_known_free() runs for them). Inline:
   /// a roadmap checks every close pair with it, and most are settled here without a
   /// configuration (no interior, or the ends' balls overlap); the rest walk the grid.
-  void check_grid_known_free(const Config& p, const Config& q, double length, double eta_p, double eta_q) {
+  [[gnu::always_inline]] void check_grid_known_free(const Config& p, const Config& q, double length, double eta_p,
+                                                     double eta_q) {
     verdict_ = Verdict::Free;
     evaluations_ = 0;
     skipped_ = 0;

@@ -400,7 +400,7 @@ void Prm::check_candidate() {
   ++edge_checks_;
   evaluations_ += checker_.evaluations();
   const bool free = checker_.verdict() == Verdict::Free;
-  if (free) add_edge(q, {std::min(p_, q), std::max(p_, q), length, true});
+  if (free) add_edge(q, length);
   if constexpr (kEmit) {
     PrmEvent& e = event_;
     e.vertex = p_;
@@ -412,16 +412,17 @@ void Prm::check_candidate() {
   }
 }
 
-void Prm::add_edge(int q, RoadmapEdge edge) {
-  // Written into its slot field by field: a copy of the whole struct read it back from the
+void Prm::add_edge(int q, double length, int path) {
+  // Written into its slot field by field: a copy of a whole struct read it back from the
   // stack as wider loads than the stores that built it, a stalled store-to-load forward on
-  // every edge (perf: half of check_candidate's time).
+  // every edge (perf: half of check_candidate's time); and the wasm passed the struct through
+  // memory.
   RoadmapEdge& slot = roadmap_.edges.emplace_back();
-  slot.a = edge.a;
-  slot.b = edge.b;
-  slot.length = edge.length;
-  slot.alive = edge.alive;
-  slot.path = edge.path;
+  slot.a = std::min(p_, q);
+  slot.b = std::max(p_, q);
+  slot.length = length;
+  slot.alive = true;
+  slot.path = path;
   ++edges_alive_;
   components_.unite(p_, q);
 }
@@ -442,7 +443,7 @@ void Prm::connect_candidate(int q) {
       stored = static_cast<int>(roadmap_.paths.size());
       roadmap_.paths.push_back(std::move(path.waypoints));
     }
-    add_edge(q, {a, b, path.length, true, stored});
+    add_edge(q, path.length, stored);
   }
   if constexpr (kEmit) {
     PrmEvent& e = event_;

@@ -186,8 +186,9 @@ class Prm {
   void find_candidates();
   template <bool kEmit>
   void check_candidate();
-  // E gets (p_, q), proven free (a straight line, or a connector's path).
-  void add_edge(int q, RoadmapEdge edge);
+  // E gets (p_, q), proven free, of this length: the straight line, or the connector's path
+  // `path` (its index in Roadmap::paths).
+  void add_edge(int q, double length, int path = -1);
   // check_candidate() with params_.connector: the connector's path or nothing.
   template <bool kEmit>
   void connect_candidate(int q);
