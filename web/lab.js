@@ -79,6 +79,14 @@
     return compiled;
   }
 
+  // Whether this browser runs WebAssembly's 128-bit SIMD, which the lab is built with: a
+  // module of one function returning v128.const 0 is valid exactly where it does.
+  function wasmSimd() {
+    const module = new Uint8Array([0, 0x61, 0x73, 0x6d, 1, 0, 0, 0, 1, 5, 1, 0x60, 0, 1, 0x7b, 3, 2, 1, 0,
+                                   0x0a, 0x16, 1, 0x14, 0, 0xfd, 0x0c, ...new Array(16).fill(0), 0x0b]);
+    return typeof WebAssembly === 'object' && WebAssembly.validate(module);
+  }
+
   function ensure(root, selector, make) {
     let node = root.querySelector(selector);
     if (!node) {
@@ -152,6 +160,11 @@
     const noWebGl2 = 'C-Space Lab needs WebGL2, which this browser does not offer. Try a current Chrome, Firefox or Safari.';
     if (typeof WebGL2RenderingContext === 'undefined') {
       showError(noWebGl2);
+      return null;
+    }
+    if (!wasmSimd()) {
+      showError('C-Space Lab needs WebAssembly with SIMD, which this browser does not offer. ' +
+                'Try Chrome or Edge 91+, Firefox 89+ or Safari 16.4+.');
       return null;
     }
     let module;
