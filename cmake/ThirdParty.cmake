@@ -25,8 +25,9 @@ target_include_directories(cspacelab_core_deps SYSTEM INTERFACE "${_shim}/core")
 # no compiler may fuse a*b+c into an FMA in one build and not in the other.
 target_compile_definitions(cspacelab_core_deps INTERFACE EIGEN_DONT_VECTORIZE)
 target_compile_options(cspacelab_core_deps INTERFACE -ffp-contract=off)
-# Nothing reads errno after a math function, and without it the compiler may vectorise loops
-# of square roots (sqrt is exact either way: no bit changes).
+# Nothing here (the core, and the app, CLI and tests that link it) reads errno after a math
+# function such as sqrt; without errno the compiler may vectorise loops of square roots (sqrt
+# is exact either way: no bit changes). strtod and strtol still set it (the CLI reads that).
 target_compile_options(cspacelab_core_deps INTERFACE -fno-math-errno)
 
 add_library(cspacelab_doctest INTERFACE)

@@ -215,7 +215,7 @@
     }));
   };
 
-  compileWasm();
+  if (wasmSimd()) compileWasm();  // where it could not compile, each lab says why instead
   const missing = PARTS.filter(([name]) => typeof window[name] === 'undefined').map(([, file]) => file);
   const loaded = Promise.all(missing.map(load));
   const domReady = document.readyState === 'loading'

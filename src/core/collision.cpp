@@ -146,9 +146,11 @@ double CollisionWorld::clearance(const Config& q) const {
   if (robot_.index() != 0) return nearest(q).clearance;
   // The point robot (every roadmap vertex's eta). The least of sqrt(d2) - r over the disks is
   // the same whichever order they are taken in, and without the obstacle's index to track no
-  // disk needs a branch: each disk's eta in a loop without one (vectorised natively: square
-  // roots two at a time), then four running minima. nearest()'s pruning only ever skips disks
-  // that cannot be the least, so the bits are its bits.
+  // disk needs a branch: each disk's eta in a loop without one (vectorised: square roots two at
+  // a time), then four running minima. nearest()'s pruning only ever skips disks that cannot
+  // be the least, so the value is its value, and so are the bits but for a zero: equal values
+  // differ only in the sign of a zero (a polygon or a wall can give -0, a disk +0), and there
+  // nearest()'s tie between obstacles, by index, decides.
   pose(q);
   const double x = point_.x(), y = point_.y();
   const auto least = [](double a, double b) { return b < a ? b : a; };  // keeps a when b is NaN
@@ -172,7 +174,7 @@ double CollisionWorld::clearance(const Config& q) const {
     if (cannot_beat(box_gap2(robot_box_, s.box), kWallTolerance, best)) continue;
     best = least(best, clearance_to(obstacles_[static_cast<std::size_t>(s.index)]));
   }
-  return best;
+  return best == 0.0 ? nearest(q).clearance : best;
 }
 
 bool CollisionWorld::is_free(const Config& q) const {

@@ -168,7 +168,8 @@ class EdgeChecker {
   double length_ = 0.0;       // check_grid_known_free: the edge's length, for skipped()
   std::optional<double> collision_t_;
   bool known_free_ = false;
-  int n_ = 0;                 // grid/step: configurations on this edge
+  int n_ = 0;                 // grid/step: configurations on this edge (check_grid_known_free
+                              // sets it only where it walks the grid: step() follows a reset())
   double eta_p_ = 0.0, eta_q_ = 0.0;
   int next_ = 0;              // grid: next index; bisection: 0/1 = endpoints, 2 = pieces
   std::vector<Piece> queue_;  // bisection FIFO: queue_[head_..]

@@ -1,7 +1,8 @@
 #pragma once
 // Nearest neighbours in a configuration space: a k-d tree that uses the space's own metric,
 // weights and wrap-around (an angle near pi is close to one near -pi). Answers are exactly
-// those of brute force, ordered by (distance, index), so roadmaps do not depend on the index.
+// those of brute force, ordered by (distance, index), so roadmaps do not depend on the index,
+// for angles in the chart [-pi, pi) (Space::wrap's): the tree prunes by chart coordinates.
 #include <vector>
 
 #include "core/space.hpp"

@@ -101,8 +101,9 @@ class Grid {
       const int id = ids_[at];
       NearNeighbor* o = &out[static_cast<std::size_t>(id) * uk];
       const double qx = xs_[at], qy = ys_[at];
-      if (ranked && select_nearby(qx, qy, k, reach2, near, o)) {
-        // Duplicates give a k-th distance of 0: not below a tenth of the typical radius.
+      if (ranked && select_nearby(qx, qy, static_cast<int>(at), k, reach2, near, o)) {
+        // A selected row's distances are distinct and above 0 (0 would tie with q's own rank);
+        // all the same, the radius stays above a tenth of the typical one.
         reach2 = std::max(kRadiusGrowth2 * static_cast<double>(o[k - 1].squared_distance), 0.01 * typical2);
         ++stats.selected;
         continue;
@@ -131,19 +132,19 @@ class Grid {
     }
   };
 
-  // The k nearest of q (a point of the set) by selection rather than search: every point
-  // within sqrt(reach2) of q (a box of cells around that disk, scanned without branches), q
-  // itself included, then each one's rank among them by the floats of the squared distances
-  // (counted without branches, vectorised). That is the exact answer when the ranks 0 .. k
-  // are taken once each: q is rank 0, at 0, alone (a duplicate of q would share it), no two of
-  // the others share a float, and no point outside has a float as small (it would share a
-  // rank), so ranks 1 .. k are the k nearest in exact order (rounding to float keeps order,
-  // and distinct floats come from distinct doubles), and all points farther than the radius
-  // are farther still. Returns false where it cannot say (fewer than k others within the
-  // radius grown twice, more than kMaxRanked, ties): the ring search answers those.
-  // (q is ranked rather than left out of the scan: a test of every point against q's index
-  // cost more than one rank more.)
-  bool select_nearby(double qx, double qy, int k, double reach2, Nearby& s, NearNeighbor* out) const {
+  // The k nearest of q (the point at position `self` in xs_/ys_) by selection rather than
+  // search: every point within sqrt(reach2) of q (a box of cells around that disk, scanned
+  // without branches), q itself included, then each one's rank among them by the floats of the
+  // squared distances (counted without branches, vectorised). That is the exact answer when
+  // the ranks 0 .. k are taken once each and rank 0 is q: q is at 0, alone (a duplicate of q
+  // would share it), no two of the others share a float, and no point outside has a float as
+  // small (it would share a rank), so ranks 1 .. k are the k nearest in exact order (rounding
+  // to float keeps order, and distinct floats come from distinct doubles), and all points
+  // farther than the radius are farther still. Returns false where it cannot say (fewer than
+  // k others within the radius grown twice, more than kMaxRanked, ties, q not among them, which
+  // only an angle outside the chart can cause): the ring search answers those. (q is ranked rather than left out of the scan: a test of
+  // every point against q's index cost more than one rank more.)
+  bool select_nearby(double qx, double qy, int self, int k, double reach2, Nearby& s, NearNeighbor* out) const {
     int count = 0;
     for (int attempt = 0;; ++attempt) {
       count = 0;
@@ -182,7 +183,7 @@ class Grid {
       ranks_seen |= (std::uint64_t{1} << (to & 63)) & (std::uint64_t{0} - static_cast<std::uint64_t>(in));
     }
     const std::uint64_t all = ranks == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << ranks) - 1;
-    if (entered != ranks || ranks_seen != all) return false;
+    if (entered != ranks || ranks_seen != all || s.at[static_cast<std::size_t>(slot[0])] != self) return false;
     for (int r = 1; r <= k; ++r) {
       const int j = slot[r];
       out[r - 1] = {ids_[static_cast<std::size_t>(s.at[static_cast<std::size_t>(j)])], key[j]};

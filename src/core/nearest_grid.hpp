@@ -8,7 +8,10 @@
 // cell can hold a nearer point. Other spaces, and point sets with a dense cluster (where a grid
 // compares most pairs), use the k-d tree.
 // Answers are exactly brute force's: the same neighbours in the same order (ties by smaller
-// index), found with the same squared distances (rounded to float in the rows).
+// index), found with the same squared distances (rounded to float in the rows), for angles in
+// the chart [-pi, pi) (as Space::wrap leaves them, and as every configuration the planners
+// make is): the grid and the k-d tree place and prune points by their chart coordinates, and
+// may miss a neighbour given as an angle outside it.
 #include <vector>
 
 #include "core/nearest.hpp"

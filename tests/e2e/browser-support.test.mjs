@@ -38,7 +38,8 @@ test('without WebAssembly SIMD: the lab says so, and does not start', () => with
 }));
 
 test('without WebGL2: the lab says so, and does not start', () => withBrowser(async ({ browser, url }) => {
-  const { errors, text, started } = await statusWithout(browser, url, () => { delete window.WebGL2RenderingContext; });
+  const { errors, text, visible, started } = await statusWithout(browser, url, () => { delete window.WebGL2RenderingContext; });
+  assert.ok(visible);
   assert.match(text, /needs WebGL2/);
   assert.equal(started, false);
   assert.deepEqual(errors, []);

@@ -87,6 +87,18 @@ TEST_CASE("the point robot's clearance is nearest()'s, bit for bit, for any numb
         REQUIRE(std::memcmp(&fast, &slow, sizeof fast) == 0);
       }
     }
+  // A point on a polygon's edge (clearance -0) and on a disk's rim (+0): equal values, and the
+  // sign of the zero is the lower obstacle index's, as nearest() breaks ties.
+  for (const bool polygon_first : {true, false}) {
+    std::vector<csl::Obstacle> obstacles = {csl::PolygonObstacle{{{0.05, 0.3}, {0.25, 0.3}, {0.25, 0.7}, {0.05, 0.7}}},
+                                            csl::Disk{{0.5, 0.5}, 0.25}};
+    if (!polygon_first) std::swap(obstacles[0], obstacles[1]);
+    const csl::CollisionWorld world(csl::PointRobot{}, obstacles, {0, 0}, {1, 1});
+    const csl::Config rim = config({0.25, 0.5});
+    const double fast = world.clearance(rim), slow = world.nearest(rim).clearance;
+    CHECK(fast == 0.0);
+    CHECK(std::signbit(fast) == std::signbit(slow));
+  }
 }
 
 namespace {
