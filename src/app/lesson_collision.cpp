@@ -224,14 +224,23 @@ class CollisionLesson : public Lesson {
       draw_robot(view_, robot, scene_.start, theme::kStart, 3.0f);
       draw_robot(view_, robot, scene_.goal, theme::kGoal, 3.0f);
     }
-    // The grid's configurations: small squares, green free, vermillion in collision.
+    // The grid's configurations: ticks across the edge, green free, vermillion in collision,
+    // centred on their point (they sat above the line, as if beside it) and longer than a
+    // bisection dot is wide, so that a midpoint drawn over one leaves both its ends showing.
+    ImVec2 across(0.0f, 1.0f);  // on the screen, perpendicular to p -> q
+    if (!arm_) {
+      const ImVec2 a = view_.to_screen(Vec2(scene_.start[0], scene_.start[1]));
+      const ImVec2 b = view_.to_screen(Vec2(scene_.goal[0], scene_.goal[1]));
+      const float length = std::hypot(b.x - a.x, b.y - a.y);
+      if (length > 0.5f) across = ImVec2(-(b.y - a.y) / length, (b.x - a.x) / length);
+    }
     for (const EdgeEvent& e : grid_.trace) {
       const ImU32 c = e.free ? theme::kFree : theme::kHit;
       if (arm_) {
         draw_robot(view_, robot, e.q, theme::with_alpha(c, 90), 1.2f);
       } else {
         const ImVec2 s = view_.to_screen(Vec2(e.q[0], e.q[1]));
-        dl->AddRectFilled(ImVec2(s.x - 3, s.y - 9), ImVec2(s.x + 3, s.y - 3), c);
+        dl->AddLine(ImVec2(s.x - 9 * across.x, s.y - 9 * across.y), ImVec2(s.x + 9 * across.x, s.y + 9 * across.y), c, 4.0f);
       }
     }
     // Bisection, up to the step shown: evaluated midpoints numbered, the current piece's ends
