@@ -141,9 +141,10 @@ class Grid {
   // small (it would share a rank), so ranks 1 .. k are the k nearest in exact order (rounding
   // to float keeps order, and distinct floats come from distinct doubles), and all points
   // farther than the radius are farther still. Returns false where it cannot say (fewer than
-  // k others within the radius grown twice, more than kMaxRanked, ties, q not among them, which
-  // only an angle outside the chart can cause): the ring search answers those. (q is ranked rather than left out of the scan: a test of
-  // every point against q's index cost more than one rank more.)
+  // k others within the radius grown twice, more than kMaxRanked, ties, q not among them,
+  // which only an angle outside the chart can cause): the ring search answers those. (q is
+  // ranked rather than left out of the scan: a test of every point against q's index cost
+  // more than one rank more.)
   bool select_nearby(double qx, double qy, int self, int k, double reach2, Nearby& s, NearNeighbor* out) const {
     int count = 0;
     for (int attempt = 0;; ++attempt) {
