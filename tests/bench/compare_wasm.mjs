@@ -9,11 +9,13 @@ const wasm = process.argv[3] || 'build/wasm';
 const run = (cmd, args, env = {}) =>
   JSON.parse(execFileSync(cmd, args, { encoding: 'utf8', env: { ...process.env, ...env } }));
 
-// Native and wasm take turns, three rounds, each row keeping its fastest: this machine's speed
-// drifts over a minute, and one run of each compared two different machines.
+// Native and wasm take turns, five rounds, each row keeping its fastest: this machine's speed
+// drifts over a minute, and one run of each compared two different machines. (Three rounds
+// still gave 1.16-1.34 in one run and 1.31-1.70 in the next, minutes apart: either side could
+// miss every quiet spell.)
 const fastest = (runs) => runs[0].map((row, i) => runs.reduce((best, r) => (r[i].ours_us < best.ours_us ? r[i] : best), row));
 const nativeRuns = [], wasmRuns = [];
-for (let round = 0; round < 3; ++round) {
+for (let round = 0; round < 5; ++round) {
   nativeRuns.push(run(path.join(native, 'tests/bench/cspacelab_bench_prm'), ['--json']));
   wasmRuns.push(run(process.execPath, [path.join(wasm, 'tests/bench/cspacelab_bench_prm.js'), '--json'],
                     { NODE_OPTIONS: '--no-experimental-fetch' }));
