@@ -1,8 +1,6 @@
 #include "cli/args.hpp"
 
-#include <cerrno>
-#include <cmath>
-#include <cstdlib>
+#include "core/text.hpp"
 
 namespace csl::cli {
 
@@ -59,33 +57,23 @@ std::string Args::take_positional(const std::string& what) {
 void Args::finish() const {
   if (args_.empty()) return;
   const std::string& a = args_.front();
-  throw UsageError(a.rfind("--", 0) == 0 ? "unknown option " + a : "unexpected argument '" + a + "'");
+  throw UsageError(a.rfind("--", 0) == 0 ? "unknown option " + printable(a, 60)
+                                         : "unexpected argument '" + printable(a, 60) + "'");
 }
 
 double parse_number(const std::string& text, const std::string& what) {
-  const char* begin = text.c_str();
-  char* end = nullptr;
-  errno = 0;
-  double v = std::strtod(begin, &end);
-  // Plain decimals only: strtod would also take leading spaces and hexadecimal ("0x1p-2").
-  const bool decimal = !text.empty() && text.find_first_of(" \t\n\v\f\rxX") == std::string::npos;
-  // ERANGE with a finite result is an underflow (1e-310 is a subnormal, 1e-400 rounds to 0):
-  // a number all the same, unlike an overflow.
-  if (!decimal || end != begin + text.size() || !std::isfinite(v) || (errno == ERANGE && std::fabs(v) > 1.0))
-    throw UsageError(what + ": '" + text + "' is not a finite number");
-  return v;
+  // The one number syntax of core/text.hpp: what a link or a scene's scripts pass means the
+  // same here.
+  if (const auto v = parse_decimal(text)) return *v;
+  throw UsageError(what + ": '" + printable(text, 60) + "' is not a finite number");
 }
 
 long long parse_count(const std::string& text, const std::string& what, long long max, long long min) {
-  const char* begin = text.c_str();
-  char* end = nullptr;
-  errno = 0;
-  long long v = std::strtoll(begin, &end, 10);
-  const bool spaced = text.find_first_of(" \t\n\v\f\r") != std::string::npos;  // strtoll skips leading ones
-  if (text.empty() || spaced || end != begin + text.size() || errno == ERANGE || v < min || v > max)
-    throw UsageError(what + ": '" + text + "' is not an integer in [" + std::to_string(min) + ", " +
+  const auto v = parse_integer(text);
+  if (!v || *v < min || *v > max)
+    throw UsageError(what + ": '" + printable(text, 60) + "' is not an integer in [" + std::to_string(min) + ", " +
                      std::to_string(max) + "]");
-  return v;
+  return *v;
 }
 
 std::vector<double> parse_numbers(const std::string& text, const std::string& what) {

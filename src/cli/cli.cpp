@@ -6,6 +6,7 @@
 #include <exception>
 
 #include "cli/commands.hpp"
+#include "core/text.hpp"
 #include "core/version.hpp"
 
 namespace csl::cli {
@@ -44,7 +45,7 @@ int run(const std::vector<std::string>& argv, std::ostream& out) {
   // No command is a usage error like any other: one line on stderr, nothing on stdout.
   if (argv.empty()) throw UsageError("no command given (see cspacelab --help)");
   const auto nothing_after = [&](std::size_t used) {
-    if (argv.size() > used) throw UsageError("unexpected argument '" + argv[used] + "'");
+    if (argv.size() > used) throw UsageError("unexpected argument '" + printable(argv[used], 60) + "'");
   };
   if (argv[0] == "--help" || argv[0] == "-h") {
     nothing_after(1);
@@ -63,12 +64,12 @@ int run(const std::vector<std::string>& argv, std::ostream& out) {
       return 0;
     }
     const Command* c = find_command(argv[1]);
-    if (!c) throw UsageError("unknown command '" + argv[1] + "' (see cspacelab --help)");
+    if (!c) throw UsageError("unknown command '" + printable(argv[1], 60) + "' (see cspacelab --help)");
     out << c->usage;
     return 0;
   }
   const Command* c = find_command(argv[0]);
-  if (!c) throw UsageError("unknown command '" + argv[0] + "' (see cspacelab --help)");
+  if (!c) throw UsageError("unknown command '" + printable(argv[0], 60) + "' (see cspacelab --help)");
   Args args(std::vector<std::string>(argv.begin() + 1, argv.end()));
   if (args.take_flag("help")) {
     out << c->usage;
@@ -83,10 +84,12 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   try {
     return run(args, out);
   } catch (const UsageError& e) {
-    err << "cspacelab: " << e.what() << "\n";
+    // One line whatever the message quotes (file names, keys, arguments with newlines or
+    // escape sequences): control characters are escaped here, the last place they pass.
+    err << "cspacelab: " << printable(e.what()) << "\n";
     return 2;
   } catch (const std::exception& e) {
-    err << "cspacelab: internal error: " << e.what() << "\n";
+    err << "cspacelab: internal error: " << printable(e.what()) << "\n";
     return 1;
   }
 }

@@ -1,5 +1,6 @@
 // cspacelab check: one straight-line edge through either checker, with its trace; or the
 // smallest grid resolution that sees the collision (homework P12).
+#include <algorithm>
 #include <stdexcept>
 
 #include "cli/commands.hpp"
@@ -17,6 +18,7 @@ int run_check(Args& args, std::ostream& os) {
   const bool trace = args.take_flag("trace");
   const bool min_grid = args.take_flag("min-grid");
   const auto max_text = args.take("max");
+  const auto max_work_text = args.take("max-work");
   const std::string path = args.take_positional("SCENE.json");
   args.finish();
 
@@ -24,12 +26,18 @@ int run_check(Args& args, std::ostream& os) {
   const Config p = from ? parse_config(*from, scene, "--from") : scene.start;
   const Config q = to ? parse_config(*to, scene, "--to") : scene.goal;
   const CollisionWorld world(scene);
+  const double max_work = max_work_text ? parse_max_work(*max_work_text, "--max-work") : kCliMaxWork;
 
   if (min_grid) {
     if (checker_text || trace) throw UsageError("--min-grid takes neither --checker nor --trace");
     const int max_n = static_cast<int>(parse_count(max_text.value_or("1000"), "--max", 100000, 2));
-    const auto n = min_grid_resolution(world, p, q, max_n);
-    print_json(os, {{"min_grid", n ? json(*n) : json(nullptr)}, {"max", max_n}});
+    const auto limit = static_cast<long>(std::min(1e15, max_work / world.evaluation_cost()));
+    const MinGridResult r = min_grid_search(world, p, q, max_n, std::max(2L, limit));
+    if (r.exhausted)
+      throw UsageError("--min-grid: gave up after " + std::to_string(r.evaluations) + " configurations (" +
+                       work_text(max_work) + " of work, --max-work) without finding N; the edge grazes an "
+                       "obstacle, or take a smaller --max");
+    print_json(os, {{"min_grid", r.n ? json(*r.n) : json(nullptr)}, {"max", max_n}, {"evaluations", r.evaluations}});
     return 0;
   }
   if (max_text) throw UsageError("--max only goes with --min-grid");
@@ -45,6 +53,9 @@ int run_check(Args& args, std::ostream& os) {
   if (spec.kind == EdgeCheckerSpec::Kind::Step && trace && world.space().distance(p, q) / spec.step > 100000)
     throw UsageError("--trace: at most 100000 configurations (the trace would be too long)");
 
+  if (const double work = expected_check_work(world, spec, p, q); work > max_work)
+    throw UsageError("--checker " + spec.name() + ": this edge means about " + work_text(work) +
+                     " of work in this scene, more than the " + work_text(max_work) + " a check may take (--max-work)");
   const EdgeCheckResult r = check_edge(world, spec, p, q, trace);
   json out = edge_check_to_json(r, spec, trace);
   out["from"] = config_to_json(p);
@@ -58,7 +69,8 @@ int run_check(Args& args, std::ostream& os) {
 const Command kCheckCommand{
     "check", "check one straight-line edge (grid:N, step:D or bisection), or the minimum grid N",
     "Usage: cspacelab check SCENE.json [--from Q] [--to Q] [--checker bisection|grid:N|step:D] [--trace]\n"
-    "       cspacelab check SCENE.json [--from Q] [--to Q] --min-grid [--max N]\n\n"
+    "       cspacelab check SCENE.json [--from Q] [--to Q] --min-grid [--max N]\n"
+    "       (either form also takes --max-work W)\n\n"
     "Checks the straight line from --from to --to in configuration space (default: the\n"
     "scene's start and goal; angles take the shorter way round). Q is comma-separated numbers:\n"
     "x,y (point robot), theta1,theta2 (arm2, radians), x,y,theta (polygon robot).\n\n"
@@ -69,7 +81,9 @@ const Command kCheckCommand{
     "              apart in the configuration space's metric (N at most 1000000 an edge:\n"
     "              a D below |pq| / 999999 is then coarser than asked)\n"
     "  bisection   exact (Schwarzer, Saha, Latombe 2005): a piece [t0,t1] is free when\n"
-    "              lambda <= eta(t0) + eta(t1), else its midpoint is tested; endpoints first,\n"
+    "              lambda < eta(t0) + eta(t1) (strictly, with room for rounding: obstacles are\n"
+    "              closed, so a path that touches one collides), else its midpoint is tested;\n"
+    "              endpoints first,\n"
     "              then pieces breadth first (coarse before fine, left before right).\n"
     "              (default)\n\n"
     "Output:\n"
@@ -81,12 +95,17 @@ const Command kCheckCommand{
     "    endpoints t0 = t1 = t and lambda = 0)\n"
     "  pieces (bisection with --trace): the pieces proven free, in order:\n"
     "    {\"t0\", \"t1\", \"lambda\", \"eta0\", \"eta1\", \"depth\", \"unresolved\"}; unresolved = a\n"
-    "    piece shorter than 1e-12, or one left after 2^20 evaluations, that could not be\n"
-    "    proven free (the edge grazes an obstacle or runs along one): a collision\n\n"
-    "With --min-grid: {\"min_grid\": N|null, \"max\": M}, the smallest N in [2, M] (default\n"
-    "M = 1000, at most 100000) for which grid:N finds the collision; null at once when the\n"
-    "exact (bisection) check proves the edge free. An edge in collision that no grid up to M\n"
-    "sees (a thin wall crossed at a slant) costs about M^2 / 2 evaluations: seconds at M = 30000.\n",
+    "    piece shorter than 1e-12, or one left after the check's evaluation limit (2^20, fewer\n"
+    "    where one configuration costs more than 32 units: at most 2^25 units a check), that\n"
+    "    could not be proven free (the edge grazes an obstacle or runs along one): a collision\n\n"
+    "With --min-grid: {\"min_grid\": N|null, \"max\": M, \"evaluations\": E}, the smallest N in\n"
+    "[2, M] (default M = 1000, at most 100000) for which grid:N finds the collision; null at once\n"
+    "when the exact (bisection) check proves the edge free. Grids are tried N = 2, 3, ..., but a\n"
+    "configuration is only tested where those tested so far do not prove it free (their\n"
+    "clearances' balls cover it): the answer of testing every grid in full, from about one\n"
+    "configuration per N near each collision (E counts them, the bisection check's included).\n"
+    "A check or search expected to take more than W units of work (default 1e11; see `cspacelab\n"
+    "help plan`) is an error: --max-work raises the limit.\n",
     run_check};
 
 }  // namespace csl::cli

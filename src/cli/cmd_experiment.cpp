@@ -45,10 +45,31 @@ void require_total_budget(const Space& space, const PlannerOptions& options, con
                    (reference > limit ? ", and fewer --reference-samples" : ""));
 }
 
+// The runs' work together (work.hpp): each run is held to --max-work, and all of them, with the
+// reference run and its Monte Carlo volume, to `limit` (--max-total-work).
+void require_total_work(const CollisionWorld& world, const ExperimentParams& params, double limit) {
+  PrmParams run;
+  run.neighbors = params.neighbors;
+  run.checker = params.checker;
+  run.samples = params.reference_samples;
+  double total = expected_prm_work(world, run).total() + static_cast<double>(params.volume_samples) * world.evaluation_cost();
+  for (int n : params.sample_counts) {
+    run.samples = n;
+    total += params.trials * expected_prm_work(world, run).total();
+  }
+  if (total <= limit) return;
+  throw UsageError("the experiment's runs mean about " + work_text(total) + " of work in all, more than the " +
+                   work_text(limit) + " an experiment may take (--max-total-work, default 10 x --max-work); " +
+                   "take fewer trials, fewer samples or fewer neighbours");
+}
+
 int run_experiment(Args& args, std::ostream& os) {
   const auto list = args.take("samples-list"), trials = args.take("trials"), reference = args.take("reference-samples");
   const auto max_total_text = args.take("max-total-pairs");
+  const auto max_total_work_text = args.take("max-total-work");
   const PlannerOptions options = take_planner_options(args);
+  const double max_total_work =
+      max_total_work_text ? parse_max_work(*max_total_work_text, "--max-total-work") : 10.0 * options.max_work;
   double max_total = kDefaultRunsInTotal * options.max_pairs;
   if (max_total_text) {
     max_total = parse_number(*max_total_text, "--max-total-pairs");
@@ -84,6 +105,14 @@ int run_experiment(Args& args, std::ostream& os) {
   require_pairs_budget(world.space(), options, ex->params().reference_samples,
                        "the reference run (--reference-samples M, by default 4 x the largest n, within [2000, 1000000]): ");
   require_total_budget(world.space(), options, params, *list, ex->params().reference_samples, max_total);
+  PrmParams largest;
+  largest.neighbors = params.neighbors;
+  largest.checker = params.checker;
+  largest.samples = *std::max_element(params.sample_counts.begin(), params.sample_counts.end());
+  require_work_budget(world, options, largest);
+  largest.samples = ex->params().reference_samples;
+  require_work_budget(world, options, largest, "the reference run: ");
+  require_total_work(world, ex->params(), max_total_work);
   ex->run();
 
   const ExperimentReference& ref = ex->reference();
@@ -120,7 +149,8 @@ const Command kExperimentCommand{
     "experiment", "PRM's failure rate over many runs, for several n, against the bound",
     "Usage: cspacelab experiment SCENE.json --samples-list N1,N2,... [--trials T]\n"
     "                            [--k K | --radius R | --prm-star] [--checker C] [--seed S]\n"
-    "                            [--reference-samples M] [--max-pairs P] [--max-total-pairs P]\n\n"
+    "                            [--reference-samples M] [--max-pairs P] [--max-total-pairs P]\n"
+    "                            [--max-work W] [--max-total-work W]\n\n"
     "Runs PRM T times (default 20, each with its own seed derived from S) for each n, and counts\n"
     "failures: start and goal not connected. Whether a path exists at all, and its length L and\n"
     "clearance r for the bound of section 2.1, come from a reference run with M samples (default,\n"
@@ -139,7 +169,10 @@ const Command kExperimentCommand{
     "(--max-pairs, default 2e7), nothing runs: an error (exit status 2) says so, and for --radius\n"
     "the largest radius that fits. So does an experiment whose runs, T for each n and the reference\n"
     "run, are expected to check more than --max-total-pairs in all (default 50 x --max-pairs: 1e9,\n"
-    "minutes; raising --max-pairs raises it too).\n",
+    "minutes; raising --max-pairs raises it too).\n"
+    "Work is held the same way (see `cspacelab help plan`): each run to --max-work (default\n"
+    "1e11 units), all of them with the reference run and its Monte Carlo volume to\n"
+    "--max-total-work (default 10 x --max-work).\n",
     run_experiment};
 
 }  // namespace csl::cli

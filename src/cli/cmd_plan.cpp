@@ -34,6 +34,7 @@ int run_plan(Args& args, std::ostream& os) {
   params.checker = options.checker;
   params.seed = options.seed;
   if (connector == "potential") params.connector = std::make_shared<const PotentialConnector>();
+  require_work_budget(world, options, params);
   Prm prm(world, scene.start, scene.goal, params);
 
   const auto t0 = std::chrono::steady_clock::now();
@@ -83,7 +84,7 @@ const Command kPlanCommand{
     "plan", "plan from start to goal with the probabilistic roadmap method",
     "Usage: cspacelab plan SCENE.json [--samples N] [--k K | --radius R | --prm-star]\n"
     "                      [--checker bisection|grid:N|step:D] [--seed S] [--roadmap]\n"
-    "                      [--connector straight|potential] [--max-pairs P]\n\n"
+    "                      [--connector straight|potential] [--max-pairs P] [--max-work W]\n\n"
     "Runs PRM as the homework states it: add start and goal to V; draw N samples (default 200)\n"
     "uniformly in the configuration space and keep the free ones; for each vertex, check the\n"
     "straight line to each close vertex (the K nearest, default 10; all within distance R; or\n"
@@ -110,7 +111,15 @@ const Command kPlanCommand{
     "So is a run expected to check more than P candidate pairs (default 2e7): a radius makes them\n"
     "grow with N^2 ((N+2)(N+1)/2 times the chance that two vertices lie within R), k rules with\n"
     "(N+2) K.\n"
-    "For --radius the error says the largest R that fits; --max-pairs raises the limit.\n",
+    "For --radius the error says the largest R that fits; --max-pairs raises the limit.\n"
+    "And so is a run expected to take more than W units of work (default 1e11, a minute or\n"
+    "so): a unit is one primitive distance test (the robot's point, link or edge against a\n"
+    "disk, a wall or a polygon edge); a configuration costs one per obstacle plus the robot's\n"
+    "parts times the obstacles' (a point among 1000 polygons of 256 vertices: 257000); a run\n"
+    "costs its samples' configurations plus its candidate pairs times the configurations one\n"
+    "edge check is expected to test (grid:N: N - 2; step:D: the expected edge length / D;\n"
+    "bisection: 2; the potential connector: 800). The error gives the figures; --max-work\n"
+    "raises the limit. The lab in the browser takes at most 4e9.\n",
     run_plan};
 
 }  // namespace csl::cli

@@ -9,6 +9,7 @@
 #include "core/collision.hpp"
 #include "core/prm.hpp"
 #include "core/scene.hpp"
+#include "core/work.hpp"
 
 namespace csl::cli {
 
@@ -55,6 +56,7 @@ struct PlannerOptions {
   EdgeCheckerSpec checker;
   std::uint64_t seed = 1;
   double max_pairs = kDefaultMaxPairs;  ///< --max-pairs
+  double max_work = kCliMaxWork;        ///< --max-work (work.hpp's units)
 };
 PlannerOptions take_planner_options(Args& args);
 /// An expected count of candidate pairs as an error names it: in full below 10^6, else with
@@ -69,6 +71,14 @@ std::pair<std::string, std::string> pairs_and_limit_text(double pairs, double li
 /// `run`, if not empty, names the run first ("the reference run: ").
 void require_pairs_budget(const Space& space, const PlannerOptions& options, int samples,
                           const std::string& run = "");
+/// UsageError if PRM with `params` on `world` is expected to take more than options.max_work
+/// units (expected_prm_work(): the pairs times what one edge check costs in this scene with this
+/// checker, so 1000 polygons of 256 vertices with grid:1000000 is refused, where the pairs
+/// alone passed and the run took hours). `run` as for require_pairs_budget.
+void require_work_budget(const CollisionWorld& world, const PlannerOptions& options, const PrmParams& params,
+                         const std::string& run = "");
+/// --max-work's value: a number >= 1.
+double parse_max_work(const std::string& text, const std::string& what);
 /// UsageError if q is not free in the scene ("where it matters": planning from it).
 void require_free(const CollisionWorld& world, const Config& q, const std::string& what);
 /// Prints JSON on os (one line; invalid UTF-8 in strings is replaced, not an error).

@@ -82,6 +82,7 @@ PlannerOptions take_planner_options(Args& args) {
     o.max_pairs = parse_number(*max_pairs, "--max-pairs");
     if (!(o.max_pairs >= 1.0)) throw UsageError("--max-pairs: must be at least 1");
   }
+  if (const auto max_work = args.take("max-work")) o.max_work = parse_max_work(*max_work, "--max-work");
   if (const auto seed = args.take("seed"))
     o.seed = static_cast<std::uint64_t>(parse_count(*seed, "--seed", 9007199254740991LL));  // 2^53 - 1: exact in JSON
   return o;
@@ -130,6 +131,28 @@ void require_pairs_budget(const Space& space, const PlannerOptions& options, int
                   "(--max-pairs); take fewer samples or fewer neighbours (--k)",
                   named.c_str(), samples, pairs.c_str(), limit.c_str());
   }
+  throw UsageError(run + text);
+}
+
+double parse_max_work(const std::string& text, const std::string& what) {
+  const double v = parse_number(text, what);
+  if (!(v >= 1.0)) throw UsageError(what + ": must be at least 1");
+  return v;
+}
+
+void require_work_budget(const CollisionWorld& world, const PlannerOptions& options, const PrmParams& params,
+                         const std::string& run) {
+  const WorkEstimate w = expected_prm_work(world, params);
+  if (w.total() <= options.max_work) return;
+  char text[600];
+  std::snprintf(text, sizeof text,
+                "%d samples with %s and %s mean about %s of work (%s candidate pairs at %s each; one "
+                "configuration of this scene costs %.0f), more than the %s a run may take (--max-work); "
+                "take fewer samples, fewer neighbours or a coarser checker",
+                params.samples, params.neighbors.name().c_str(),
+                params.connector ? "the potential connector" : params.checker.name().c_str(), work_text(w.total()).c_str(),
+                pairs_text(w.pairs).c_str(), work_text(w.per_edge).c_str(), world.evaluation_cost(),
+                work_text(options.max_work).c_str());
   throw UsageError(run + text);
 }
 

@@ -42,6 +42,16 @@ CollisionWorld::CollisionWorld(Robot robot, std::vector<Obstacle> obstacles, con
   if (const auto* arm = std::get_if<ArmRobot>(&robot_))
     scale_ = std::max(scale_, std::fabs(arm->base.x()) + std::fabs(arm->base.y()) + arm->length1 + arm->length2);
   if (const auto* poly = std::get_if<PolygonRobot>(&robot_)) scale_ += poly->radius;
+  // The robot's parts each test against each obstacle's: a point (1), two links, or the
+  // polygon robot's edges.
+  const double parts = robot_.index() == 0 ? 1.0
+                       : robot_.index() == 1 ? 2.0
+                                             : static_cast<double>(std::get<PolygonRobot>(robot_).body.size());
+  evaluation_cost_ = 1.0;
+  for (const Obstacle& o : obstacles_) {
+    const auto* poly = std::get_if<PolygonObstacle>(&o);
+    evaluation_cost_ += 1.0 + parts * (poly ? static_cast<double>(poly->vertices.size()) : 1.0);
+  }
   for (std::size_t i = 0; i < obstacles_.size(); ++i) {
     const Box box = obstacle_bounds(obstacles_[i]);
     reach(box.min);

@@ -40,6 +40,13 @@ class CollisionWorld {
   /// rounding errors in poses and distances scale with it.
   double scale() const { return scale_; }
 
+  /// What evaluating one configuration (clearance() or is_free()) costs at most, in units of
+  /// one primitive distance test (the robot's point, link or edge against a disk, a wall or one
+  /// polygon edge), plus one bounding-box test per obstacle: the measure of work the lab's
+  /// budgets count in (work.hpp). An upper estimate: the boxes prune most obstacles far from
+  /// the robot. At least 1.
+  double evaluation_cost() const { return evaluation_cost_; }
+
   /// lambda(p, q) for this robot (see motion_bound in robot.hpp).
   double motion_bound(const Config& p, const Config& q) const { return csl::motion_bound(robot_, p, q); }
   /// The same, given the space's distance from p to q (Space::distance(p, q)): for the point
@@ -79,6 +86,7 @@ class CollisionWorld {
   bool is_polygon_ = false;
   Space space_;
   double scale_ = 0.0;
+  double evaluation_cost_ = 1.0;
   mutable Vec2 point_;           // point robot
   mutable Vec2 joints_[3];       // arm: base, elbow, tip
   mutable Polygon polygon_;      // polygon robot

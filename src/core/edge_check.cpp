@@ -4,30 +4,29 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <stdexcept>
+
+#include "core/text.hpp"
 
 namespace csl {
 
 EdgeCheckerSpec EdgeCheckerSpec::parse(const std::string& text) {
+  // Numbers in the one syntax of core/text.hpp: "grid: 5" and "step:0x1p-3" are refused here
+  // as --from refuses them.
   if (text == "bisection") return {Kind::Bisection, 0};
   if (text.rfind("grid:", 0) == 0) {
-    const std::string digits = text.substr(5);
-    char* end = nullptr;
-    const long n = digits.empty() ? 0 : std::strtol(digits.c_str(), &end, 10);
-    if (!digits.empty() && end == digits.c_str() + digits.size() && n >= 2 && n <= kMaxGridResolution)
-      return {Kind::Grid, static_cast<int>(n)};
-    throw std::invalid_argument("checker '" + text + "': N must be an integer in [2, " +
+    const auto n = parse_integer(std::string_view(text).substr(5));
+    if (n && *n >= 2 && *n <= kMaxGridResolution) return {Kind::Grid, static_cast<int>(*n)};
+    throw std::invalid_argument("checker '" + printable(text, 40) + "': N must be an integer in [2, " +
                                 std::to_string(kMaxGridResolution) + "]");
   }
   if (text.rfind("step:", 0) == 0) {
-    const std::string digits = text.substr(5);
-    char* end = nullptr;
-    const double d = digits.empty() ? 0.0 : std::strtod(digits.c_str(), &end);
-    if (!digits.empty() && end == digits.c_str() + digits.size() && std::isfinite(d) && d > 0.0)
-      return {Kind::Step, 0, d};
-    throw std::invalid_argument("checker '" + text + "': D must be a number > 0");
+    const auto d = parse_decimal(std::string_view(text).substr(5));
+    if (d && *d > 0.0) return {Kind::Step, 0, *d};
+    throw std::invalid_argument("checker '" + printable(text, 40) + "': D must be a number > 0");
   }
-  throw std::invalid_argument("unknown checker '" + text + "' (bisection, grid:N or step:D)");
+  throw std::invalid_argument("unknown checker '" + printable(text, 40) + "' (bisection, grid:N or step:D)");
 }
 
 std::string EdgeCheckerSpec::name() const {
@@ -145,9 +144,9 @@ void EdgeChecker::step_bisection() {
   const double lambda = world_->motion_bound(a, b);
 
   EdgeEvent& e = event_;
-  if (lambda <= piece.eta0 + piece.eta1) {
+  if (certifies(lambda, piece.eta0, piece.eta1)) {
     e.kind = EdgeEvent::Kind::Certify;
-  } else if (piece.t1 - piece.t0 < kMinBisectionPiece || evaluations_ >= kMaxBisectionEvaluations) {
+  } else if (piece.t1 - piece.t0 < kMinBisectionPiece || evaluations_ >= max_evaluations_) {
     e.kind = EdgeEvent::Kind::Unresolved;
     verdict_ = Verdict::Collision;
     collision_t_ = 0.5 * (piece.t0 + piece.t1);
@@ -197,18 +196,81 @@ EdgeCheckResult check_edge(const CollisionWorld& world, const EdgeCheckerSpec& s
   return result;
 }
 
-std::optional<int> min_grid_resolution(const CollisionWorld& world, const Config& p, const Config& q, int max_n) {
+MinGridResult min_grid_search(const CollisionWorld& world, const Config& p, const Config& q, int max_n,
+                              long max_evaluations) {
+  MinGridResult result;
   // An edge the exact check proves free has no configuration in collision, so no grid finds
-  // one: answered at once rather than by checking every N up to max_n (N^2 / 2 evaluations in
-  // all, minutes for max_n = 100000).
-  if (!check_edge(world, {EdgeCheckerSpec::Kind::Bisection, 0}, p, q).collision) return std::nullopt;
-  for (int n = 2; n <= max_n; ++n) {
-    EdgeChecker checker(world, {EdgeCheckerSpec::Kind::Grid, n}, /*report_clearance=*/false);
-    checker.reset(p, q);
-    while (!checker.done()) checker.step();
-    if (checker.verdict() == Verdict::Collision) return n;
+  // one: answered at once.
+  const EdgeCheckResult exact = check_edge(world, {EdgeCheckerSpec::Kind::Bisection, 0}, p, q);
+  result.evaluations = exact.evaluations;
+  if (!exact.collision) return result;
+
+  // [0, 1] cut at configurations evaluated so far, all free (one in collision ends the search).
+  // A gap between two cuts is dropped once their balls prove it free, as bisection certifies a
+  // piece; the rest stay open, and only the grid's configurations inside them are evaluated.
+  // The grid's t and configuration are computed exactly as the grid checker computes them
+  // (step_grid(), evaluate()), so each evaluation is the grid's own; and a configuration
+  // proven free by a gap is free, so skipping it never changes an answer.
+  const Space& space = world.space();
+  const Config delta = space.difference(p, q);
+  const EdgeChecker rules(world, {EdgeCheckerSpec::Kind::Bisection, 0});
+  const auto at = [&](double t) { return t == 0.0 ? p : (t == 1.0 ? q : space.along(p, delta, t)); };
+  struct Gap {
+    double t0, eta0, t1, eta1;
+  };
+  const auto proven = [&](const Gap& g) {
+    return rules.certifies(world.motion_bound(at(g.t0), at(g.t1)), g.eta0, g.eta1);
+  };
+  // The endpoints are the grid's first and last configurations for every N.
+  const double eta_p = world.clearance(p), eta_q = world.clearance(q);
+  result.evaluations += 2;
+  if (!(eta_p > 0.0) || !(eta_q > 0.0)) {
+    if (max_n >= 2) result.n = 2;
+    return result;
   }
-  return std::nullopt;
+  std::vector<Gap> open, next;
+  if (const Gap whole{0.0, eta_p, 1.0, eta_q}; !proven(whole)) open.push_back(whole);
+  for (int n = 3; n <= max_n && !open.empty(); ++n) {
+    const double last = static_cast<double>(n - 1);
+    next.clear();
+    for (Gap g : open) {
+      // Grid indices whose t may fall inside (t0, t1): a step wider on each side, as the
+      // division may round either way; each t is then compared exactly.
+      const long first = std::max(1L, static_cast<long>(std::floor(g.t0 * last)) - 1);
+      const long final = std::min(static_cast<long>(n) - 2, static_cast<long>(std::ceil(g.t1 * last)) + 1);
+      bool gap_open = true;
+      for (long i = first; i <= final && gap_open; ++i) {
+        const double t = static_cast<double>(i) / last;  // as step_grid() computes it
+        if (!(t > g.t0 && t < g.t1)) continue;
+        if (result.evaluations >= max_evaluations) {
+          result.exhausted = true;
+          return result;
+        }
+        ++result.evaluations;
+        const double eta = world.clearance(at(t));
+        if (!(eta > 0.0)) {  // the grid's is_free() is exactly clearance() > 0
+          result.n = n;
+          return result;
+        }
+        const Gap left{g.t0, g.eta0, t, eta}, right{t, eta, g.t1, g.eta1};
+        if (!proven(left)) next.push_back(left);
+        g = right;
+        gap_open = !proven(right);
+      }
+      if (gap_open) next.push_back(g);
+    }
+    std::swap(open, next);
+  }
+  return result;
+}
+
+std::optional<int> min_grid_resolution(const CollisionWorld& world, const Config& p, const Config& q, int max_n) {
+  return min_grid_search(world, p, q, max_n, std::numeric_limits<long>::max()).n;
+}
+
+int bisection_evaluation_limit(const CollisionWorld& world) {
+  const double fits = kMaxEdgeCheckWork / world.evaluation_cost();
+  return fits >= kMaxBisectionEvaluations ? kMaxBisectionEvaluations : std::max(128, static_cast<int>(fits));
 }
 
 }  // namespace csl

@@ -10,16 +10,20 @@
 //   configurations at most D apart in the space's metric (what OMPL's DiscreteMotionValidator
 //   does with its resolution), so long and short edges get the same density.
 // - Bisection: exact, after Schwarzer, Saha and Latombe (2005). A piece [t0, t1] of the path is
-//   free if lambda(q(t0), q(t1)) <= eta(q(t0)) + eta(q(t1)); otherwise its midpoint m is
-//   evaluated: in collision ends the check, free splits the piece into [t0, m] and [m, t1].
-//   Order: the endpoints (t = 0, then t = 1), then pieces first-in first-out, left before right,
-//   i.e. breadth first: all pieces of one depth before the next, coarse before fine. A piece
-//   shorter than kMinBisectionPiece that still cannot be certified (the path grazes an
-//   obstacle) is reported as a collision: the checker never accepts what it has not proven.
-//   So is a piece still uncertified after kMaxBisectionEvaluations configurations: a path
-//   along an obstacle at clearance eta needs about length / eta of them, and breadth first
-//   holds a whole depth in the queue (an edge along a wall of the wall-gap scene at a clearance
-//   of 3e-17 heads for 2^40: before this budget it passed 20 s and 1.4 GB and kept going).
+//   free if lambda(q(t0), q(t1)) < eta(q(t0)) + eta(q(t1)), by more than a margin for rounding
+//   (certifies()); otherwise its midpoint m is evaluated: in collision ends the check, free
+//   splits the piece into [t0, m] and [m, t1]. The handout writes (1) with <=, which proves a
+//   path free of the obstacles' interiors; the lab's obstacles are closed sets (touching is a
+//   collision: a disk of radius 0 is a point to avoid), and equality allows a path through the
+//   point where the two balls touch, so the lab asks for <. Order: the endpoints (t = 0, then
+//   t = 1), then pieces first-in first-out, left before right, i.e. breadth first: all pieces
+//   of one depth before the next, coarse before fine. A piece shorter than kMinBisectionPiece
+//   that still cannot be certified (the path grazes an obstacle) is reported as a collision:
+//   the checker never accepts what it has not proven. So is a piece still uncertified after
+//   bisection_evaluation_limit() configurations: a path along an obstacle at clearance eta
+//   needs about length / eta of them, and breadth first holds a whole depth in the queue (an
+//   edge along a wall of the wall-gap scene at a clearance of 3e-17 heads for 2^40: before this
+//   limit it passed 20 s and 1.4 GB and kept going).
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,15 +33,23 @@
 namespace csl {
 
 inline constexpr double kMinBisectionPiece = 1e-12;
-/// Configurations one bisection check evaluates at most before it gives up (as a collision).
+/// Configurations one bisection check evaluates at most before it gives up (as a collision)...
 inline constexpr int kMaxBisectionEvaluations = 1 << 20;
+/// ...and fewer in scenes where one configuration costs much (work.hpp's units): one check
+/// does at most about this much work, a fraction of a second, so that no single step of a
+/// planner holds a browser's frame for long (1000 polygons of 256 vertices: 128 configurations
+/// rather than 2^20, which took minutes).
+inline constexpr double kMaxEdgeCheckWork = 1 << 25;
+/// The evaluations one bisection check of this world may make: kMaxBisectionEvaluations, or
+/// fewer where kMaxEdgeCheckWork runs out first (at least 128).
+int bisection_evaluation_limit(const CollisionWorld& world);
 
 /// What one step of an edge checker did. t, q, eta and free describe the configuration of an
 /// Evaluate step only; the piece fields describe bisection steps.
 struct EdgeEvent {
   enum class Kind {
     Evaluate,    ///< a configuration q(t) was tested: t, q, eta, free
-    Certify,     ///< bisection: piece [t0, t1] proven free, lambda <= eta0 + eta1
+    Certify,     ///< bisection: piece [t0, t1] proven free, lambda < eta0 + eta1 (certifies())
     Unresolved,  ///< bisection: piece too short to split further (or out of budget), a collision
   };
   Kind kind = Kind::Evaluate;
@@ -74,7 +86,11 @@ class EdgeChecker {
   /// the lesson); without it, only whether each is free (faster, for roadmaps). Bisection
   /// always needs eta.
   EdgeChecker(const CollisionWorld& world, EdgeCheckerSpec spec, bool report_clearance = true)
-      : world_(&world), spec_(spec), report_clearance_(report_clearance), slack_(1e-9 + 1e-13 * world.scale()) {}
+      : world_(&world),
+        spec_(spec),
+        report_clearance_(report_clearance),
+        slack_(1e-9 + 1e-13 * world.scale()),
+        max_evaluations_(bisection_evaluation_limit(world)) {}
   EdgeChecker(CollisionWorld&&, EdgeCheckerSpec, bool = true) = delete;  // the world must outlive it
 
   /// Starts checking p -> q. With `endpoints_known_free`, the caller vouches that p and q are
@@ -128,6 +144,15 @@ class EdgeChecker {
     // more, gives 3 configurations or more. No division: its latency was on every roadmap edge.
     return length > spec_.step;
   }
+  /// Bisection's test of a piece whose ends have clearances eta0 and eta1 and whose motion
+  /// bound is lambda: lambda < eta0 + eta1 with room for rounding (relative 1e-12 in lambda,
+  /// and the scene's slack per end, as check_grid_known_free() allows), so that a piece whose
+  /// balls only touch, or touch up to rounding, is split rather than certified.
+  bool certifies(double lambda, double eta0, double eta1) const {
+    return lambda * (1.0 + 1e-12) + 2.0 * slack_ < eta0 + eta1;
+  }
+  /// The configurations this checker's bisection evaluates at most per edge.
+  int max_evaluations() const { return max_evaluations_; }
   bool done() const { return verdict_ != Verdict::Pending; }
   /// One unit of work (see the file comment); call only while !done(). The event stays valid
   /// until the next step() or reset() (no copy per step: roadmaps check millions of edges).
@@ -160,7 +185,8 @@ class EdgeChecker {
   const CollisionWorld* world_;
   EdgeCheckerSpec spec_;
   bool report_clearance_;
-  double slack_;  // check_grid_known_free: an absolute margin for rounding, from the scene's scale
+  double slack_;  // an absolute margin for rounding, from the scene's scale
+  int max_evaluations_;  // bisection_evaluation_limit(world)
   Config p_, q_, delta_;  // delta_ = q - p the short way round
   Verdict verdict_ = Verdict::Free;
   int evaluations_ = 0;
@@ -188,8 +214,21 @@ struct EdgeCheckResult {
 EdgeCheckResult check_edge(const CollisionWorld& world, const EdgeCheckerSpec& spec, const Config& p,
                            const Config& q, bool want_trace = false);
 
-/// The smallest N in [2, max_n] for which the grid checker finds a collision on p -> q, if any
-/// (none, at once, when the exact bisection check proves the edge free).
+/// The smallest N in [2, max_n] for which the grid checker finds a collision on p -> q.
+struct MinGridResult {
+  std::optional<int> n;    ///< none: no grid up to max_n sees it (or the edge is proven free)
+  long evaluations = 0;    ///< configurations evaluated (the bisection check's included)
+  bool exhausted = false;  ///< gave up after max_evaluations: n is not known
+};
+/// None, at once, when the exact bisection check proves the edge free. Otherwise N = 2, 3, ...
+/// in turn, but a configuration of grid N is evaluated only where the configurations evaluated
+/// so far do not already prove it free (their clearances' balls cover it, as bisection
+/// certifies pieces): the same answer as checking every grid in full (max_n^2 / 2 evaluations,
+/// minutes for max_n = 100000 and a thin wall), from about one evaluation per N near each
+/// collision. Stops with `exhausted` after `max_evaluations`.
+MinGridResult min_grid_search(const CollisionWorld& world, const Config& p, const Config& q, int max_n,
+                              long max_evaluations);
+/// min_grid_search() without a limit: its N.
 std::optional<int> min_grid_resolution(const CollisionWorld& world, const Config& p, const Config& q, int max_n);
 
 }  // namespace csl

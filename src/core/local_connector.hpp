@@ -33,6 +33,9 @@ class LocalConnector {
   /// connectors: PRM derives it from its own seed and the pair of vertices.
   virtual LocalPath connect(const CollisionWorld& world, const Config& p, const Config& q,
                             std::uint64_t seed) const = 0;
+  /// Configurations (or the like: field evaluations) one connect() is expected to evaluate at
+  /// most, for the work budget (work.hpp).
+  virtual double expected_evaluations() const = 0;
 };
 
 /// The length of p -> waypoints -> q in the space's metric (a sum in path order).

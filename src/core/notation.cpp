@@ -1,5 +1,7 @@
 #include "core/notation.hpp"
 
+#include "core/text.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
@@ -76,8 +78,8 @@ void check_joint_letters(const std::string& joints) {
     if (c == 'R' || c == 'P') continue;
     // Quote the letter only when it is a whole (ASCII) character, so messages stay valid UTF-8.
     const std::string what =
-        static_cast<unsigned char>(c) < 0x80 ? "'" + std::string(1, c) + "'" : "a character";
-    throw NotationError("joints: " + what + " in '" + joints +
+        static_cast<unsigned char>(c) < 0x80 ? "'" + printable(std::string(1, c)) + "'" : "a character";
+    throw NotationError("joints: " + what + " in '" + printable(joints, 40) +
                         "' is not a joint letter (R revolute, P prismatic)");
   }
 }
@@ -284,8 +286,12 @@ class SpaceReader {
     const std::size_t start = pos_;
     const char c = at_end() ? '\0' : to_upper(peek());
     if (c == '(') {
+      // The parser recurses once per '(': without a limit, 65000 of them (10000 on the
+      // browser's stack) overflowed the stack. No written space needs more than a few.
+      if (++depth_ > kMaxNesting) fail(pos_, "too many nested parentheses (at most " + std::to_string(kMaxNesting) + ")");
       ++pos_;
       SpaceSignature q = product();
+      --depth_;
       skip_spaces();
       if (!eat(')')) fail(pos_, "expected ')'");
       return with_power(q);
@@ -384,12 +390,14 @@ class SpaceReader {
     if (at >= s_.size()) throw NotationError(what + " (at the end)");
     std::size_t end = std::min(s_.size(), at + 16);
     while (end < s_.size() && (static_cast<unsigned char>(s_[end]) & 0xC0) == 0x80) ++end;
-    throw NotationError(what + " (at '" + s_.substr(at, end - at) +
+    throw NotationError(what + " (at '" + printable(s_.substr(at, end - at)) +
                         (end < s_.size() ? "...')" : "')"));
   }
 
+  static constexpr int kMaxNesting = 32;
   std::string s_;
   std::size_t pos_ = 0;
+  int depth_ = 0;
 };
 
 // ------------------------------------------------------------------------- checking answers
@@ -546,6 +554,8 @@ std::string squeezed(const std::string& s) {
 }  // namespace
 
 RobotDescription parse_robot_description(const std::string& text) {
+  if (text.size() > kMaxNotationText)
+    throw NotationError("the description is longer than " + std::to_string(kMaxNotationText) + " characters");
   // "base = planar" means base=planar: drop the spaces next to '=' before splitting.
   std::string s;
   for (std::size_t i = 0; i < text.size(); ++i) {
@@ -570,12 +580,12 @@ RobotDescription parse_robot_description(const std::string& text) {
 
     const std::size_t eq = token.find('=');
     if (eq == std::string::npos)
-      throw NotationError("'" + token + "' is not key=value (keys: base, joints, wrist)");
+      throw NotationError("'" + printable(token, 40) + "' is not key=value (keys: base, joints, wrist)");
     const std::string key = token.substr(0, eq), value = token.substr(eq + 1);
     const auto once = [&](bool& seen) {
-      if (seen) throw NotationError(key + " given twice");
+      if (seen) throw NotationError(printable(key, 40) + " given twice");
       seen = true;
-      if (value.empty()) throw NotationError(key + ": missing value");
+      if (value.empty()) throw NotationError(printable(key, 40) + ": missing value");
     };
     if (key == "base") {
       once(seen_base);
@@ -583,7 +593,7 @@ RobotDescription parse_robot_description(const std::string& text) {
                                    [&](const BaseWord& b) { return value == b.word; });
       if (w == std::end(kBaseWords))
         throw NotationError(
-            "base: unknown value '" + value +
+            "base: unknown value '" + printable(value, 40) +
             "' (fixed, planar-translating, planar, spatial-translating or spatial)");
       robot.base = w->base;
     } else if (key == "joints") {
@@ -593,10 +603,10 @@ RobotDescription parse_robot_description(const std::string& text) {
     } else if (key == "wrist") {
       once(seen_wrist);
       if (value != "spherical" && value != "none")
-        throw NotationError("wrist: unknown value '" + value + "' (spherical or none)");
+        throw NotationError("wrist: unknown value '" + printable(value, 40) + "' (spherical or none)");
       robot.spherical_wrist = value == "spherical";
     } else {
-      throw NotationError("unknown key '" + key + "' (keys: base, joints, wrist)");
+      throw NotationError("unknown key '" + printable(key, 40) + "' (keys: base, joints, wrist)");
     }
   }
   return robot;
@@ -623,6 +633,8 @@ SpaceSignature signature_of(const RobotDescription& robot) {
 }
 
 SpaceSignature parse_space_expression(const std::string& text) {
+  if (text.size() > kMaxNotationText)
+    throw NotationError("the answer is longer than " + std::to_string(kMaxNotationText) + " characters");
   const std::string ascii = without_q(to_ascii(text));
   if (ascii.empty()) throw NotationError("the answer is empty");
   std::string lower;

@@ -31,6 +31,10 @@ struct RobotDescription {
   bool spherical_wrist = false;  ///< three more revolute joints whose axes meet in one point
 };
 
+/// The longest description or written space the parsers read (bytes): far more than any
+/// robot needs, and a bound on what an error message may quote.
+inline constexpr std::size_t kMaxNotationText = 1000;
+
 /// Thrown for a bad robot description or space expression; what() names the problem.
 class NotationError : public std::runtime_error {
  public:

@@ -30,6 +30,9 @@ class PotentialConnector final : public LocalConnector {
 
   std::string name() const override { return "potential"; }
   LocalPath connect(const CollisionWorld& world, const Config& p, const Config& q, std::uint64_t seed) const override;
+  /// Each motion step evaluates the field and proves its piece free (a few configurations):
+  /// about 4 per step, max_steps steps.
+  double expected_evaluations() const override { return 4.0 * descent_.max_steps; }
 
   const PotentialParams& field_params() const { return field_; }
   const DescentParams& descent_params() const { return descent_; }

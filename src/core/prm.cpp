@@ -1,6 +1,7 @@
 #include "core/prm.hpp"
 
 #include "core/analysis.hpp"
+#include "core/text.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -18,28 +19,26 @@ int NeighborRule::prm_star_k(int n, int d) {
 }
 
 NeighborRule NeighborRule::parse(const std::string& text) {
+  // Numbers in the one syntax of core/text.hpp (no spaces, no hexadecimal, no '+').
   NeighborRule r;
   const auto number_after = [&](std::size_t prefix) {
-    const std::string rest = text.substr(prefix);
-    char* end = nullptr;
-    const double v = rest.empty() ? 0.0 : std::strtod(rest.c_str(), &end);
-    if (rest.empty() || end != rest.c_str() + rest.size() || !std::isfinite(v))
-      throw std::invalid_argument("neighbour rule '" + text + "': not a number after ':'");
-    return v;
+    const auto v = parse_decimal(std::string_view(text).substr(prefix));
+    if (!v) throw std::invalid_argument("neighbour rule '" + printable(text, 40) + "': not a number after ':'");
+    return *v;
   };
   if (text == "prm*") {
     r.kind = Kind::PrmStar;
   } else if (text.rfind("k:", 0) == 0) {
-    const double k = number_after(2);
-    if (k < 1 || k > 1000 || k != std::floor(k)) throw std::invalid_argument("k must be an integer in [1, 1000]");
+    const auto k = parse_integer(std::string_view(text).substr(2));
+    if (!k || *k < 1 || *k > 1000) throw std::invalid_argument("k must be an integer in [1, 1000]");
     r.kind = Kind::Nearest;
-    r.k = static_cast<int>(k);
+    r.k = static_cast<int>(*k);
   } else if (text.rfind("radius:", 0) == 0) {
     r.kind = Kind::Radius;
     r.radius = number_after(7);
     if (!(r.radius > 0)) throw std::invalid_argument("the radius must be > 0");
   } else {
-    throw std::invalid_argument("unknown neighbour rule '" + text + "' (k:K, radius:R or prm*)");
+    throw std::invalid_argument("unknown neighbour rule '" + printable(text, 40) + "' (k:K, radius:R or prm*)");
   }
   return r;
 }

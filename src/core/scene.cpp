@@ -1,9 +1,13 @@
 #include "core/scene.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <stdexcept>
 #include <nlohmann/json.hpp>
 
 #include "core/angles.hpp"
+#include "core/text.hpp"
 
 namespace csl {
 namespace {
@@ -12,6 +16,21 @@ using json = nlohmann::json;
 
 [[noreturn]] void fail(const std::string& path, const std::string& what) {
   throw SceneError(path + ": " + what);
+}
+
+// A number in few digits for a message ("1e-15", "0.25").
+std::string shortest(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", v);
+  return text;
+}
+
+// A field's value in a message: a string quoted (escaped, cut), anything else by its kind.
+// Never dump(): it recurses, and a value nested 100000 deep overflows the stack.
+std::string value_text(const json& v) {
+  if (v.is_string()) return '"' + printable(v.get_ref<const std::string&>(), 40) + '"';
+  if (v.is_number()) return shortest(v.get<double>());
+  return std::string("a JSON ") + v.type_name();
 }
 
 std::string join(const std::string& path, const char* key) { return path.empty() ? key : path + "." + key; }
@@ -27,7 +46,7 @@ void expect_object(const json& j, const std::string& path, std::initializer_list
   for (auto it = j.begin(); it != j.end(); ++it) {
     bool known = false;
     for (const char* k : keys) known = known || it.key() == k;
-    if (!known) fail(join(path, it.key().c_str()), "unknown field");
+    if (!known) fail(join(path, printable(it.key(), 40).c_str()), "unknown field");
   }
 }
 
@@ -78,7 +97,7 @@ Obstacle obstacle(const json& o, const std::string& path) {
     expect_object(o, path, {"type", "a", "b"});
     return Wall{point(field(o, "a", path), path + ".a"), point(field(o, "b", path), path + ".b")};
   }
-  fail(path + ".type", "unknown obstacle type " + type.dump() + " (disk, polygon or segment)");
+  fail(path + ".type", "unknown obstacle type " + value_text(type) + " (disk, polygon or segment)");
 }
 
 Robot robot(const json& r) {
@@ -102,7 +121,7 @@ Robot robot(const json& r) {
     expect_object(r, "robot", {"type", "vertices"});
     return make_polygon_robot(polygon(field(r, "vertices", "robot"), "robot.vertices", kMaxRobotVertices));
   }
-  fail("robot.type", "unknown robot type " + type.dump() + " (point, arm2 or polygon)");
+  fail("robot.type", "unknown robot type " + value_text(type) + " (point, arm2 or polygon)");
 }
 
 Config configuration(const json& j, const char* name, const Robot& r, const Vec2& lo, const Vec2& hi) {
@@ -167,6 +186,11 @@ Scene scene_from_json(const json& j) {
     s.workspace_max = point(field(*ws, "max", "workspace"), "workspace.max");
     if (!(s.workspace_min.x() < s.workspace_max.x() && s.workspace_min.y() < s.workspace_max.y()))
       fail("workspace", "min must be below max in both coordinates");
+    const double w = s.workspace_max.x() - s.workspace_min.x(), h = s.workspace_max.y() - s.workspace_min.y();
+    if (!(w >= kMinWorkspaceExtent && h >= kMinWorkspaceExtent))
+      fail("workspace", "each side must be at least 0.001 long (it is " + shortest(w) + " by " + shortest(h) + ")");
+    if (std::max(w, h) > kMaxWorkspaceAspect * std::min(w, h))
+      fail("workspace", "one side may be at most 100 times the other (it is " + shortest(w) + " by " + shortest(h) + ")");
   }
   if (auto r = j.find("robot"); r != j.end()) s.robot = robot(*r);
   if (auto obs = j.find("obstacles"); obs != j.end()) {
@@ -191,10 +215,34 @@ Scene scene_from_json(const json& j) {
   return s;
 }
 
+json parse_json_text(const std::string& text) {
+  // nlohmann's parser reads a NUL byte as the end of the input, so "{...}\0garbage" would pass.
+  if (const std::size_t nul = text.find('\0'); nul != std::string::npos)
+    throw std::invalid_argument("not valid JSON (a NUL byte at byte " + std::to_string(nul) + ")");
+  // The callback sees each value's depth as it is read: past the limit the parse stops there,
+  // before anything deep is built.
+  struct TooDeep {};
+  const json::parser_callback_t depth_limit = [](int depth, json::parse_event_t, json&) {
+    if (depth >= kMaxJsonDepth) throw TooDeep{};
+    return true;
+  };
+  try {
+    json j = json::parse(text, depth_limit, /*allow_exceptions=*/false);
+    if (j.is_discarded()) throw std::invalid_argument("not valid JSON");
+    return j;
+  } catch (const TooDeep&) {
+    throw std::invalid_argument("nested more than " + std::to_string(kMaxJsonDepth) + " levels deep");
+  }
+}
+
 Scene scene_from_string(const std::string& text) {
   if (text.size() > kMaxSceneBytes) throw SceneError("scene: larger than 64 MB, more than any scene within the limits");
-  json j = json::parse(text, nullptr, /*allow_exceptions=*/false);
-  if (j.is_discarded()) throw SceneError("scene: not valid JSON");
+  json j;
+  try {
+    j = parse_json_text(text);
+  } catch (const std::invalid_argument& e) {
+    throw SceneError(std::string("scene: ") + e.what());
+  }
   return scene_from_json(j);
 }
 

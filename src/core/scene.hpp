@@ -35,6 +35,14 @@ inline constexpr std::size_t kMaxPolygonVertices = 256;
 inline constexpr std::size_t kMaxRobotVertices = 32;
 inline constexpr double kMaxCoordinate = 1e6;  ///< |any coordinate or length| in a scene
 inline constexpr std::size_t kMaxNameLength = 200;
+/// The workspace's sides: each at least this long, and the longer at most kMaxWorkspaceAspect
+/// times the shorter. A view fits the workspace to its pixels; a side of 1e-15 (or 5e-324) left
+/// the app's grid and scale nothing finite to work with (issue 27: one such link crashed the
+/// wasm, and the autosave crashed every later start), and a sliver 1e6 times longer than wide
+/// shows as a line no one can draw in. Within +-1e6 coordinates, 1e-3 still resolves to
+/// 1e-9 of the largest coordinate (doubles resolve 2e-16).
+inline constexpr double kMinWorkspaceExtent = 1e-3;
+inline constexpr double kMaxWorkspaceAspect = 100.0;
 /// Bytes of scene JSON: the largest scene the other limits allow (1000 polygons of 256
 /// vertices at full precision) is about 12 MB, 28 MB indented by 4 a level.
 inline constexpr std::size_t kMaxSceneBytes = std::size_t{64} << 20;
@@ -54,6 +62,13 @@ class SceneError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+/// JSON nested deeper than this is refused by parse_json_text(): no scene needs more than 4
+/// levels, and copying a value nested 200000 deep recurses once a level (a stack overflow).
+inline constexpr int kMaxJsonDepth = 64;
+/// Parses JSON text strictly: the whole text (a NUL byte is not an end), at most kMaxJsonDepth
+/// levels deep. Throws std::invalid_argument saying what is wrong ("not valid JSON", ...).
+nlohmann::json parse_json_text(const std::string& text);
 
 /// Parses and validates a scene (schema version 1). Throws SceneError.
 Scene scene_from_json(const nlohmann::json& j);

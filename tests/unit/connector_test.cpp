@@ -120,6 +120,7 @@ TEST_CASE("a custom connector plugs in; the straight line stays the default") {
       r.length = world.space().distance(p, q);
       return r;
     }
+    double expected_evaluations() const override { return 1.0; }
   };
   const csl::CollisionWorld empty(csl::PointRobot{}, {}, {0, 0}, {1, 1});
   csl::Prm prm(empty, config({0.1, 0.1}), config({0.9, 0.5}), params(0, 1, std::make_shared<const Midpoint>()));

@@ -3,10 +3,14 @@
 #include <limits>
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
+#include <vector>
 
+#include "core/angles.hpp"
 #include "core/edge_check.hpp"
+#include "core/rng.hpp"
 #include "core/scene.hpp"
 
 using csl::config;
@@ -307,4 +311,176 @@ TEST_CASE("check_known_free on a scene of huge coordinates still agrees with ste
   REQUIRE(stepped.verdict() == csl::Verdict::Collision);
   CHECK(whole.verdict() == stepped.verdict());
   CHECK(whole.collision_t() == stepped.collision_t());
+}
+
+// Issue 27: obstacles are closed sets, so an edge that only touches one collides. The handout's
+// test (1), lambda <= eta(p) + eta(q), certified the edge (0.5, 0.1) -> (0.5, 0.9) past a disk
+// of radius 0 at (0.5, 0.5) after 2 evaluations (0.8 <= 0.4 + 0.4). Every case below lies on
+// dyadic coordinates with an axis-parallel edge, so the touch is exact in floating point and
+// the answer is known without the checker: the edge meets the obstacle in exactly one point.
+TEST_CASE("touching is a collision: points, tangent disks and polygon tips on the edge") {
+  csl::Rng rng(2027);
+  const auto dyadic = [&](int bits, double lo, double hi) {  // a multiple of 2^-bits in [lo, hi]
+    const double scale = std::ldexp(1.0, bits);
+    return std::round(rng.uniform(lo, hi) * scale) / scale;
+  };
+  int cases = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const double c = dyadic(8, 0.2, 0.8), a = dyadic(8, 0.05, 0.3), b = dyadic(8, 0.7, 0.95);
+    const double x0 = dyadic(10, a + 0.05, b - 0.05);  // where the obstacle touches y = c
+    const bool vertical = rng.uniform01() < 0.5;       // the edge along x = c instead of y = c
+    const auto pt = [&](double along, double across) {
+      return vertical ? csl::Vec2(c + across, along) : csl::Vec2(along, c + across);
+    };
+    csl::Obstacle touching;
+    switch (i % 3) {
+      case 0:
+        touching = csl::Disk{pt(x0, 0.0), 0.0};
+        break;
+      case 1: {
+        const double r = dyadic(8, 0.01, 0.1);
+        touching = csl::Disk{pt(x0, rng.uniform01() < 0.5 ? r : -r), r};
+        break;
+      }
+      default: {
+        // A sliver whose tip is on the edge: long, thin, on one side.
+        const double side = rng.uniform01() < 0.5 ? 1.0 : -1.0;
+        touching = csl::PolygonObstacle{{pt(x0, 0.0), pt(x0 - 0.001, side * 0.4), pt(x0 + 0.001, side * 0.4)}};
+      }
+    }
+    const csl::CollisionWorld world(csl::PointRobot{}, {touching}, {0, 0}, {1, 1});
+    const auto p = vertical ? config({c, a}) : config({a, c});
+    const auto q = vertical ? config({c, b}) : config({b, c});
+    REQUIRE(world.is_free(p));
+    REQUIRE(world.is_free(q));
+    const auto r = csl::check_edge(world, kBisection, p, q);
+    INFO("case " << i << ": touch at " << x0 << " on " << (vertical ? "x = " : "y = ") << c);
+    CHECK(r.collision);
+    // The grid checker tests the same predicate (clearance > 0): where one of its
+    // configurations is the touching point, it sees the collision too.
+    const double t = (x0 - a) / (b - a);
+    for (int n : {3, 5, 9, 17, 33, 65, 129, 257, 513, 1025}) {
+      const double step = 1.0 / (n - 1);
+      const double k = t / step;
+      if (k != std::floor(k)) continue;
+      CHECK(csl::check_edge(world, EdgeCheckerSpec::parse("grid:" + std::to_string(n)), p, q).collision);
+      ++cases;
+    }
+  }
+  CHECK(cases > 100);  // the grid cases above are not all skipped
+}
+
+// Against an independent oracle on random edges and tiny, thin or zero-size obstacles: the exact
+// distance from the segment to a disk (projection onto the segment, in long double). The checker
+// must find every edge that enters a disk, and certify every edge that clears all of them by
+// more than a hair (grazing edges may go either way: the checker never certifies what it cannot
+// prove, so a graze at 1e-13 may be reported as a collision).
+TEST_CASE("bisection against an exact segment-disk oracle, with zero and tiny radii") {
+  csl::Rng rng(4711);
+  int collisions = 0, frees = 0;
+  for (int w = 0; w < 200; ++w) {
+    std::vector<csl::Obstacle> obstacles;
+    std::vector<csl::Disk> disks;
+    for (int k = 0; k < 6; ++k) {
+      const double r = k % 3 == 0 ? 0.0 : (k % 3 == 1 ? 1e-4 * rng.uniform01() : rng.uniform(0.01, 0.08));
+      disks.push_back({{rng.uniform01(), rng.uniform01()}, r});
+      obstacles.push_back(disks.back());
+    }
+    const csl::CollisionWorld world(csl::PointRobot{}, obstacles, {0, 0}, {1, 1});
+    for (int e = 0; e < 30; ++e) {
+      // Edges aimed at a disk's centre half of the time: zero-radius disks are hit only so.
+      auto p = world.space().sample(rng), q = world.space().sample(rng);
+      if (e % 2 == 0) {
+        const csl::Vec2 c = disks[static_cast<std::size_t>(e / 2) % disks.size()].center;
+        q = config({c.x() + (c.x() - p[0]), c.y() + (c.y() - p[1])});
+        if (q[0] < 0 || q[0] > 1 || q[1] < 0 || q[1] > 1) continue;
+      }
+      if (!world.is_free(p) || !world.is_free(q)) continue;
+      long double least = std::numeric_limits<long double>::infinity();
+      for (const csl::Disk& d : disks) {
+        const long double px = p[0], py = p[1], dx = static_cast<long double>(q[0]) - px,
+                          dy = static_cast<long double>(q[1]) - py;
+        const long double cx = d.center.x(), cy = d.center.y();
+        long double t = ((cx - px) * dx + (cy - py) * dy) / (dx * dx + dy * dy);
+        t = std::min<long double>(1, std::max<long double>(0, t));
+        const long double ex = px + t * dx - cx, ey = py + t * dy - cy;
+        least = std::min(least, std::sqrt(ex * ex + ey * ey) - static_cast<long double>(d.radius));
+      }
+      const bool hit = csl::check_edge(world, kBisection, p, q).collision;
+      if (least < -1e-12L) {
+        CHECK(hit);
+        ++collisions;
+      } else if (least > 1e-7L) {
+        CHECK_FALSE(hit);
+        ++frees;
+      }
+    }
+  }
+  CHECK(collisions > 300);
+  CHECK(frees > 500);
+  MESSAGE("oracle: " << collisions << " edges through a disk, " << frees << " clear of all");
+}
+
+// Issue 27: check --min-grid --max 100000 across a thin wall (among 999 others) took past 600 s,
+// every grid tested in full. The search now evaluates only what earlier evaluations leave
+// unproven; the answer must still be the one of testing grid after grid.
+TEST_CASE("min_grid_search: a thin wall crossed at a slant, as grid after grid finds it, from few evaluations") {
+  std::vector<csl::Obstacle> walls;
+  csl::Rng rng(9);
+  for (int i = 0; i < 200; ++i) {  // far from the edge: only their boxes are tested
+    const double x = rng.uniform(0.0, 0.3), y = rng.uniform(0.75, 0.95);
+    walls.push_back(csl::Wall{{x, y}, {x + 0.02, y + 0.01}});
+  }
+  walls.push_back(csl::Wall{{0.5, 0.0}, {0.5001, 1.0}});
+  const csl::CollisionWorld world(csl::PointRobot{}, walls, {0, 0}, {1, 1});
+  int checked = 0;
+  for (int e = 0; e < 12; ++e) {
+    const auto p = config({rng.uniform(0.02, 0.3), rng.uniform(0.1, 0.6)});
+    const auto q = config({rng.uniform(0.7, 0.98), rng.uniform(0.1, 0.6)});
+    const int max_n = 1500;
+    std::optional<int> brute;
+    for (int n = 2; n <= max_n && !brute; ++n) {
+      csl::EdgeChecker grid(world, {EdgeCheckerSpec::Kind::Grid, n}, false);
+      grid.reset(p, q);
+      while (!grid.done()) grid.step();
+      if (grid.verdict() == csl::Verdict::Collision) brute = n;
+    }
+    const csl::MinGridResult r = csl::min_grid_search(world, p, q, max_n, 1L << 40);
+    INFO("edge " << e << ": brute force " << (brute ? *brute : -1));
+    CHECK(r.n == brute);
+    CHECK_FALSE(r.exhausted);
+    // Testing every grid up to the answer (or to max_n) is N^2 / 2 configurations.
+    const double full = 0.5 * std::pow(brute ? *brute : max_n, 2);
+    CHECK(static_cast<double>(r.evaluations) < full / 20.0);
+    checked += brute ? 1 : 0;
+    // And with too small a budget it says so rather than answering.
+    if (r.evaluations > 20) CHECK(csl::min_grid_search(world, p, q, max_n, 10).exhausted);
+  }
+  CHECK(checked >= 6);
+}
+
+TEST_CASE("one bisection check does bounded work: fewer evaluations where a configuration costs more") {
+  std::vector<csl::Obstacle> polygons;
+  for (int i = 0; i < 200; ++i) {
+    csl::Polygon poly;
+    for (int k = 0; k < 256; ++k) {
+      const double a = 2 * csl::kPi * k / 256;
+      poly.push_back({0.05 + 0.004 * i + 0.01 * std::cos(a), 0.9 + 0.01 * std::sin(a)});
+    }
+    polygons.push_back(csl::PolygonObstacle{poly});
+  }
+  polygons.push_back(csl::Wall{{0.5, 0.0}, {0.5, 0.45}});
+  const csl::CollisionWorld heavy(csl::PointRobot{}, polygons, {0, 0}, {1, 1});
+  CHECK(heavy.evaluation_cost() == doctest::Approx(1 + 200 * (1 + 256) + (1 + 1)));
+  const int limit = csl::bisection_evaluation_limit(heavy);
+  CHECK(limit < csl::kMaxBisectionEvaluations);
+  CHECK(limit * heavy.evaluation_cost() <= csl::kMaxEdgeCheckWork * 1.0001);
+  // The hair's-clearance path along the wall of the test above: it gives up at the limit.
+  const double x = 0.5 + csl::kWallTolerance + 1e-12;
+  const auto r = csl::check_edge(heavy, kBisection, config({x, 0.05}), config({x, 0.4}));
+  CHECK(r.collision);
+  CHECK(r.evaluations == limit);
+  // A light scene keeps the full 2^20.
+  const csl::CollisionWorld light(csl::PointRobot{}, {csl::Disk{{0.5, 0.5}, 0.1}}, {0, 0}, {1, 1});
+  CHECK(csl::bisection_evaluation_limit(light) == csl::kMaxBisectionEvaluations);
 }

@@ -211,6 +211,13 @@ TEST_CASE("the expression reader says what it could not read") {
   CHECK(error("S^1^3") == "a power of S^n or T^n needs parentheses, as in (S^1)^3 (at '^3')");
   CHECK(error("R^x") == "expected a whole number (at 'x')");
   CHECK(error("((T^1000)^1000)^1000") == "space too large (at the end)");
+  // Issue 27: 65000 '(' (10000 on the browser's stack) overflowed the stack, one call each.
+  CHECK(error(std::string(33, '(') + "R" + std::string(33, ')')) == "too many nested parentheses (at most 32) (at '(R))))))))))))))...')");
+  CHECK(error(std::string(32, '(') + "R" + std::string(32, ')')) == "");
+  CHECK(error(std::string(1001, '(')) == "the answer is longer than 1000 characters");
+  CHECK(error(std::string(999, '(')) == "too many nested parentheses (at most 32) (at '((((((((((((((((...')");
+  // Control characters are escaped where a message quotes the answer.
+  CHECK(error("R^2 \x1b[2J") == "expected a product sign x, × or * (at '\\x1b[2J')");
 }
 
 TEST_CASE("right answers are confirmed with an equality") {

@@ -133,6 +133,53 @@ TEST_CASE("scene limits are enforced") {
   CHECK(error_of(j) == "obstacles: more than 1000 obstacles");
 }
 
+// Issue 27: {"workspace": {"min": [0, 0], "max": [1e-15, 1e-15]}} was valid, and the app's
+// views crashed on it (and every later start, from the autosave). Sides below 0.001 and slivers
+// more than 100 times longer than wide are refused, by the core: CLI, links, import and API alike.
+TEST_CASE("the workspace has a least side and a greatest aspect ratio") {
+  json j = p12();
+  const auto with = [&](double w, double h) {
+    j["workspace"] = {{"min", {0, 0}}, {"max", {w, h}}};
+    j["start"] = {0, 0};
+    j["goal"] = {w, h};
+    return error_of(j);
+  };
+  CHECK(with(1e-15, 1e-15) == "workspace: each side must be at least 0.001 long (it is 1e-15 by 1e-15)");
+  CHECK(with(5e-324, 1) == "workspace: each side must be at least 0.001 long (it is 4.94066e-324 by 1)");
+  CHECK(with(0.001, 0.001) == "");
+  CHECK(with(0.0009999, 0.05) == "workspace: each side must be at least 0.001 long (it is 0.0009999 by 0.05)");
+  CHECK(with(100, 1) == "");
+  CHECK(with(100.01, 1) == "workspace: one side may be at most 100 times the other (it is 100.01 by 1)");
+  CHECK(with(1, 1e6) == "workspace: one side may be at most 100 times the other (it is 1 by 1e+06)");
+  CHECK(with(2e6 - 1, 2e6 - 1) == "workspace.max[0]: must be within +-1e6");
+}
+
+TEST_CASE("scene text is JSON, all of it: a NUL byte and what follows are refused") {
+  // nlohmann's parser stops at a NUL as at the end, so this passed as {"version": 1}.
+  const std::string text = std::string("{\"version\": 1}") + '\0' + "garbage";
+  CHECK_THROWS_WITH(csl::scene_from_string(text), "scene: not valid JSON (a NUL byte at byte 14)");
+  CHECK_THROWS_WITH(csl::scene_from_string("{\"version\": 1} x"), "scene: not valid JSON");
+  CHECK_NOTHROW(csl::scene_from_string("{\"version\": 1}\n"));
+}
+
+TEST_CASE("messages quote untrusted keys and values on one line, and never dump a deep value") {
+  json j = p12();
+  j["na\nme\x1b[31m"] = 1;
+  CHECK(error_of(j) == "na\\nme\\x1b[31m: unknown field");
+  j = p12();
+  j["obstacles"][0]["type"] = json::parse(std::string(60, '[') + std::string(60, ']'));
+  CHECK(error_of(j) == "obstacles[0].type: unknown obstacle type a JSON array (disk, polygon or segment)");
+}
+
+TEST_CASE("JSON text nested past 64 levels is refused while it is read") {
+  // Copying a value nested 200000 deep recurses once a level (a crash), and the page's API
+  // copies its arguments: the parser stops at the limit, before anything deep exists.
+  const std::string deep = "{\"version\": 1, \"name\": " + std::string(200000, '[') + std::string(200000, ']') + "}";
+  CHECK_THROWS_WITH(csl::scene_from_string(deep), "scene: nested more than 64 levels deep");
+  CHECK_NOTHROW(csl::parse_json_text(std::string(64, '[') + std::string(64, ']')));
+  CHECK_THROWS_WITH(csl::parse_json_text(std::string(65, '[') + std::string(65, ']')), "nested more than 64 levels deep");
+}
+
 TEST_CASE("malformed JSON text is a SceneError, not a crash") {
   CHECK_THROWS_AS(csl::scene_from_string("{\"version\": 1, "), SceneError);
   CHECK_THROWS_WITH(csl::scene_from_string("[1, 2"), "scene: not valid JSON");

@@ -1,0 +1,60 @@
+#pragma once
+// How much work a planning request means, before it runs: one measure and one budget for every
+// surface (the CLI, links, the page's API, the app's sliders), so that a request that would take
+// minutes is refused up front with the reason, wherever it comes from.
+//
+// The unit is one primitive distance test (CollisionWorld::evaluation_cost() counts them per
+// configuration). A roadmap's work is its samples' evaluations, plus its candidate pairs times
+// what one edge check is expected to evaluate, plus the neighbour search. These are estimates
+// from the parameters alone, deterministic (no clocks), and on the high side for the edges
+// (the ends' clearances settle most roadmap edges without a configuration: measured on the
+// bundled scenes at n = 2000, bisection evaluates 0.1 to 1.5 configurations per edge).
+#include "core/prm.hpp"
+
+namespace csl {
+
+/// Units a request of the app (a link, the API, a slider) may be expected to take: about 2 s in
+/// the browser for the densest scenes, far less for most (a run is drawn in slices of a frame,
+/// so the page stays responsive whatever it costs).
+inline constexpr double kLabMaxWork = 4e9;
+/// Candidate pairs a request of the app may be expected to check: about as many as k = 50 with
+/// the most samples (20000). The pairs hold memory as well as time (k = 1000 with 20000
+/// samples, 2e7 pairs, ran the wasm out of memory); a radius rule's grow with n^2.
+inline constexpr double kLabMaxPairs = 1e6;
+/// The CLI's default limit (--max-work): 25 times the lab's, a minute or so.
+inline constexpr double kCliMaxWork = 1e11;
+
+/// Configurations the bisection check is expected to evaluate per roadmap edge: more than the
+/// 0.1 to 1.5 measured, as scenes may be more cluttered than the bundled ones.
+inline constexpr double kBisectionEvaluationsPerEdge = 2.0;
+
+/// The expected length of a roadmap edge: the radius of the ball around a vertex that holds its
+/// k nearest among n + 2 uniform vertices (or the radius rule's r).
+double expected_edge_length(const Space& space, const NeighborRule& rule, int samples);
+
+/// Configurations one check of an edge of `length` is expected to evaluate with `spec` (the
+/// ends known free, as in a roadmap): N - 2 for grid:N, the configurations D apart between the
+/// ends for step:D, kBisectionEvaluationsPerEdge for bisection.
+double expected_edge_evaluations(const EdgeCheckerSpec& spec, double length);
+
+/// The parts of a planning request's expected work, in units.
+struct WorkEstimate {
+  double pairs = 0;        ///< candidate pairs (expected_candidate_pairs)
+  double per_edge = 0;     ///< units one edge check is expected to take
+  double sampling = 0;     ///< the samples' evaluations
+  double connecting = 0;   ///< pairs x per_edge
+  double neighbours = 0;   ///< the neighbour search
+  double total() const { return sampling + connecting + neighbours; }
+};
+/// What PRM with `params` on `world` is expected to cost.
+WorkEstimate expected_prm_work(const CollisionWorld& world, const PrmParams& params);
+
+/// One check of the edge p -> q with `spec` from scratch (the ends evaluated too): its expected
+/// units. Grid and step checkers: exactly their configurations times the evaluation cost;
+/// bisection: at most bisection_evaluation_limit().
+double expected_check_work(const CollisionWorld& world, const EdgeCheckerSpec& spec, const Config& p, const Config& q);
+
+/// Work as short text for messages: "3.2e9 units".
+std::string work_text(double units);
+
+}  // namespace csl
