@@ -1,22 +1,20 @@
 // The page around one C-Space Lab instance: what a link or a page's data-lab attribute asks
-// for, autosave to localStorage (with a bounded history of previous work that nothing
-// overwrites silently), restores that cannot brick the lab, tabs that do not overwrite each
-// other, Share and Embed dialogs, import and export, and the input rules of an embed (the wheel
-// scrolls the page until the lab has focus; a click gives it focus).
+// for, autosave with a bounded history of previous work, restores that cannot brick the lab,
+// tabs that do not overwrite each other, Share and Embed dialogs, import and export, and the
+// input rules of an embed (the wheel scrolls the page until the lab has focus).
 //
 // Everything the user or a link supplies is handled as data: parsed with JSON.parse or the
 // strict parsers of lab-url.js, shown with textContent or as an <textarea>'s value, passed to the
 // app as JSON. Problems become the app's one-line notice; nothing is ever written as HTML.
 //
-// Storage, per lab (`cspacelab:v1:<page path>:<id>:` + one of):
-//   work              the autosaved work of the tab that holds the lease (below)
-//   history:<entry>   previous work, one key per entry: what a link, a reset or a restore
-//                     replaced, work that could not be restored, another tab's work
-//   restoring:<tab>   "a restore is in progress" (what, and where it is kept), until the app
-//                     has drawn frames after it: a start that finds one left over opens clean
-//   lease             {tab, beat}: the tab that writes `work`; others save to their own entry
-// One key per entry (not one list) so that two tabs never rewrite each other's entries, and a
-// small entry can still be written when a large one cannot.
+// Storage, per lab, `cspacelab:v1:<page path>:<id>:` and
+//   work             the autosave of the tab that holds the lease
+//   history:<entry>  previous work: what a link, a reset or a restore replaced, work that could
+//                    not be restored, another tab's work. One key each, so that tabs never
+//                    rewrite each other's entries and a small one fits where a large one does not
+//   restoring:<tab>  a restore in progress (what, where it is kept) until frames were drawn
+//                    after it: a start that finds one of a gone tab opens clean
+//   lease            {tab, beat}: the tab that writes `work`; another saves to its own entry
 'use strict';
 
 (function (global) {
@@ -29,30 +27,19 @@
   const AUTOSAVE_POLL_MS = 600;
   const AUTOSAVE_QUIET_MS = 1000;   // save once nothing changed for this long...
   const AUTOSAVE_MAX_WAIT_MS = 4000; // ...or at least this often while things keep changing
-  // The history of previous work: newest first, at most this many entries and characters (the
-  // origin has about 5 million characters in Chromium; the work itself needs room too).
-  const HISTORY_MAX_ENTRIES = 10;
+  // The history: at most this many entries and characters (Chromium gives an origin about 5
+  // million characters, and the work itself needs room too).
+  const HISTORY_MAX = 10;
   const HISTORY_MAX_CHARS = 1500000;
-  // The app's run_to takes at most 1e8 steps (count_arg in src/app/app.cpp); a link's pattern
-  // allows 9 digits, so the shell checks the rest.
-  const MAX_STEPS = 100000000;
-  // A restore is done once the app has drawn this many frames after it (and is not busy).
-  const MARKER_FRAMES = 3;
-  const HEARTBEAT_MS = 1000;
-  // A restore marker or a lease not refreshed for this long belongs to a tab that froze, crashed
-  // or closed. Timers of hidden tabs still run about once a second, so these are generous.
+  const MAX_STEPS = 100000000;  // what the app's run_to takes (count_arg in src/app/app.cpp)
+  const MARKER_FRAMES = 3;      // a restore is done once the app drew this many frames after it
+  const BEAT_MS = 1000;
+  // A marker or a lease not refreshed for this long belongs to a tab that froze, crashed or
+  // closed (hidden tabs still run timers about once a second).
   const MARKER_STALE_MS = 6000;
   const LEASE_STALE_MS = 10000;
-  // Space a start wants for its saves; when even this does not fit, saving is reported off.
-  const PROBE_CHARS = 1024;
-  const REASONS = {
-    link: 'before a link',
-    reset: 'before reset',
-    crash: 'could not be restored',
-    tab: 'another tab',
-    restore: 'before restoring other work',
-    previous: 'previous work',
-  };
+  const REASONS = { link: 'before a link', reset: 'before reset', crash: 'could not be restored', tab: 'another tab',
+                    restore: 'before restoring other work', previous: 'previous work' };
   const FULL_TEXT = 'changes are not being saved: storage for this site is full. File > Export scene keeps a copy.';
 
   function el(tag, props = {}, children = []) {
@@ -79,67 +66,45 @@
     return String(text).replace(/&/g, '&amp;').replace(/"/g, '&quot;').replace(/</g, '&lt;').replace(/>/g, '&gt;');
   }
 
-  function randomId() {
-    const bytes = new Uint8Array(6);
-    if (global.crypto && global.crypto.getRandomValues) global.crypto.getRandomValues(bytes);
-    else for (let i = 0; i < bytes.length; ++i) bytes[i] = Math.floor(Math.random() * 256);
-    return Array.from(bytes, (b) => b.toString(16).padStart(2, '0')).join('');
-  }
 
-  function sleep(ms) {
-    return new Promise((resolve) => setTimeout(resolve, ms));
-  }
-
-  function isQuotaError(e) {
-    return !!e && (e.name === 'QuotaExceededError' || e.name === 'NS_ERROR_DOM_QUOTA_REACHED' || e.code === 22 || e.code === 1014);
-  }
+  const randomId = () => Array.from(global.crypto.getRandomValues(new Uint8Array(6)), (b) => b.toString(16).padStart(2, '0')).join('');
+  const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
+  const live = (beat, staleMs, now = Date.now()) => typeof beat === 'number' && now - beat <= staleMs && beat <= now + 60000;
+  const describe = (e) => U.excerpt(String(e && e.message ? e.message : e), 120).slice(1, -1);
 
   /**
-   * Whether an exception out of the app is the wasm failing (a trap, a stack overflow in it, a
-   * response that is not JSON any more) rather than a command's refusal, which is a plain Error
-   * with the app's message.
+   * An exception out of the app that is the wasm failing (a trap, a stack overflow, a response
+   * that is no longer JSON), not a command's refusal (a plain Error with the app's message).
    */
   function isTrap(e) {
-    if (!e || typeof e !== 'object') return false;
-    if (typeof WebAssembly === 'object' && WebAssembly.RuntimeError && e instanceof WebAssembly.RuntimeError) return true;
-    return e.name === 'RuntimeError' || e instanceof RangeError || e instanceof SyntaxError || e.cslTrap === true;
-  }
-
-  function describeError(e) {
-    const text = e && e.message ? e.message : String(e);
-    return U.excerpt(text.replace(/^(RuntimeError|Error): /, ''), 120).slice(1, -1);
+    return !!e && typeof e === 'object' && ((global.WebAssembly && e instanceof WebAssembly.RuntimeError) ||
+      e.name === 'RuntimeError' || e instanceof RangeError || e instanceof SyntaxError);
   }
 
   function timeText(t) {
     const d = new Date(t);
-    const now = new Date();
     const time = d.toLocaleTimeString([], { hour: '2-digit', minute: '2-digit', second: '2-digit' });
-    if (d.toDateString() === now.toDateString()) return time;
-    return d.toLocaleDateString([], { day: 'numeric', month: 'short' }) + ' ' + time;
+    return d.toDateString() === new Date().toDateString() ? time : d.toLocaleDateString([], { day: 'numeric', month: 'short' }) + ' ' + time;
   }
 
-  function validWork(record) {
-    return !!record && record.format === WORK_FORMAT && record.version === 1 && typeof record.current === 'string' &&
-      !!record.lessons && typeof record.lessons === 'object' && !Array.isArray(record.lessons);
+  function validWork(r) {
+    return !!r && r.format === WORK_FORMAT && r.version === 1 && typeof r.current === 'string' &&
+      !!r.lessons && typeof r.lessons === 'object' && !Array.isArray(r.lessons);
   }
 
-  /** What decides whether two work records are the same work (not when they were saved). */
-  function workText(record) {
-    return JSON.stringify({ config: record.config, current: record.current, lessons: record.lessons });
-  }
+  /** What makes two work records the same work (not when they were saved). */
+  const workText = (r) => JSON.stringify({ config: r.config, current: r.current, lessons: r.lessons });
 
-  // ---- storage: one lab's keys, usable without the wasm (the crash panel needs it) ----------
+  // ---- storage: one lab's keys, without the wasm (a lab that stopped still offers its work) --
 
   class WorkStore {
     constructor(scope, id) {
       this.prefix = STORAGE_PREFIX + scope + ':' + id + ':';
-      this.storage = null;
       this.dropped = { full: 0, bound: 0 };
       try {
-        // Reading and writing are separate questions: a full origin still reads.
-        const s = global.localStorage;
-        s.getItem(this.prefix + 'work');
-        this.storage = s;
+        // Reading is its own question: a full origin still reads.
+        global.localStorage.getItem(this.prefix + 'work');
+        this.storage = global.localStorage;
       } catch {
         this.storage = null;
       }
@@ -147,46 +112,38 @@
 
     get readable() { return this.storage !== null; }
 
-    key(slot) { return this.prefix + slot; }
-
     get(slot) {
-      if (!this.storage) return null;
       try {
-        return this.storage.getItem(this.key(slot));
+        return this.storage ? this.storage.getItem(this.prefix + slot) : null;
       } catch {
         return null;
       }
     }
 
-    /** The value parsed, null when absent, undefined when it is there but not JSON. */
-    getJson(slot) {
-      const text = this.get(slot);
-      if (text === null) return null;
+    /** The value parsed; null when absent or not JSON. */
+    json(slot) {
       try {
-        return JSON.parse(text);
+        return JSON.parse(this.get(slot));
       } catch {
-        return undefined;
+        return null;
       }
     }
 
     remove(slot) {
-      if (!this.storage) return;
       try {
-        this.storage.removeItem(this.key(slot));
+        if (this.storage) this.storage.removeItem(this.prefix + slot);
       } catch {
-        // nothing to do: the key stays
+        // the key stays
       }
     }
 
-    /** Slots of this lab that start with `head` (e.g. 'history:'). */
+    /** The slots of this lab that start with `head`. */
     slots(head) {
       const out = [];
-      if (!this.storage) return out;
-      const full = this.prefix + head;
       try {
-        for (let i = 0; i < this.storage.length; ++i) {
+        for (let i = 0; this.storage && i < this.storage.length; ++i) {
           const k = this.storage.key(i);
-          if (k && k.startsWith(full)) out.push(k.slice(this.prefix.length));
+          if (k && k.startsWith(this.prefix + head)) out.push(k.slice(this.prefix.length));
         }
       } catch {
         // a storage that went away: none
@@ -195,62 +152,46 @@
     }
 
     /**
-     * Writes `text` to `slot`. When the origin is full it frees room by dropping the oldest
-     * history entries (never those in `keep`) and tries again. {ok, dropped: entries dropped,
-     * full: the origin was full}.
+     * Writes a slot. When the origin is full, drops the oldest history entries (not those in
+     * `keep`) until it fits, unless trim is false. {ok, full}.
      */
-    set(slot, text, keep = [], { trim = true } = {}) {
-      const result = { ok: false, dropped: 0, full: false };
-      if (!this.storage) return result;
+    set(slot, text, keep = [], trim = true) {
       for (;;) {
         try {
-          this.storage.setItem(this.key(slot), text);
-          result.ok = true;
-          return result;
+          if (!this.storage) return { ok: false, full: false };
+          this.storage.setItem(this.prefix + slot, text);
+          return { ok: true, full: false };
         } catch (e) {
-          if (!isQuotaError(e)) return result;
-          result.full = true;
+          if (!(e && (e.name === 'QuotaExceededError' || e.name === 'NS_ERROR_DOM_QUOTA_REACHED'))) return { ok: false, full: false };
           const victim = trim && this.entries().reverse().find((x) => !keep.includes(x.id) && 'history:' + x.id !== slot);
-          if (!victim) return result;
+          if (!victim) return { ok: false, full: true };
           this.remove('history:' + victim.id);
-          result.dropped += 1;
           this.dropped.full += 1;
         }
       }
     }
 
-    /** History entries dropped since the last call, {full: to make room, bound: beyond the bounds}. */
-    takeDropped() {
-      const d = this.dropped;
-      this.dropped = { full: 0, bound: 0 };
-      return d;
-    }
-
-    /** Whether `chars` more characters fit (trimming history if needed): {ok, dropped}. */
-    probe(chars = PROBE_CHARS) {
-      const r = this.set('probe', 'x'.repeat(chars));
+    /** Whether saves have room (1 KB more fits, after trimming history if needed). */
+    roomy() {
+      const r = this.set('probe', 'x'.repeat(1024));
       this.remove('probe');
-      return r;
+      return r.ok;
     }
 
-    // -- the history of previous work
-
-    /** Every readable entry, newest first: {id, savedAt, reason, lesson, failed, work | link, size}. */
+    /** History entries, newest first: {id, savedAt, reason, lesson, failed, work | link, size}. */
     entries() {
       const out = [];
       for (const slot of this.slots('history:')) {
         const text = this.get(slot);
-        if (text === null) continue;
-        let e;
+        let e = null;
         try {
           e = JSON.parse(text);
         } catch {
           continue;
         }
-        if (!e || e.format !== ENTRY_FORMAT || typeof e.savedAt !== 'number') continue;
-        const ok = e.work ? validWork(e.work) : !!(e.link && typeof e.link.query === 'string');
-        if (!ok) continue;
-        out.push(Object.assign(e, { id: slot.slice('history:'.length), size: text.length }));
+        if (!e || e.format !== ENTRY_FORMAT || typeof e.savedAt !== 'number' ||
+            !(e.work ? validWork(e.work) : e.link && typeof e.link.query === 'string')) continue;
+        out.push(Object.assign(e, { id: slot.slice(8), size: text.length }));
       }
       return out.sort((a, b) => b.savedAt - a.savedAt || (a.id < b.id ? 1 : -1));
     }
@@ -259,88 +200,49 @@
       return this.entries().find((e) => e.id === id) || null;
     }
 
-    /**
-     * Writes an entry (a new one, or `id` in place), then keeps the history within its bounds by
-     * dropping the oldest entries (never this one). {ok, dropped, full}.
-     */
+    /** Writes entry `id` (new or in place), then keeps the history within its bounds. {ok, full}. */
     putEntry(id, entry, keep = []) {
-      const value = { format: ENTRY_FORMAT, version: 1, savedAt: entry.savedAt || Date.now(), reason: entry.reason,
-                      lesson: entry.lesson || '', failed: !!entry.failed };
-      if (entry.work) value.work = entry.work;
-      else value.link = entry.link;
-      const r = this.set('history:' + id, JSON.stringify(value), keep.concat([id]));
-      if (r.ok) r.dropped += this.trim(keep.concat([id]));
+      const value = Object.assign({ format: ENTRY_FORMAT, version: 1, savedAt: Date.now(), lesson: '', failed: false }, entry);
+      const r = this.set('history:' + id, JSON.stringify(value), keep.concat(id));
+      if (!r.ok) return r;
+      let list = this.entries();
+      let chars = list.reduce((n, e) => n + e.size, 0);
+      while (list.length > HISTORY_MAX || (chars > HISTORY_MAX_CHARS && list.length > 1)) {
+        const victim = list.slice().reverse().find((e) => !keep.includes(e.id) && e.id !== id);
+        if (!victim) break;
+        this.remove('history:' + victim.id);
+        list = list.filter((e) => e !== victim);
+        chars -= victim.size;
+        this.dropped.bound += 1;
+      }
       return r;
     }
 
-    removeEntry(id) {
-      this.remove('history:' + id);
-    }
-
-    /** Drops the oldest entries beyond the bounds; returns how many. */
-    trim(keep = []) {
-      let dropped = 0;
-      let list = this.entries();
-      let chars = list.reduce((n, e) => n + e.size, 0);
-      while (list.length > HISTORY_MAX_ENTRIES || (chars > HISTORY_MAX_CHARS && list.length > 1)) {
-        const victim = list.slice().reverse().find((e) => !keep.includes(e.id));
-        if (!victim) break;
-        this.removeEntry(victim.id);
-        list = list.filter((e) => e !== victim);
-        chars -= victim.size;
-        dropped += 1;
-        this.dropped.bound += 1;
-      }
-      return dropped;
-    }
-
-    // -- restore markers and the lease
-
     markers() {
-      const out = [];
-      for (const slot of this.slots('restoring:')) {
-        const m = this.getJson(slot);
-        if (m && m.format === MARKER_FORMAT && typeof m.tab === 'string') out.push(m);
-        else if (m !== null) out.push({ format: MARKER_FORMAT, tab: slot.slice('restoring:'.length), unreadable: true });
-      }
-      return out;
-    }
-
-    setMarker(marker, keep = []) {
-      return this.set('restoring:' + marker.tab, JSON.stringify(marker), keep);
-    }
-
-    clearMarker(tab) {
-      this.remove('restoring:' + tab);
+      return this.slots('restoring:').map((slot) => this.json(slot)).filter((m) => m && m.format === MARKER_FORMAT && typeof m.tab === 'string');
     }
 
     lease() {
-      const l = this.getJson('lease');
+      const l = this.json('lease');
       return l && typeof l.tab === 'string' && typeof l.beat === 'number' ? l : null;
     }
-  }
-
-  /** Whether a lease or a marker was refreshed recently enough to belong to a live tab. */
-  function fresh(beat, staleMs, now = Date.now()) {
-    return typeof beat === 'number' && now - beat <= staleMs && beat <= now + 60000;
   }
 
   class LabShell {
     /**
      * root: the [data-lab] element; canvas: its canvas; api: its CSpaceLabApi, or null until
-     * attach() (the shell exists before the wasm does, so that a failure while it starts can
-     * still offer the saved work). options: {config: query string, ui: 'full'|'minimal',
-     * storageId, scope, home: URL of the full lab (share links), base: URL of the folder with the
-     * lab's files, single: bool (the single-file build), guardWheel: bool (the wheel scrolls the
-     * page until focused)}
+     * attach() (the shell is made before the wasm, so that a failure at start still offers the
+     * saved work). options: {config: query string, ui: 'full'|'minimal', storageId, scope, home:
+     * URL of the full lab (share links), base: URL of the folder with the lab's files, single:
+     * bool (the single-file build), guardWheel: bool (the wheel scrolls the page until focused)}
      */
     constructor(root, canvas, api, options) {
       this.root = root;
       this.canvas = canvas;
       this.options = options;
       this.store = new WorkStore(options.scope, options.storageId);
-      this.tab = randomId();                // this page load: its lease, its marker, its own entry
-      this.tabEntryId = 'tab-' + this.tab;  // where this tab saves while another tab holds the lease
+      this.tab = randomId();                // this page load: its lease, marker and own entry
+      this.tabEntryId = 'tab-' + this.tab;  // where it saves while another tab holds the lease
       this.role = 'owner';                  // 'owner' writes the work slot, 'second' its own entry
       this.lastSaved = null;
       this.dirtySince = 0;
@@ -349,28 +251,25 @@
       this.dialog = null;
       this.timing = { ready: performance.now(), firstFrame: null };
       this.problems = [];
-      this.frames = 0;           // frames completed (Module.postMainLoop)
-      this.inFrame = false;      // between preMainLoop and postMainLoop: a throw there is a trap
-      this.marker = null;        // this tab's restore in progress
-      this.dead = false;         // the wasm failed: only storage and the DOM are left
-      this.cleanText = null;     // the untouched defaults of a clean start (not worth keeping)
-      this.saveFailed = false;
-      this.pendingNotes = [];    // sentences for the next notice (saves that failed, history dropped)
+      this.frames = 0;          // frames drawn (postMainLoop)
+      this.inFrame = false;     // between preMainLoop and postMainLoop: a throw there is a trap
+      this.marker = null;       // this tab's restore in progress
+      this.dead = false;        // the wasm failed: storage and the DOM are left
+      this.cleanText = null;    // the untouched defaults of a clean start (not worth keeping)
+      this.notes = [];          // for the next notice: saves that failed, history dropped
       this.historyIds = [];
       this.api = null;
       if (api) this.attach(api);
     }
 
-    /**
-     * Takes the app's API. Its methods are wrapped on the instance so that the wasm failing in
-     * any call (the shell's or a course page's) stops the lab cleanly and says so.
-     */
+    /** Takes the API; its methods are wrapped so that the wasm failing in any call stops the lab cleanly. */
     attach(api) {
       this.api = api;
+      this.timing.ready = performance.now();  // the module is ready (web_budgets reports it)
       const proto = Object.getPrototypeOf(api);
       for (const name of Object.getOwnPropertyNames(proto)) {
         const d = Object.getOwnPropertyDescriptor(proto, name);
-        if (name === 'constructor' || !d || typeof d.value !== 'function') continue;
+        if (name === 'constructor' || typeof d.value !== 'function') continue;
         const shell = this;
         api[name] = function guarded(...args) {
           if (shell.dead) throw new Error('C-Space Lab has stopped: ' + shell.deathText);
@@ -382,19 +281,15 @@
           }
         };
       }
-      // A trap inside the wasm's own entry point, whoever called it.
-      const m = api.module;
-      const raw = m._csl_call;
-      if (typeof raw === 'function') {
-        m._csl_call = (ptr) => {
-          try {
-            return raw(ptr);
-          } catch (e) {
-            this.trap(e);
-            throw e;
-          }
-        };
-      }
+      const raw = api.module._csl_call;  // the wasm's one entry point, whoever calls it
+      api.module._csl_call = (ptr) => {
+        try {
+          return raw(ptr);
+        } catch (e) {
+          this.trap(e);
+          throw e;
+        }
+      };
     }
 
     // ---- start ------------------------------------------------------------------------------
@@ -411,14 +306,12 @@
         api.module.cslPageAction = (name) => setTimeout(() => this.action(name), 0);
         notes = await this.start();
       } catch (e) {
-        if (this.dead) return;  // the crash panel says what happened
+        if (this.dead) return;  // the crash panel says it
         console.error('C-Space Lab: the page shell failed', e);
-        // Not a trap: a restore under way counts as done once frames are drawn, as usual.
-        if (this.marker && this.markerDoneFrame === null) this.restoreDone(false);
-        notes.push(`Something went wrong while the lab started (${describeError(e)}); what could be applied is shown.`);
+        notes.push(`Something failed while the lab started (${describe(e)}); what could be applied is shown.`);
+        if (this.marker && this.markerFrame === null) this.restoreDone(false);
       } finally {
-        // Whatever happened above, work from here on is saved.
-        if (!this.dead) {
+        if (!this.dead) {  // whatever happened above, work from here on is saved
           this.started = true;
           this.startAutosave();
           this.startHeartbeat();
@@ -434,211 +327,159 @@
       return l ? l.name : id;
     }
 
-    /** The start proper: returns the sentences of the notice. */
+    /** The start proper; returns the sentences of the notice. */
     async start() {
       const store = this.store;
       const parsed = U.parseConfig(this.options.config);
-      const problems = parsed.problems.slice();  // the link's (and the saved work's) bad parts
+      const problems = parsed.problems.slice();  // the link's and the saved work's bad parts
       const notes = [];
       const configKey = U.hasState(parsed.values) ? U.stateKey(parsed.values) : null;
-
       if (store.readable) {
         this.migratePrevious();
         this.claimLease();
       }
-      // A restore another start left unfinished (it crashed or froze the lab): open clean.
+      // Restores other starts left unfinished (they crashed or froze the lab): open clean.
       const leftovers = store.readable ? await this.leftoverMarkers() : [];
       const retry = leftovers.find((m) => m.choice === 'retry');
       const failed = leftovers.filter((m) => m !== retry);
       let offer = null;
       for (const m of failed) {
-        const r = this.preserveUnrestored(m);
-        if (r.offer && !offer) offer = Object.assign(r.offer, { marker: m });
-        if (r.stuck) {
-          // No room to keep it aside: the work slot keeps it, and this start saves nothing over it.
-          this.protectWork = true;
-          offer = { slot: true, marker: m, what: m.what, error: m.error };
-        }
+        const o = this.preserve(m);
+        if (o && (!offer || o.slot)) offer = o;
+        if (o && o.slot) this.protectWork = true;  // no room to keep it aside: nothing is saved over it
       }
-      if (retry) store.clearMarker(retry.tab);
+      if (retry) store.remove('restoring:' + retry.tab);
 
-      let opened = false;
+      let opened = '';
       let restored = false;
       if (failed.length) {
-        // Clean: the lessons' defaults, no restore, and the link counts as seen, so that a reload
-        // does not run into it again (the dialog offers it).
+        // Clean: the lessons' defaults; the link counts as seen, so a reload does not meet it again.
         this.config = configKey;
         this.cleanText = workText(this.captureWork());
       } else {
-        const saved = this.readWork(problems);
-        if (saved) {
+        const saved = this.store.json('work');
+        if (store.get('work') !== null && !validWork(saved)) problems.push('the saved work in this browser could not be read');
+        if (validWork(saved)) {
           this.beginRestore('your saved work', { kind: 'work' });
           problems.push(...this.restoreWork(saved).map((p) => 'saved work: ' + p));
           restored = true;
         }
-        if (configKey && !(saved && saved.config === configKey)) {
-          // A link (or a page's data-lab) not seen before: its state, over what was saved. If that
-          // replaces work of the same lesson, the work goes to the history first.
+        if (configKey && !(restored && saved.config === configKey)) {
+          // A link not seen before, over the saved work: work of its lesson goes to the history.
           const before = this.captureWork();
           this.beginRestore('the link', { kind: 'link', query: this.options.config, config: configKey });
           problems.push(...(await this.applyConfig(parsed.values)));
-          const after = this.captureWork();
-          const lesson = after.current;
-          if (saved && before.lessons[lesson] && !sameJson(before.lessons[lesson], after.lessons[lesson])) {
-            const kept = this.pushHistory(before, 'link');
-            opened = kept.ok ? 'kept' : 'lost';
-          }
+          const lesson = this.api.status().lesson;
+          if (restored && before.lessons[lesson] && !sameJson(before.lessons[lesson], this.api.snapshot(lesson)))
+            opened = this.pushHistory(before, 'link').ok ? 'kept' : 'lost';
         }
         this.config = configKey;
       }
-      if (this.role === 'second') this.lastSaved = workText(this.captureWork());  // only changes go to its entry
-      const savedOk = this.saveNow();
-      this.restoreDone(savedOk);
-      if (retry && retry.source && retry.source.kind === 'history') await this.restoreEntry(retry.source.id, { quiet: true });
-      if (retry && retry.source && retry.source.kind === 'link' && retry.source.config !== configKey)
-        await this.restoreLink(retry.source.query);
+      if (this.role === 'second') this.lastSaved = workText(this.captureWork());  // its entry: changes only
+      this.restoreDone(this.saveNow());
+      if (retry && retry.source.kind === 'history') await this.restoreEntry(retry.source.id, true);
 
-      // Room for what comes: a full origin still restored the work above, and the notice says what failed.
-      let full = false;
-      if (store.readable) {
-        const room = store.probe();
-        full = !room.ok;
-        this.saveFailed = full;
-      }
-
+      const full = store.readable && !store.roomy();
+      this.saveFailed = full;
       if (problems.length) notes.push('Not used from the link: ' + problems.join('; ') + '. The lesson\'s defaults stand in for these.');
       if (opened === 'kept') notes.push('Opened the link. Your previous work is kept: "Restore my previous work" brings it back.');
-      if (opened === 'lost') notes.push('Opened the link. Your previous work could not be kept in the history (storage for this site is full); it is still the saved work until this one is saved.');
+      if (opened === 'lost') notes.push('Opened the link. Your previous work stays the saved work until this one is saved: there is no room to keep both.');
       if (!store.readable) notes.push('Autosave is off: this page may not use the browser\'s storage.');
       else if (full) notes.push((restored ? 'Your saved work was restored; ' : 'Nothing is lost, but ') + FULL_TEXT);
-      const dropped = this.droppedText();
-      if (dropped) notes.push(dropped);
-      if (!full) notes.push(...this.pendingNotes.splice(0).filter((t) => !t.includes(FULL_TEXT)));
-      this.pendingNotes.length = 0;
+      notes.push(this.droppedText());
+      this.notes.length = 0;
       if (this.role === 'second') notes.push(this.secondTabText());
       if (failed.length) notes.push('Opened with the lessons\' defaults: your work could not be restored (see the dialog).');
       this.problems = problems;
       if (offer) setTimeout(() => this.showRecovery(offer), 0);
-      return notes;
+      return notes.filter(Boolean);
     }
 
     /** What the history lost since the last notice ('' if nothing). */
     droppedText() {
-      const { full, bound } = this.store.takeDropped();
-      const n = (k) => `${k} ${k === 1 ? 'entry' : 'entries'}`;
-      const out = [];
-      if (full) out.push(`The oldest previous work (${n(full)}) was dropped to make room: storage for this site is full.`);
-      if (bound) out.push(`The oldest previous work (${n(bound)}) was dropped: the history keeps the newest ${HISTORY_MAX_ENTRIES}.`);
-      return out.join(' ');
+      const { full, bound } = this.store.dropped;
+      this.store.dropped = { full: 0, bound: 0 };
+      const n = (k) => `The oldest previous work (${k} ${k === 1 ? 'entry' : 'entries'}) was dropped`;
+      return [full ? n(full) + ' to make room: storage for this site is full.' : '',
+              bound ? n(bound) + `: the history keeps the newest ${HISTORY_MAX}.` : ''].filter(Boolean).join(' ');
     }
 
     secondTabText() {
-      return 'This lab is also open in another tab. So that neither tab overwrites the other, ' +
-             'this tab saves its work separately: File > "another tab" brings it back.';
+      return 'This lab is also open in another tab. So that neither tab overwrites the other, this tab saves its work ' +
+             'separately: File > "another tab" brings it back.';
     }
 
-    readWork(problems) {
-      const record = this.store.getJson('work');
-      if (record === null) return null;
-      if (validWork(record)) return record;
-      problems.push('the saved work in this browser could not be read');
-      return null;
-    }
-
-    /** Moves the single "previous work" slot of earlier versions into the history. */
+    /** The single "previous work" slot of earlier versions moves into the history. */
     migratePrevious() {
-      const old = this.store.getJson('previous');
-      if (old === null) return;
-      if (validWork(old)) {
-        const r = this.pushHistory(old, 'previous', { savedAt: typeof old.savedAt === 'number' ? old.savedAt : Date.now() });
-        if (!r.ok) return;  // full: it stays where it is
-      }
+      const old = this.store.json('previous');
+      if (this.store.get('previous') === null || (validWork(old) && !this.pushHistory(old, 'previous', old.savedAt).ok)) return;
       this.store.remove('previous');
     }
 
     /**
-     * Markers of other starts whose tab is gone (it crashed, froze or was closed mid-restore),
-     * and this tab's own retry request. A marker of a tab that is still restoring is waited for
-     * (it ends, proves alive, or goes stale): a start that raced a healthy one must not open clean.
+     * Markers of starts whose tab is gone (it trapped, froze or closed mid-restore), and retry
+     * requests. A marker of a tab that may still be restoring is waited for until it goes, its
+     * tab proves alive (its beat moves on) or it goes stale: a start that raced a healthy one
+     * must not open clean.
      */
     async leftoverMarkers() {
-      const begun = Date.now();
-      for (;;) {
+      for (const begun = Date.now(); ;) {
         const now = Date.now();
         const markers = this.store.markers();
-        const leftover = markers.filter((m) => m.unreadable || m.trapped || m.choice || !fresh(m.beat, MARKER_STALE_MS, now));
-        const waiting = markers.filter((m) => !leftover.includes(m) && m.beat - m.startedAt < 2 * HEARTBEAT_MS);
-        if (!waiting.length || now - begun > MARKER_STALE_MS + 2 * HEARTBEAT_MS) {
-          for (const m of leftover) {
-            // Its tab is gone, so is its lease.
-            const lease = this.store.lease();
-            if (lease && lease.tab === m.tab && this.role === 'second') this.takeLease();
-          }
-          return leftover;
+        const gone = markers.filter((m) => m.trapped || m.choice || !live(m.beat, MARKER_STALE_MS, now));
+        const young = markers.filter((m) => !gone.includes(m) && m.beat - m.startedAt < 2 * BEAT_MS);
+        if (!young.length || now - begun > MARKER_STALE_MS + 2 * BEAT_MS) {
+          const lease = this.store.lease();
+          if (lease && gone.some((m) => m.tab === lease.tab)) this.takeLease();  // its lease went with it
+          return gone;
         }
         await sleep(250);
       }
     }
 
     /**
-     * Keeps what a failed restore was about in the history (storage only): the autosave of the
-     * clean start must not overwrite it. Returns {offer: the entry the dialog offers, dropped}.
+     * Keeps what a failed restore was about in the history (storage only), so that the clean
+     * start's autosave cannot overwrite it, and clears its marker once it is safe. Returns what
+     * the dialog offers: {id} of an entry, {slot} when there was no room (the work slot keeps
+     * it), or null.
      */
-    preserveUnrestored(m) {
-      const store = this.store;
-      const source = m.source || { kind: 'work' };
-      const info = { what: typeof m.what === 'string' ? m.what : 'your work', error: typeof m.error === 'string' ? m.error : '' };
-      let dropped = 0;
-      let offer = null;
-      const keep = (r) => { dropped += r.dropped; return r; };
-      const work = store.getJson('work');
-      if (source.kind === 'history' && typeof source.id === 'string' && store.entry(source.id)) {
-        const e = store.entry(source.id);
-        keep(store.putEntry(e.id, Object.assign(e, { failed: true })));
-        offer = Object.assign({ id: e.id }, info);
-        if (validWork(work)) keep(this.pushHistory(work, 'restore', { keep: [e.id] }));
-      } else if (source.kind === 'link' && typeof source.query === 'string') {
-        if (validWork(work)) keep(this.pushHistory(work, 'link'));
-        const id = this.newEntryId();
-        const r = keep(store.putEntry(id, { reason: 'crash', failed: true, lesson: this.linkLesson(source.query),
-                                            link: { query: source.query, config: source.config || null } }));
-        if (r.ok) offer = Object.assign({ id }, info);
+    preserve(m) {
+      const s = m.source || {};
+      const work = this.store.json('work');
+      const info = { marker: m, what: String(m.what || 'your work'), error: String(m.error || '') };
+      let id = null;
+      const e = s.kind === 'history' ? this.store.entry(s.id) : null;
+      if (e) {
+        this.store.putEntry(e.id, Object.assign(e, { failed: true }));
+        id = e.id;
+        if (validWork(work)) this.pushHistory(work, 'restore', undefined, false, [e.id]);
+      } else if (s.kind === 'link' && typeof s.query === 'string') {
+        if (validWork(work)) this.pushHistory(work, 'link');
+        const linkId = this.newEntryId();
+        const link = { query: s.query, config: s.config || null };
+        if (this.store.putEntry(linkId, { reason: 'crash', failed: true, lesson: U.parseConfig(s.query).values.get('lesson') || '', link }).ok) id = linkId;
       } else if (validWork(work)) {
-        const r = keep(this.pushHistory(work, 'crash', { failed: true }));
-        if (r.ok) offer = Object.assign({ id: r.id }, info);
+        id = this.pushHistory(work, 'crash', undefined, true).id;
       }
-      // Only once it is safe in the history: a marker that stays is handled by the next start.
-      const stuck = !offer && validWork(work);
-      if (!stuck) store.clearMarker(m.tab);
-      return { offer, dropped, stuck };
-    }
-
-    linkLesson(query) {
-      const { values } = U.parseConfig(query);
-      return values.get('lesson') || '';
+      if (!id && validWork(work)) return Object.assign(info, { slot: true });  // the marker stays
+      this.store.remove('restoring:' + m.tab);
+      return id ? Object.assign(info, { id }) : null;
     }
 
     newEntryId() {
       return Date.now().toString(36) + '-' + randomId().slice(0, 6);
     }
 
-    /**
-     * Keeps a work record in the history (newest first). The same work kept earlier is replaced,
-     * not duplicated. {ok, dropped, full, id}.
-     */
-    pushHistory(record, reason, { savedAt = Date.now(), failed = false, keep = [] } = {}) {
-      const store = this.store;
-      if (!store.readable) return { ok: false, dropped: 0, full: false, id: null };
+    /** Keeps a work record in the history; the same work kept before moves up. {ok, full, id}. */
+    pushHistory(record, reason, savedAt = Date.now(), failed = false, keep = []) {
       const text = workText(record);
-      const same = store.entries().filter((e) => e.work && !e.id.startsWith('tab-') && !keep.includes(e.id) &&
-                                                 workText(e.work) === text);
+      const same = this.store.entries().filter((e) => e.work && !e.id.startsWith('tab-') && !keep.includes(e.id) && workText(e.work) === text);
       const id = this.newEntryId();
       const work = { format: WORK_FORMAT, version: 1, config: record.config === undefined ? null : record.config,
                      current: record.current, lessons: record.lessons, savedAt: record.savedAt || savedAt };
-      const r = store.putEntry(id, { reason, savedAt, failed, lesson: record.current, work }, keep);
-      if (r.ok) for (const e of same) store.removeEntry(e.id);
-      r.id = r.ok ? id : null;
-      return r;
+      const r = this.store.putEntry(id, { reason, savedAt, failed, lesson: record.current, work }, keep);
+      if (r.ok) for (const e of same) this.store.remove('history:' + e.id);
+      return Object.assign(r, { id: r.ok ? id : null });
     }
 
     /** Applies a link's values over a fresh lesson, part by part; returns the problems. */
@@ -702,28 +543,29 @@
       return problems;
     }
 
+
     // ---- restore markers: a restore that crashes or freezes the lab must not do it again ----
 
-    /** Writes "restore in progress" before a restore: what, and where that work is kept. */
+    /** "Restore in progress", before it: what, and where that work is kept. */
     beginRestore(what, source) {
-      if (!this.store.readable) return;
       const now = Date.now();
       this.marker = { format: MARKER_FORMAT, version: 1, tab: this.tab, what, source, startedAt: now, beat: now };
-      this.markerDoneFrame = null;
-      this.store.setMarker(this.marker);
+      this.markerFrame = null;
+      this.writeMarker();
     }
 
-    /**
-     * The restore's synchronous part is over. From here the work is the saved work (or this
-     * tab's own entry); the marker goes once frames were drawn (frameDone).
-     */
+    writeMarker() {
+      if (this.marker) this.store.set('restoring:' + this.tab, JSON.stringify(this.marker));
+    }
+
+    /** Its synchronous part is over (and saved, if savedOk: the work is then where this tab saves). */
     restoreDone(savedOk) {
       if (!this.marker || this.dead) return;
       if (savedOk) this.marker.source = this.ownSource();
-      this.markerDoneFrame = this.frames;
+      this.markerFrame = this.frames;
       this.hiddenAtDone = document.visibilityState === 'hidden';
       this.marker.beat = Date.now();
-      this.store.setMarker(this.marker);
+      this.writeMarker();
     }
 
     ownSource() {
@@ -732,48 +574,39 @@
 
     /** After each frame: the marker goes once MARKER_FRAMES were drawn and the app is not busy. */
     frameDone() {
-      if (!this.marker || this.markerDoneFrame === null || this.dead) return;
-      const n = this.frames - this.markerDoneFrame;
-      if (n < MARKER_FRAMES || (n > MARKER_FRAMES && n % 5 !== 0)) return;
-      let busy = false;
+      const n = this.frames - this.markerFrame;
+      if (!this.marker || this.markerFrame === null || this.dead || n < MARKER_FRAMES || (n > MARKER_FRAMES && n % 5)) return;
       try {
-        busy = !!this.api.status().busy;  // a background run: not done yet (absent: not busy)
+        if (this.api.status().busy) return;  // a background run is not done (absent: not busy)
       } catch {
         return;
       }
-      if (!busy) this.endRestore();
+      this.endRestore();
     }
 
     endRestore() {
-      if (!this.marker) return;
-      this.store.clearMarker(this.tab);
+      this.store.remove('restoring:' + this.tab);
       this.marker = null;
-      this.markerDoneFrame = null;
+      this.markerFrame = null;
     }
 
-    /** The lab failed (a trap, an abort): stop, keep what is saved, and offer it in the lab's place. */
+    /** The wasm failed (a trap, an abort): stop, keep what is saved, offer it in the lab's place. */
     trap(error) {
       if (this.dead) return;
       this.dead = true;
-      this.deathText = describeError(error);
+      this.deathText = describe(error).replace(/^(RuntimeError|Error): /, '');
       console.error('C-Space Lab stopped:', error);
       clearInterval(this.autosaveTimer);
       clearInterval(this.heartbeatTimer);
-      this.closeDialog();
-      const store = this.store;
-      if (store.readable) {
-        // The next start opens clean and offers the work: a crash while working may well have
-        // been saved already and would come back with the restore.
-        const now = Date.now();
-        const m = this.marker || { format: MARKER_FORMAT, version: 1, tab: this.tab, what: 'your work',
-                                   source: this.ownSource(), startedAt: now, beat: now };
-        m.trapped = true;
-        m.error = this.deathText;
-        this.marker = m;
-        store.setMarker(m);
+      if (this.store.readable) {
+        // The next start opens clean and offers the work: a crash while working may have been
+        // saved already and would come back with the restore.
+        if (!this.marker) this.beginRestore('your work', this.ownSource());
+        Object.assign(this.marker, { trapped: true, error: this.deathText });
+        this.writeMarker();
         this.releaseLease();
       }
-      if (this.api && this.api.module) this.api.module.cslPageAction = () => {};
+      if (this.api) this.api.module.cslPageAction = () => {};
       this.showCrashPanel();
     }
 
@@ -781,13 +614,13 @@
 
     claimLease() {
       const lease = this.store.lease();
-      if (lease && lease.tab !== this.tab && fresh(lease.beat, LEASE_STALE_MS)) this.role = 'second';
+      if (lease && lease.tab !== this.tab && live(lease.beat, LEASE_STALE_MS)) this.role = 'second';
       else this.takeLease();
     }
 
     takeLease() {
       this.role = 'owner';
-      this.store.set('lease', JSON.stringify({ tab: this.tab, beat: Date.now() }), [], { trim: false });
+      this.store.set('lease', JSON.stringify({ tab: this.tab, beat: Date.now() }), [], false);
     }
 
     releaseLease() {
@@ -795,7 +628,7 @@
       if (lease && lease.tab === this.tab) this.store.remove('lease');
     }
 
-    /** Another tab writes the work slot now: this one keeps its work in its own entry. */
+    /** Another tab writes the work slot: this one keeps its work in its own entry. */
     becomeSecond() {
       if (this.role === 'second' || this.dead) return;
       this.role = 'second';
@@ -806,55 +639,39 @@
       this.say(this.secondTabText(), 12);
     }
 
-    /**
-     * The tab that held the lease is gone: this one takes over the work slot. What that tab
-     * left there goes to the history first (unless it is this tab's work already).
-     */
+    /** The lease holder is gone: this tab takes the work slot; what that tab left there goes to the history. */
     becomeOwner() {
       if (this.role === 'owner' || this.dead) return;
       this.takeLease();
-      const left = this.store.getJson('work');
-      const mine = this.captureWork();
-      if (validWork(left) && workText(left) !== workText(mine)) this.pushHistory(left, 'tab');
+      const left = this.store.json('work');
+      if (validWork(left) && workText(left) !== workText(this.captureWork())) this.pushHistory(left, 'tab');
       this.lastSaved = null;
-      if (this.saveNow()) this.store.removeEntry(this.tabEntryId);
+      if (this.saveNow()) this.store.remove('history:' + this.tabEntryId);
       if (this.marker) this.marker.source = this.ownSource();
       this.refreshHistory();
     }
 
     startHeartbeat() {
       if (!this.store.readable) return;
-      const beat = () => {
-        if (this.dead) return;
-        const now = Date.now();
+      this.heartbeatTimer = setInterval(() => {
         const lease = this.store.lease();
-        if (this.role === 'owner') {
-          if (lease && lease.tab !== this.tab && fresh(lease.beat, LEASE_STALE_MS, now)) this.becomeSecond();
-          else this.store.set('lease', JSON.stringify({ tab: this.tab, beat: now }), [], { trim: false });
-        } else if (!lease || !fresh(lease.beat, LEASE_STALE_MS, now)) {
-          this.becomeOwner();
-        }
+        const other = lease && lease.tab !== this.tab && live(lease.beat, LEASE_STALE_MS);
+        if (this.role === 'owner' && other) this.becomeSecond();
+        else if (this.role === 'owner') this.takeLease();
+        else if (!other) this.becomeOwner();
         if (this.marker) {
-          this.marker.beat = now;
-          this.store.setMarker(this.marker);
+          this.marker.beat = Date.now();
+          this.writeMarker();
         }
-      };
-      this.heartbeatTimer = setInterval(beat, HEARTBEAT_MS);
+      }, BEAT_MS);
       global.addEventListener('storage', (e) => {
         if (this.dead || e.storageArea !== this.store.storage || !e.key || !e.key.startsWith(this.store.prefix)) return;
         const slot = e.key.slice(this.store.prefix.length);
-        if (slot === 'lease') {
-          const lease = this.store.lease();
-          if (!lease) {
-            if (this.role === 'second') this.becomeOwner();
-          } else if (lease.tab !== this.tab && this.role === 'owner') {
-            this.becomeSecond();
-          }
-        } else if (slot === 'work' && this.role === 'owner') {
-          // Two tabs both thought they held the lease: the lease decides.
-          const lease = this.store.lease();
-          if (lease && lease.tab !== this.tab) this.becomeSecond();
-        } else if (slot.startsWith('history:')) {
+        const lease = this.store.lease();
+        // A tab took the lease (or two tabs both thought they held it: the lease decides), or gave it up.
+        if ((slot === 'lease' || slot === 'work') && lease && lease.tab !== this.tab) this.becomeSecond();
+        else if (slot === 'lease' && !lease) this.becomeOwner();
+        if (slot.startsWith('history:')) {
           clearTimeout(this.historyTimer);
           this.historyTimer = setTimeout(() => this.refreshHistory(), 200);
         }
@@ -899,10 +716,8 @@
       return problems;
     }
 
-    /**
-     * Saves what is on screen: to the work slot (the tab holding the lease) or to this tab's own
-     * history entry. True when it is saved (or was already).
-     */
+
+    /** Saves what is on screen to the work slot (or this tab's own entry). True when saved (or it was already). */
     saveNow() {
       if (this.dead || !this.api || !this.store.readable) return false;
       let work;
@@ -913,40 +728,33 @@
       }
       const text = workText(work);
       if (text === this.lastSaved) return true;
-      if (this.role === 'owner') {
-        const lease = this.store.lease();
-        if (lease && lease.tab !== this.tab && fresh(lease.beat, LEASE_STALE_MS)) {
-          this.becomeSecond();  // saves through the branch below
-          return this.lastSaved === text;
-        }
+      const lease = this.role === 'owner' && this.store.lease();
+      if (lease && lease.tab !== this.tab && live(lease.beat, LEASE_STALE_MS)) {
+        this.becomeSecond();  // saves to its entry
+        return this.lastSaved === text;
       }
       const record = Object.assign(work, { savedAt: Date.now() });
-      let r;
-      if (this.protectWork) r = { ok: false, dropped: 0, full: true };  // holds work that could not be kept aside
-      else if (this.role === 'owner') r = this.store.set('work', JSON.stringify(record));
-      else r = this.store.putEntry(this.tabEntryId, { reason: 'tab', lesson: record.current, savedAt: record.savedAt, work: record });
+      const r = this.protectWork ? { ok: false, full: true }
+        : this.role === 'owner' ? this.store.set('work', JSON.stringify(record))
+        : this.store.putEntry(this.tabEntryId, { reason: 'tab', lesson: record.current, savedAt: record.savedAt, work: record });
       this.dirtySince = 0;
-      // What to tell goes with the next notice (say()): an action's own notice would replace it.
-      if (this.started) {
-        const dropped = this.droppedText();
-        if (dropped) this.pendingNotes.push(dropped);
-      }
+      // What to tell waits for the next notice (say()): an action's own notice would replace it.
+      if (this.started) this.notes.push(this.droppedText());  // '' when nothing was dropped
       if (r.ok) {
         this.lastSaved = text;
-        if (this.saveFailed && this.started) this.pendingNotes.push('Saving works again.');
+        if (this.saveFailed && this.started) this.notes.push('Saving works again.');
         this.saveFailed = false;
         if (this.role === 'second') this.refreshHistory();
         return true;
       }
-      if (!this.saveFailed && !this.protectWork)
-        this.pendingNotes.push(r.full ? 'Your work is not saved: ' + FULL_TEXT : 'Your work could not be saved in this browser.');
+      if (!this.saveFailed && !this.protectWork) this.notes.push(r.full ? 'Your work is not saved: ' + FULL_TEXT : 'Your work could not be saved in this browser.');
       this.saveFailed = true;
       return false;
     }
 
-    /** The app's notice: `text` and what saving had to tell since the last one. */
+    /** The app's notice: `text`, and what saving had to tell since the last one. */
     say(text, seconds = 8) {
-      const all = [text, ...this.pendingNotes.splice(0)].filter(Boolean).join(' ');
+      const all = [text, ...this.notes.splice(0)].filter(Boolean).join(' ');
       if (all && !this.dead) this.api.notify(all, seconds);
     }
 
@@ -971,7 +779,7 @@
         if (!this.dirtySince) this.dirtySince = now;
         if (now - this.changedAt >= AUTOSAVE_QUIET_MS || now - this.dirtySince >= AUTOSAVE_MAX_WAIT_MS) {
           this.saveNow();
-          if (this.pendingNotes.length) this.say('', 10);
+          this.say('', 10);
         }
       };
       this.autosaveTimer = setInterval(poll, AUTOSAVE_POLL_MS);
@@ -979,10 +787,8 @@
       global.addEventListener('pagehide', () => {
         this.saveNow();
         if (this.dead) return;
-        // A tab opened in the background and closed unseen drew no frames: its restore did not
-        // fail, there was just no chance to show it.
-        if (this.marker && this.markerDoneFrame !== null && this.hiddenAtDone && this.frames === this.markerDoneFrame)
-          this.endRestore();
+        // A tab opened in the background and closed unseen drew no frames: its restore did not fail.
+        if (this.marker && this.hiddenAtDone && this.frames === this.markerFrame) this.endRestore();
         this.releaseLease();
       });
       document.addEventListener('visibilitychange', () => {
@@ -993,9 +799,8 @@
     // ---- the history of previous work --------------------------------------------------------
 
     entryLabel(e) {
-      let why = REASONS[e.reason] || 'previous work';
-      if (e.failed && e.reason !== 'crash') why += ', could not be restored';
-      const what = e.link ? 'a link' + (e.lesson ? ' to ' + this.lessonName(e.lesson) : '') : this.lessonName(e.lesson || (e.work && e.work.current) || '');
+      const why = (REASONS[e.reason] || 'previous work') + (e.failed && e.reason !== 'crash' ? ', could not be restored' : '');
+      const what = e.link ? 'a link' + (e.lesson ? ' to ' + this.lessonName(e.lesson) : '') : this.lessonName(e.lesson || e.work.current);
       return `${timeText(e.savedAt)} · ${why} · ${what}`.slice(0, 200);
     }
 
@@ -1004,23 +809,13 @@
       if (this.dead || !this.api) return [];
       const list = this.store.entries().filter((e) => e.id !== this.tabEntryId).slice(0, 20);
       this.historyIds = list.map((e) => e.id);
-      try {
-        this.api.pageState({
-          previous: list.length ? 'your work of ' + new Date(list[0].savedAt).toLocaleString() : '',
-          history: list.map((e) => ({ label: this.entryLabel(e) })),
-        });
-      } catch (e) {
-        if (this.dead) return [];
-        throw e;
-      }
+      this.api.pageState({ previous: list.length ? 'your work of ' + new Date(list[0].savedAt).toLocaleString() : '',
+                           history: list.map((e) => ({ label: this.entryLabel(e) })) });
       return list;
     }
 
-    /**
-     * Restores an entry of the history; what is on screen goes into the history first, so that
-     * nothing is lost and the top bar's button undoes it.
-     */
-    async restoreEntry(id, { quiet = false } = {}) {
+    /** Restores a history entry; what is on screen goes into the history first (nothing is lost). */
+    async restoreEntry(id, quiet = false) {
       const entry = id ? this.store.entry(id) : null;
       if (!entry) {
         this.api.notify('That previous work is not there any more (another tab may have restored it).', 6);
@@ -1028,60 +823,31 @@
         return false;
       }
       const current = this.captureWork();
-      if (workText(current) !== this.cleanText) {
-        const kept = this.pushHistory(current, 'restore', { keep: [id] });
-        if (!kept.ok) {
-          this.api.notify('Not restored: what is on screen could not be kept first (storage for this site is full). ' +
-                          'File > Export scene keeps a copy.', 10);
-          return false;
-        }
+      if (workText(current) !== this.cleanText && !this.pushHistory(current, 'restore', undefined, false, [id]).ok) {
+        this.api.notify('Not restored: what is on screen could not be kept first (storage for this site is full). File > Export scene keeps a copy.', 10);
+        return false;
       }
       const label = this.entryLabel(entry);
-      let problems;
-      if (entry.work) {
-        this.beginRestore('your work of ' + label, { kind: 'history', id });
-        problems = this.restoreWork(entry.work);
-      } else {
-        this.beginRestore('a link of ' + label, { kind: 'history', id });
-        problems = await this.applyConfig(U.parseConfig(entry.link.query).values);
-      }
+      this.beginRestore('your work of ' + label, { kind: 'history', id });
+      const problems = entry.work ? this.restoreWork(entry.work) : await this.applyConfig(U.parseConfig(entry.link.query).values);
       this.cleanText = null;
       const saved = this.saveNow();
-      if (saved) this.store.removeEntry(id);  // it is the work now
+      if (saved) this.store.remove('history:' + id);  // it is the work now
       this.restoreDone(saved);
       this.refreshHistory();
-      if (!quiet || problems.length) {
-        this.say(problems.length ? `Restored ${label}, except: ${problems.join('; ')}`
-                                 : `Restored ${label}. What you had is in File > previous work.`, 8);
-      }
+      if (!quiet || problems.length)
+        this.say(problems.length ? `Restored ${label}, except: ${problems.join('; ')}` : `Restored ${label}. What you had is in File > previous work.`, 8);
       return true;
     }
 
-    /** A retry of a link that failed on another page: applied over fresh lessons. */
-    async restoreLink(query) {
-      this.beginRestore('the link', { kind: 'link', query, config: null });
-      const problems = await this.applyConfig(U.parseConfig(query).values);
-      this.restoreDone(this.saveNow());
-      if (problems.length) this.api.notify('Not used from the link: ' + problems.join('; '), 10);
-    }
-
-    /** The work of a history entry as a file to keep (File > Import reads its scene). */
-    entryFile(entry) {
-      if (entry.link) {
-        return { format: 'cspacelab-link', version: 1, savedAt: entry.savedAt, query: entry.link.query,
-                 url: this.options.home + (entry.link.query.startsWith('?') ? '' : '?') + entry.link.query };
-      }
-      const w = entry.work;
-      const current = w.lessons[w.current];
-      return Object.assign({ format: WORK_FORMAT, version: 1, savedAt: w.savedAt || entry.savedAt, current: w.current,
-                             lessons: w.lessons }, current && current.scene ? { scene: current.scene } : {});
-    }
-
-    exportEntry(entry) {
-      const file = this.entryFile(entry);
-      const stamp = new Date(entry.savedAt).toISOString().slice(0, 19).replace(/[:T]/g, '-');
-      this.downloadJson(`cspacelab-${entry.link ? 'link' : 'work'}-${stamp}.json`, file);
-      return file;
+    /** An entry as a file to keep: its work (and, on top, the current lesson's scene, which File > Import takes) or its link. */
+    exportEntry(e) {
+      const stamp = new Date(e.savedAt).toISOString().slice(0, 19).replace(/[:T]/g, '-');
+      const w = e.work;
+      const file = e.link ? { format: 'cspacelab-link', version: 1, savedAt: e.savedAt, url: this.options.home + '?' + e.link.query.replace(/^\?/, '') }
+        : Object.assign({ format: WORK_FORMAT, version: 1, savedAt: w.savedAt || e.savedAt, current: w.current, lessons: w.lessons },
+                        w.lessons[w.current] && w.lessons[w.current].scene ? { scene: w.lessons[w.current].scene } : {});
+      this.downloadJson(`cspacelab-${e.link ? 'link' : 'work'}-${stamp}.json`, file);
     }
 
     // ---- actions (the app's buttons) --------------------------------------------------------
@@ -1104,8 +870,7 @@
           default: return undefined;
         }
       } catch (e) {
-        if (this.dead) return undefined;  // the crash panel says it
-        this.api.notify(`${name}: ${e && e.message ? e.message : e}`, 8);
+        if (!this.dead) this.api.notify(`${name}: ${e && e.message ? e.message : e}`, 8);
         return undefined;
       }
     }
@@ -1243,12 +1008,13 @@
       return blob;
     }
 
+
     installFrameHook() {
       this.api.module.preMainLoop = () => this.framePre();
       this.api.module.postMainLoop = () => this.framePost();
     }
 
-    /** Emscripten's Module.preMainLoop: a stopped lab draws no more (false skips the frame). */
+    /** Module.preMainLoop: a stopped lab draws no more (false skips the frame). */
     framePre() {
       if (this.dead) return false;
       this.inFrame = true;
@@ -1256,8 +1022,8 @@
     }
 
     /**
-     * Emscripten's Module.postMainLoop, after each frame and in the same task: the WebGL drawing
-     * buffer still holds the frame there (no preserveDrawingBuffer needed for a PNG).
+     * Module.postMainLoop, after each frame and in its task: the WebGL drawing buffer still
+     * holds the frame (a PNG needs no preserveDrawingBuffer).
      */
     framePost() {
       this.inFrame = false;
@@ -1291,38 +1057,29 @@
       }
     }
 
-    /** The lesson back to its default; what it replaced goes to the history (asked first in the app). */
+
+    /** The lesson back to its default (the app asked first); what it replaced goes to the history. */
     resetLesson() {
       const lesson = this.api.status().lesson;
       const before = this.captureWork();
       this.api.restore({ lesson });
-      const after = this.captureWork();
-      if (sameJson(before.lessons[lesson], after.lessons[lesson])) {
-        this.api.notify(`${this.lessonName(lesson)} is at its default already.`, 5);
-        return;
-      }
-      const kept = this.pushHistory(before, 'reset');
-      if (!kept.ok && this.store.readable) {
-        // Nothing is lost: without room to keep it, the work stays.
-        this.restoreWork(before);
-        this.api.notify(`Not reset: your work could not be kept first (storage for this site is full). File > Export scene keeps a copy.`, 10);
-        return;
+      if (sameJson(before.lessons[lesson], this.api.snapshot(lesson))) return this.api.notify(`${this.lessonName(lesson)} is at its default already.`, 5);
+      if (this.store.readable && !this.pushHistory(before, 'reset').ok) {
+        this.restoreWork(before);  // without room to keep it, the work stays
+        return this.api.notify('Not reset: your work could not be kept first (storage for this site is full). File > Export scene keeps a copy.', 10);
       }
       this.cleanText = null;
       this.refreshHistory();
       this.saveNow();
-      this.say(`${this.lessonName(lesson)} is back to its default. "Restore my previous work" undoes this. ` +
-               this.droppedText(), 8);
+      return this.say(`${this.lessonName(lesson)} is back to its default. "Restore my previous work" undoes this. ${this.droppedText()}`, 8);
     }
 
-    /** The newest previous work (the top bar's button); pressed twice, it undoes itself. */
+    /** The newest previous work (the top bar's button): pressed twice, it undoes itself. */
     async restorePrevious() {
       const list = this.refreshHistory();
-      if (!list.length) {
-        this.api.notify('There is no previous work to restore.', 5);
-        return false;
-      }
-      return this.restoreEntry(list[0].id);
+      if (list.length) return this.restoreEntry(list[0].id);
+      this.api.notify('There is no previous work to restore.', 5);
+      return false;
     }
 
     async openFull() {
@@ -1352,12 +1109,12 @@
       return ok;
     }
 
-    // ---- dialog (DOM, over the canvas: real text fields and buttons) ------------------------
+
+    // ---- dialogs (DOM, over the canvas: real text fields and buttons) -----------------------
 
     /**
-     * A dialog over the lab: a title, paragraphs, read-only text fields with Copy, and buttons
-     * ({label, run, primary}). Options: {closeLabel (null: no Close), crash: over a lab that
-     * stopped (opaque, no Escape)}.
+     * A dialog over the lab: a title, paragraphs, read-only fields with Copy, and buttons
+     * ({name, label, primary, run}). closeLabel null: no Close; crash: over a lab that stopped.
      */
     showDialog(title, paragraphs, fields, buttons = [], { closeLabel = 'Close', crash = false } = {}) {
       this.closeDialog();
@@ -1375,179 +1132,135 @@
         box.appendChild(el('label', { class: 'lab-dialog-field' }, [el('span', { text: f.label }), area]));
         box.appendChild(el('div', { class: 'lab-dialog-row' }, [copy]));
       }
+      if (closeLabel) buttons = buttons.concat({ name: 'close', label: closeLabel, close: true, run: () => this.closeDialog() });
       const row = el('div', { class: 'lab-dialog-row lab-dialog-actions' });
       for (const b of buttons) {
-        const button = el('button', { type: 'button', text: b.label, class: b.primary ? 'lab-dialog-primary' : '' });
-        if (b.name) button.dataset.action = b.name;
+        const button = el('button', { type: 'button', text: b.label, class: b.primary ? 'lab-dialog-primary' : b.close ? 'lab-dialog-close' : '' });
+        button.dataset.action = b.name;
         button.addEventListener('click', () => b.run(button));
         row.appendChild(button);
-      }
-      let close = null;
-      if (closeLabel) {
-        close = el('button', { type: 'button', class: 'lab-dialog-close', text: closeLabel });
-        close.dataset.action = 'close';
-        close.addEventListener('click', () => this.closeDialog());
-        row.appendChild(close);
       }
       box.appendChild(row);
       const dialog = el('div', { class: 'lab-dialog' + (crash ? ' lab-crash' : ''), role: 'dialog' }, [box]);
       dialog.setAttribute('aria-modal', 'true');
       dialog.setAttribute('aria-labelledby', titleId);
       dialog.addEventListener('keydown', (e) => {
-        if (e.key === 'Escape' && close) this.closeDialog();
-        if (e.key === 'Tab') {
-          // Keep the keyboard in the dialog: it is modal.
-          const items = Array.from(dialog.querySelectorAll('button, textarea')).filter((x) => !x.disabled);
-          const i = items.indexOf(document.activeElement);
-          if (e.shiftKey && i <= 0) { items[items.length - 1].focus(); e.preventDefault(); }
-          else if (!e.shiftKey && i === items.length - 1) { items[0].focus(); e.preventDefault(); }
+        if (e.key === 'Escape' && closeLabel) this.closeDialog();
+        if (e.key !== 'Tab') return;
+        // Modal: Tab cycles within the dialog.
+        const items = Array.from(dialog.querySelectorAll('button, textarea'));
+        const i = items.indexOf(document.activeElement);
+        const to = e.shiftKey ? (i <= 0 ? items.length - 1 : -1) : (i === items.length - 1 ? 0 : -1);
+        if (to >= 0) {
+          items[to].focus();
+          e.preventDefault();
         }
       });
-      if (close) {
-        dialog.addEventListener('mousedown', (e) => {
-          if (e.target === dialog) this.closeDialog();
-        });
-      }
+      dialog.addEventListener('mousedown', (e) => {
+        if (e.target === dialog && closeLabel) this.closeDialog();
+      });
       this.root.appendChild(dialog);
       this.dialog = dialog;
-      const first = dialog.querySelector('textarea') || dialog.querySelector('.lab-dialog-actions button');
-      if (first) first.focus({ preventScroll: true });
+      const first = dialog.querySelector('textarea') || row.firstChild;
+      first.focus({ preventScroll: true });
       return dialog;
     }
 
     closeDialog() {
       if (!this.dialog) return;
-      const crash = this.dialog.classList.contains('lab-crash');
       this.dialog.remove();
       this.dialog = null;
-      if (!crash && !this.dead) this.canvas.focus({ preventScroll: true });
+      if (!this.dead) this.canvas.focus({ preventScroll: true });
     }
 
-    /**
-     * After a clean start: the work that could not be restored, and what to do with it. It is
-     * in the history already, so closing the dialog loses nothing.
-     */
+    /** The three choices for work that could not be restored: {retry, discard} run the first and the last. */
+    choices(entry, retry, discard) {
+      return [{ name: 'retry', label: 'Try to restore it again', primary: true, run: retry },
+              { name: 'export', label: 'Export it (JSON file)', run: (b) => { this.exportEntry(entry); b.textContent = 'Exported'; } },
+              { name: 'discard', label: 'Discard it', run: discard }];
+    }
+
+    /** A reload whose start restores the marker's work (and opens clean again if it fails again). */
+    retryByReload(m) {
+      m.choice = 'retry';
+      this.store.set('restoring:' + m.tab, JSON.stringify(m));
+      global.location.reload();
+    }
+
+    /** After a clean start: the work that could not be restored (in the history already) and what to do with it. */
     showRecovery(offer) {
-      if (this.dead) return;
-      // A history entry, or (when there was no room to keep it aside) the work slot itself.
-      const entry = offer.id ? this.store.entry(offer.id) : offer.slot ? this.subjectOf({ source: { kind: 'work' } }) : null;
-      if (!entry) return;
-      const m = offer.marker || {};
-      const cause = m.trapped ? `the lab stopped (${offer.error || 'the app failed'})` : 'the page stopped responding';
-      const what = offer.what === 'your work' ? 'while you worked' : `while restoring ${offer.what}`;
-      const paragraphs = [
-        `Last time ${cause} ${what}. So that this cannot happen again at every start, the lab opened with the lessons' defaults.`,
+      const m = offer.marker;
+      const entry = offer.id ? this.store.entry(offer.id) : this.subjectOf(m);
+      if (this.dead || !entry) return;
+      const cause = m.trapped ? `the lab stopped (${offer.error})` : 'the page stopped responding';
+      this.showDialog('Your work could not be restored', [
+        `Last time ${cause} ${offer.what === 'your work' ? 'while you worked' : 'while restoring ' + offer.what}. So that ` +
+        'this cannot happen again at every start, the lab opened with the lessons\' defaults.',
         offer.id ? `That work is kept: File > "${this.entryLabel(entry)}".`
-                 : 'That work is still the saved work: there is no room to keep it aside, so changes here are not saved until you decide.',
-      ];
-      const buttons = [
-        { name: 'retry', label: 'Try to restore it again', primary: true, run: async () => {
-          this.closeDialog();
-          if (!offer.id) {
-            m.choice = 'retry';
-            this.store.setMarker(m);
-            global.location.reload();
-            return;
-          }
-          try {
-            await this.restoreEntry(entry.id);
-          } catch (e) {
-            if (!this.dead) this.api.notify(`Not restored: ${describeError(e)}`, 8);
-          }
-        } },
-        { name: 'export', label: 'Export it (JSON file)', run: (b) => {
-          this.exportEntry((offer.id && this.store.entry(offer.id)) || entry);
-          b.textContent = 'Exported';
-        } },
-        { name: 'discard', label: 'Discard it', run: () => {
-          if (offer.id) this.store.removeEntry(offer.id);
-          else {
-            this.discardSubject(m);
-            this.protectWork = false;
-            this.saveNow();
-          }
-          this.closeDialog();
-          this.refreshHistory();
-          this.api.notify('Discarded the work that could not be restored.', 5);
-        } },
-      ];
-      this.showDialog('Your work could not be restored', paragraphs, [], buttons, { closeLabel: 'Decide later' });
+                 : 'That work is still the saved work: there is no room to keep it aside, so nothing here is saved until you decide.',
+      ], [], this.choices(entry, () => {
+        this.closeDialog();
+        return offer.id ? this.action('restore-history:' + this.historyIds.indexOf(offer.id)) : this.retryByReload(m);
+      }, () => {
+        if (offer.id) this.store.remove('history:' + offer.id);
+        else this.discard(m);
+        this.protectWork = false;
+        this.closeDialog();
+        this.refreshHistory();
+        this.saveNow();
+        this.api.notify('Discarded the work that could not be restored.', 5);
+      }), { closeLabel: 'Decide later' });
     }
 
-    /**
-     * The lab failed: a message in its place with the same choices as showRecovery. Export and
-     * discard only touch storage and download a file; "try again" reloads the page, whose start
-     * restores the work (and opens clean if it fails once more).
-     */
+    /** The wasm failed: a message in the lab's place, with the same choices (export and discard need only storage). */
     showCrashPanel() {
-      const store = this.store;
       const m = this.marker;
+      const subject = m && this.subjectOf(m);
       const status = this.root.querySelector('.lab-status');
       if (status) status.hidden = true;
-      const subject = m ? this.subjectOf(m) : null;
-      const paragraphs = [`The lab's engine failed: ${this.deathText}.`];
-      const buttons = [];
+      const text = [`The lab's engine failed: ${this.deathText}.`];
+      let buttons;
       if (subject) {
-        paragraphs.push(m.what === 'your work'
-          ? `Your work saved in this browser at ${timeText(subject.savedAt)} is kept.`
-          : `It stopped while restoring ${m.what}, which is kept in this browser.`);
-        buttons.push(
-          { name: 'retry', label: 'Try to restore it again', primary: true, run: () => {
-            m.choice = 'retry';
-            store.setMarker(m);
-            global.location.reload();
-          } },
-          { name: 'export', label: 'Export it (JSON file)', run: (b) => {
-            this.exportEntry(subject);
-            b.textContent = 'Exported';
-          } },
-          { name: 'discard', label: 'Discard it', run: () => {
-            this.discardSubject(m);
-            global.location.reload();
-          } });
-        paragraphs.push('"Try to restore it again" reloads the page; if it fails again, the lab opens with the defaults and offers it once more.');
+        text.push(m.what === 'your work' ? `Your work saved in this browser at ${timeText(subject.savedAt)} is kept.`
+                                         : `It stopped while restoring ${m.what}, which is kept in this browser.`,
+                  '"Try to restore it again" reloads the page; if it fails again, the lab opens with the defaults and offers it once more.');
+        buttons = this.choices(subject, () => this.retryByReload(m), () => {
+          this.discard(m);
+          global.location.reload();
+        });
       } else {
-        paragraphs.push(store.readable ? 'Nothing of yours was saved in this browser before it stopped.' : 'This page may not use the browser\'s storage, so nothing was saved.');
-        buttons.push({ name: 'reload', label: 'Reload the lab', primary: true, run: () => global.location.reload() });
+        text.push(this.store.readable ? 'Nothing of yours was saved in this browser before it stopped.' : 'This page may not use the browser\'s storage, so nothing was saved.');
+        buttons = [{ name: 'reload', label: 'Reload the lab', primary: true, run: () => global.location.reload() }];
       }
-      this.showDialog('C-Space Lab stopped', paragraphs, [], buttons, { closeLabel: null, crash: true });
+      this.showDialog('C-Space Lab stopped', text, [], buttons, { closeLabel: null, crash: true });
     }
 
-    /** What a marker's restore was about, as a history entry (to export), or null. */
+    /** What a marker's restore was about, as an entry to export, or null. */
     subjectOf(m) {
-      const source = m.source || { kind: 'work' };
-      if (source.kind === 'history' && source.id) {
-        const e = this.store.entry(source.id);
-        if (e) return e;
-      }
-      if (source.kind === 'link' && typeof source.query === 'string')
-        return { savedAt: m.startedAt || Date.now(), link: { query: source.query }, lesson: this.linkLesson(source.query) };
-      const work = this.store.getJson('work');
-      if (validWork(work)) return { savedAt: work.savedAt || Date.now(), work, lesson: work.current };
-      return null;
+      const s = m.source || {};
+      const e = s.kind === 'history' && this.store.entry(s.id);
+      if (e) return e;
+      if (s.kind === 'link') return { savedAt: m.startedAt, link: { query: s.query } };
+      const work = this.store.json('work');
+      return validWork(work) ? { savedAt: work.savedAt || Date.now(), work } : null;
     }
 
-    /** Drops what the failed restore was about, so that the next start does not meet it again. */
-    discardSubject(m) {
-      const store = this.store;
-      const source = m.source || { kind: 'work' };
-      if (source.kind === 'history' && source.id) {
-        store.removeEntry(source.id);
-      } else if (source.kind === 'link') {
-        // The link is dropped, not the work it would have replaced: that work remembers the link
-        // as seen, so the same address does not apply it again.
-        const work = store.getJson('work');
-        const record = validWork(work) ? work : { format: WORK_FORMAT, version: 1, current: '', lessons: {} };
-        record.config = source.config || null;
-        store.set('work', JSON.stringify(record));
+    /**
+     * Drops what a failed restore was about. The work slot is emptied, not removed: it remembers
+     * the link it came from, so the same address does not bring the failing state back (for a
+     * failed link, the work it would have replaced stays, with the link marked as seen).
+     */
+    discard(m) {
+      const s = m.source || {};
+      if (s.kind === 'history') {
+        this.store.remove('history:' + s.id);
       } else {
-        // Emptied, not removed: the work remembers which link it came from, so that the same
-        // address does not bring the failing state back.
-        const work = store.getJson('work');
-        store.set('work', JSON.stringify({ format: WORK_FORMAT, version: 1, config: validWork(work) ? work.config : null,
-                                           current: '', lessons: {} }));
+        const work = this.store.json('work');
+        const kept = s.kind === 'link' && validWork(work) ? work : { format: WORK_FORMAT, version: 1, current: '', lessons: {} };
+        kept.config = s.kind === 'link' ? s.config || null : validWork(work) ? work.config : null;
+        this.store.set('work', JSON.stringify(kept));
       }
-      store.clearMarker(m.tab);
+      this.store.remove('restoring:' + m.tab);
     }
 
     // ---- input: focus, wheel, drag and drop -------------------------------------------------
