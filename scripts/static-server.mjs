@@ -1,7 +1,9 @@
 // A small static file server for the built site, used by scripts/serve.sh and the browser tests.
 //   node scripts/static-server.mjs DIR [PORT] [HOST]     (defaults: 8000, 127.0.0.1)
 // Serves .wasm as application/wasm (needed for streaming compilation) and never caches, so a
-// rebuilt app is what the next reload shows. Refuses paths that leave DIR.
+// rebuilt app is what the next reload shows. Refuses paths that leave DIR. Takes request heads
+// of up to MAX_HEADER_BYTES: a link may carry a 64 KB scene, and node's default (16 KB) answered
+// such links with 431.
 import http from 'node:http';
 import fs from 'node:fs';
 import path from 'node:path';
@@ -14,10 +16,14 @@ const TYPES = {
   '.svg': 'image/svg+xml', '.ico': 'image/x-icon', '.txt': 'text/plain; charset=utf-8',
 };
 
+// The documented limits of a link (web/lab-url.js): a 64 KB encoded scene plus 63 other values
+// of at most 256 characters, with room for the request's other headers.
+export const MAX_HEADER_BYTES = 256 * 1024;
+
 /** Starts serving `root`; resolves to {server, url} once listening (port 0 = any free port). */
 export function serve(root, port = 8000, host = '127.0.0.1') {
   const base = path.resolve(root);
-  const server = http.createServer((req, res) => {
+  const server = http.createServer({ maxHeaderSize: MAX_HEADER_BYTES }, (req, res) => {
     let rel;
     try {
       rel = decodeURIComponent(new URL(req.url, 'http://x').pathname);

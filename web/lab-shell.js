@@ -1,21 +1,46 @@
 // The page around one C-Space Lab instance: what a link or a page's data-lab attribute asks
-// for, autosave to localStorage (with a "previous work" slot that nothing overwrites silently),
-// Share and Embed dialogs, import and export, and the input rules of an embed (the wheel
-// scrolls the page until the lab has focus; a click gives it focus).
+// for, autosave with a bounded history of previous work, restores that cannot brick the lab,
+// tabs that do not overwrite each other, Share and Embed dialogs, import and export, and the
+// input rules of an embed (the wheel scrolls the page until the lab has focus).
 //
 // Everything the user or a link supplies is handled as data: parsed with JSON.parse or the
 // strict parsers of lab-url.js, shown with textContent or as an <textarea>'s value, passed to the
 // app as JSON. Problems become the app's one-line notice; nothing is ever written as HTML.
+//
+// Storage, per lab, `cspacelab:v1:<page path>:<id>:` and
+//   work             the autosave of the tab that holds the lease
+//   history:<entry>  previous work: what a link, a reset or a restore replaced, work that could
+//                    not be restored, another tab's work. One key each, so that tabs never
+//                    rewrite each other's entries and a small one fits where a large one does not
+//   restoring:<tab>  a restore in progress (what, where it is kept) until frames were drawn
+//                    after it: a start that finds one of a gone tab opens clean
+//   lease            {tab, beat}: the tab that writes `work`; another saves to its own entry
 'use strict';
 
 (function (global) {
   const U = global.CSpaceLabUrl;
   const STORAGE_PREFIX = 'cspacelab:v1:';
   const WORK_FORMAT = 'cspacelab-work';
+  const ENTRY_FORMAT = 'cspacelab-previous-work';
+  const MARKER_FORMAT = 'cspacelab-restoring';
   const MAX_IMPORT_BYTES = 2 * 1024 * 1024;
   const AUTOSAVE_POLL_MS = 600;
   const AUTOSAVE_QUIET_MS = 1000;   // save once nothing changed for this long...
   const AUTOSAVE_MAX_WAIT_MS = 4000; // ...or at least this often while things keep changing
+  // The history: at most this many entries and characters (Chromium gives an origin about 5
+  // million characters, and the work itself needs room too).
+  const HISTORY_MAX = 10;
+  const HISTORY_MAX_CHARS = 1500000;
+  const MAX_STEPS = 100000000;  // what the app's run_to takes (count_arg in src/app/app.cpp)
+  const MARKER_FRAMES = 3;      // a restore is done once the app drew this many frames after it
+  const BEAT_MS = 1000;
+  // A marker or a lease not refreshed for this long belongs to a tab that froze, crashed or
+  // closed (hidden tabs still run timers about once a second).
+  const MARKER_STALE_MS = 6000;
+  const LEASE_STALE_MS = 10000;
+  const REASONS = { link: 'before a link', reset: 'before reset', crash: 'could not be restored', tab: 'another tab',
+                    restore: 'before restoring other work', previous: 'previous work' };
+  const FULL_TEXT = 'changes are not being saved: storage for this site is full. File > Export scene keeps a copy.';
 
   function el(tag, props = {}, children = []) {
     const node = document.createElement(tag);
@@ -41,32 +66,184 @@
     return String(text).replace(/&/g, '&amp;').replace(/"/g, '&quot;').replace(/</g, '&lt;').replace(/>/g, '&gt;');
   }
 
-  /** localStorage, or null where the page may not use it (sandboxed iframes, privacy modes). */
-  function openStorage() {
-    try {
-      const s = global.localStorage;
-      const probe = STORAGE_PREFIX + 'probe';
-      s.setItem(probe, '1');
-      s.removeItem(probe);
-      return s;
-    } catch {
-      return null;
+
+  const randomId = () => Array.from(global.crypto.getRandomValues(new Uint8Array(6)), (b) => b.toString(16).padStart(2, '0')).join('');
+  const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
+  const live = (beat, staleMs, now = Date.now()) => typeof beat === 'number' && now - beat <= staleMs && beat <= now + 60000;
+  const describe = (e) => U.excerpt(String(e && e.message ? e.message : e), 120).slice(1, -1);
+
+  /**
+   * An exception out of the app that is the wasm failing (a trap, a stack overflow, a response
+   * that is no longer JSON), not a command's refusal (a plain Error with the app's message).
+   */
+  function isTrap(e) {
+    return !!e && typeof e === 'object' && ((global.WebAssembly && e instanceof WebAssembly.RuntimeError) ||
+      e.name === 'RuntimeError' || e instanceof RangeError || e instanceof SyntaxError);
+  }
+
+  function timeText(t) {
+    const d = new Date(t);
+    const time = d.toLocaleTimeString([], { hour: '2-digit', minute: '2-digit', second: '2-digit' });
+    return d.toDateString() === new Date().toDateString() ? time : d.toLocaleDateString([], { day: 'numeric', month: 'short' }) + ' ' + time;
+  }
+
+  function validWork(r) {
+    return !!r && r.format === WORK_FORMAT && r.version === 1 && typeof r.current === 'string' &&
+      !!r.lessons && typeof r.lessons === 'object' && !Array.isArray(r.lessons);
+  }
+
+  /** What makes two work records the same work (not when they were saved). */
+  const workText = (r) => JSON.stringify({ config: r.config, current: r.current, lessons: r.lessons });
+
+  // ---- storage: one lab's keys, without the wasm (a lab that stopped still offers its work) --
+
+  class WorkStore {
+    constructor(scope, id) {
+      this.prefix = STORAGE_PREFIX + scope + ':' + id + ':';
+      this.dropped = { full: 0, bound: 0 };
+      try {
+        // Reading is its own question: a full origin still reads.
+        global.localStorage.getItem(this.prefix + 'work');
+        this.storage = global.localStorage;
+      } catch {
+        this.storage = null;
+      }
+    }
+
+    get readable() { return this.storage !== null; }
+
+    get(slot) {
+      try {
+        return this.storage ? this.storage.getItem(this.prefix + slot) : null;
+      } catch {
+        return null;
+      }
+    }
+
+    /** The value parsed; null when absent or not JSON. */
+    json(slot) {
+      try {
+        return JSON.parse(this.get(slot));
+      } catch {
+        return null;
+      }
+    }
+
+    remove(slot) {
+      try {
+        if (this.storage) this.storage.removeItem(this.prefix + slot);
+      } catch {
+        // the key stays
+      }
+    }
+
+    /** The slots of this lab that start with `head`. */
+    slots(head) {
+      const out = [];
+      try {
+        for (let i = 0; this.storage && i < this.storage.length; ++i) {
+          const k = this.storage.key(i);
+          if (k && k.startsWith(this.prefix + head)) out.push(k.slice(this.prefix.length));
+        }
+      } catch {
+        // a storage that went away: none
+      }
+      return out;
+    }
+
+    /**
+     * Writes a slot. When the origin is full, drops the oldest history entries (not those in
+     * `keep`) until it fits, unless trim is false. {ok, full}.
+     */
+    set(slot, text, keep = [], trim = true) {
+      for (;;) {
+        try {
+          if (!this.storage) return { ok: false, full: false };
+          this.storage.setItem(this.prefix + slot, text);
+          return { ok: true, full: false };
+        } catch (e) {
+          if (!(e && (e.name === 'QuotaExceededError' || e.name === 'NS_ERROR_DOM_QUOTA_REACHED'))) return { ok: false, full: false };
+          const victim = trim && this.entries().reverse().find((x) => !keep.includes(x.id) && 'history:' + x.id !== slot);
+          if (!victim) return { ok: false, full: true };
+          this.remove('history:' + victim.id);
+          this.dropped.full += 1;
+        }
+      }
+    }
+
+    /** Whether saves have room (1 KB more fits, after trimming history if needed). */
+    roomy() {
+      const r = this.set('probe', 'x'.repeat(1024));
+      this.remove('probe');
+      return r.ok;
+    }
+
+    /** History entries, newest first: {id, savedAt, reason, lesson, failed, work | link, size}. */
+    entries() {
+      const out = [];
+      for (const slot of this.slots('history:')) {
+        const text = this.get(slot);
+        let e = null;
+        try {
+          e = JSON.parse(text);
+        } catch {
+          continue;
+        }
+        if (!e || e.format !== ENTRY_FORMAT || typeof e.savedAt !== 'number' ||
+            !(e.work ? validWork(e.work) : e.link && typeof e.link.query === 'string')) continue;
+        out.push(Object.assign(e, { id: slot.slice(8), size: text.length }));
+      }
+      return out.sort((a, b) => b.savedAt - a.savedAt || (a.id < b.id ? 1 : -1));
+    }
+
+    entry(id) {
+      return this.entries().find((e) => e.id === id) || null;
+    }
+
+    /** Writes entry `id` (new or in place), then keeps the history within its bounds. {ok, full}. */
+    putEntry(id, entry, keep = []) {
+      const value = Object.assign({ format: ENTRY_FORMAT, version: 1, savedAt: Date.now(), lesson: '', failed: false }, entry);
+      const r = this.set('history:' + id, JSON.stringify(value), keep.concat(id));
+      if (!r.ok) return r;
+      let list = this.entries();
+      let chars = list.reduce((n, e) => n + e.size, 0);
+      while (list.length > HISTORY_MAX || (chars > HISTORY_MAX_CHARS && list.length > 1)) {
+        const victim = list.slice().reverse().find((e) => !keep.includes(e.id) && e.id !== id);
+        if (!victim) break;
+        this.remove('history:' + victim.id);
+        list = list.filter((e) => e !== victim);
+        chars -= victim.size;
+        this.dropped.bound += 1;
+      }
+      return r;
+    }
+
+    markers() {
+      return this.slots('restoring:').map((slot) => this.json(slot)).filter((m) => m && m.format === MARKER_FORMAT && typeof m.tab === 'string');
+    }
+
+    lease() {
+      const l = this.json('lease');
+      return l && typeof l.tab === 'string' && typeof l.beat === 'number' ? l : null;
     }
   }
 
   class LabShell {
     /**
-     * root: the [data-lab] element; canvas: its canvas; api: its CSpaceLabApi.
-     * options: {config: query string, ui: 'full'|'minimal', storageId, scope, home: URL of the
-     * full lab (share links), base: URL of the folder with the lab's files, single: bool
-     * (the single-file build), guardWheel: bool (the wheel scrolls the page until focused)}
+     * root: the [data-lab] element; canvas: its canvas; api: its CSpaceLabApi, or null until
+     * attach() (the shell is made before the wasm, so that a failure at start still offers the
+     * saved work). options: {config: query string, ui: 'full'|'minimal', storageId, scope, home:
+     * URL of the full lab (share links), base: URL of the folder with the lab's files, single:
+     * bool (the single-file build), guardWheel: bool (the wheel scrolls the page until focused)}
      */
     constructor(root, canvas, api, options) {
       this.root = root;
       this.canvas = canvas;
-      this.api = api;
       this.options = options;
-      this.storage = openStorage();
+      this.store = new WorkStore(options.scope, options.storageId);
+      this.tab = randomId();                // this page load: its lease, marker and own entry
+      this.tabEntryId = 'tab-' + this.tab;  // where it saves while another tab holds the lease
+      this.role = 'owner';                  // 'owner' writes the work slot, 'second' its own entry
       this.lastSaved = null;
       this.dirtySince = 0;
       this.changedAt = 0;
@@ -74,61 +251,251 @@
       this.dialog = null;
       this.timing = { ready: performance.now(), firstFrame: null };
       this.problems = [];
+      this.frames = 0;          // frames drawn (postMainLoop)
+      this.inFrame = false;     // between preMainLoop and postMainLoop: a throw there is a trap
+      this.marker = null;       // this tab's restore in progress
+      this.dead = false;        // the wasm failed: storage and the DOM are left
+      this.cleanText = null;    // the untouched defaults of a clean start (not worth keeping)
+      this.notes = [];          // for the next notice: saves that failed, history dropped
+      this.historyIds = [];
+      this.api = null;
+      if (api) this.attach(api);
+    }
+
+    /** Takes the API; its methods are wrapped so that the wasm failing in any call stops the lab cleanly. */
+    attach(api) {
+      this.api = api;
+      this.timing.ready = performance.now();  // the module is ready (web_budgets reports it)
+      const proto = Object.getPrototypeOf(api);
+      for (const name of Object.getOwnPropertyNames(proto)) {
+        const d = Object.getOwnPropertyDescriptor(proto, name);
+        if (name === 'constructor' || typeof d.value !== 'function') continue;
+        const shell = this;
+        api[name] = function guarded(...args) {
+          if (shell.dead) throw new Error('C-Space Lab has stopped: ' + shell.deathText);
+          try {
+            return proto[name].apply(this, args);
+          } catch (e) {
+            if (isTrap(e)) shell.trap(e);
+            throw e;
+          }
+        };
+      }
+      const raw = api.module._csl_call;  // the wasm's one entry point, whoever calls it
+      api.module._csl_call = (ptr) => {
+        try {
+          return raw(ptr);
+        } catch (e) {
+          this.trap(e);
+          throw e;
+        }
+      };
     }
 
     // ---- start ------------------------------------------------------------------------------
 
     async init() {
       const api = this.api;
-      this.lessons = api.lessons();
-      this.bundled = api.bundledScenes();
-      this.installFrameHook();
-      this.installInput();
-      api.pageState({ attached: true, minimal: this.options.ui === 'minimal' });
-      api.module.cslPageAction = (name) => setTimeout(() => this.action(name), 0);
-
-      const parsed = U.parseConfig(this.options.config);
-      const notices = parsed.problems.slice();
-      const configKey = U.hasState(parsed.values) ? U.stateKey(parsed.values) : null;
-      const saved = this.readSlot('work', notices);
-      if (saved) notices.push(...this.restoreWork(saved).map((p) => 'saved work: ' + p));
-
-      let opened = false;
-      if (configKey && !(saved && saved.config === configKey)) {
-        // A link (or a page's data-lab) not seen before: its state, over what was saved. If that
-        // replaces work of the same lesson, the work goes to the "previous work" slot first.
-        const before = this.captureWork();
-        notices.push(...(await this.applyConfig(parsed.values)));
-        const after = this.captureWork();
-        const lesson = after.current;
-        if (saved && before.lessons[lesson] && !sameJson(before.lessons[lesson], after.lessons[lesson])) {
-          this.writeSlot('previous', Object.assign(before, { savedAt: Date.now() }));
-          opened = true;
+      let notes = [];
+      try {
+        this.lessons = api.lessons();
+        this.bundled = api.bundledScenes();
+        this.installFrameHook();
+        this.installInput();
+        api.pageState({ attached: true, minimal: this.options.ui === 'minimal' });
+        api.module.cslPageAction = (name) => setTimeout(() => this.action(name), 0);
+        notes = await this.start();
+      } catch (e) {
+        if (this.dead) return;  // the crash panel says it
+        console.error('C-Space Lab: the page shell failed', e);
+        notes.push(`Something failed while the lab started (${describe(e)}); what could be applied is shown.`);
+        if (this.marker && this.markerFrame === null) this.restoreDone(false);
+      } finally {
+        if (!this.dead) {  // whatever happened above, work from here on is saved
+          this.started = true;
+          this.startAutosave();
+          this.startHeartbeat();
         }
       }
-      this.config = configKey;
-      this.updatePreviousLabel();
-      this.saveNow();
-
-      if (notices.length) {
-        api.notify('Not used from the link: ' + notices.join('; ') + '. The lesson\'s defaults stand in for these.', 15);
-      } else if (opened) {
-        api.notify('Opened the link. Your previous work is kept: "Restore my previous work" brings it back.', 10);
-      }
-      if (!this.storage) api.notify('Autosave is off: this page may not use the browser\'s storage.', 8);
-      this.problems = notices;
-      this.startAutosave();
+      if (this.dead) return;
+      this.refreshHistory();
+      if (notes.length) api.notify(notes.join(' '), 15);
     }
 
     lessonName(id) {
-      const l = this.lessons.find((x) => x.id === id);
+      const l = (this.lessons || []).find((x) => x.id === id);
       return l ? l.name : id;
+    }
+
+    /** The start proper; returns the sentences of the notice. */
+    async start() {
+      const store = this.store;
+      const parsed = U.parseConfig(this.options.config);
+      const problems = parsed.problems.slice();  // the link's and the saved work's bad parts
+      const notes = [];
+      const configKey = U.hasState(parsed.values) ? U.stateKey(parsed.values) : null;
+      if (store.readable) {
+        this.migratePrevious();
+        this.claimLease();
+      }
+      // Restores other starts left unfinished (they crashed or froze the lab): open clean.
+      const leftovers = store.readable ? await this.leftoverMarkers() : [];
+      const retry = leftovers.find((m) => m.choice === 'retry');
+      const failed = leftovers.filter((m) => m !== retry);
+      let offer = null;
+      for (const m of failed) {
+        const o = this.preserve(m);
+        if (o && (!offer || o.slot)) offer = o;
+        if (o && o.slot) this.protectWork = true;  // no room to keep it aside: nothing is saved over it
+      }
+      if (retry) store.remove('restoring:' + retry.tab);
+
+      let opened = '';
+      let restored = false;
+      if (failed.length) {
+        // Clean: the lessons' defaults; the link counts as seen, so a reload does not meet it again.
+        this.config = configKey;
+        this.cleanText = workText(this.captureWork());
+      } else {
+        const saved = this.store.json('work');
+        if (store.get('work') !== null && !validWork(saved)) problems.push('the saved work in this browser could not be read');
+        if (validWork(saved)) {
+          this.beginRestore('your saved work', { kind: 'work' });
+          problems.push(...this.restoreWork(saved).map((p) => 'saved work: ' + p));
+          restored = true;
+        }
+        if (configKey && !(restored && saved.config === configKey)) {
+          // A link not seen before, over the saved work: work of its lesson goes to the history.
+          const before = this.captureWork();
+          this.beginRestore('the link', { kind: 'link', query: this.options.config, config: configKey });
+          problems.push(...(await this.applyConfig(parsed.values)));
+          const lesson = this.api.status().lesson;
+          if (restored && before.lessons[lesson] && !sameJson(before.lessons[lesson], this.api.snapshot(lesson)))
+            opened = this.pushHistory(before, 'link').ok ? 'kept' : 'lost';
+        }
+        this.config = configKey;
+      }
+      if (this.role === 'second') this.lastSaved = workText(this.captureWork());  // its entry: changes only
+      this.restoreDone(this.saveNow());
+      if (retry && retry.source.kind === 'history') await this.restoreEntry(retry.source.id, true);
+
+      const full = store.readable && !store.roomy();
+      this.saveFailed = full;
+      if (problems.length) notes.push('Not used from the link: ' + problems.join('; ') + '. The lesson\'s defaults stand in for these.');
+      if (opened === 'kept') notes.push('Opened the link. Your previous work is kept: "Restore my previous work" brings it back.');
+      if (opened === 'lost') notes.push('Opened the link. Your previous work stays the saved work until this one is saved: there is no room to keep both.');
+      if (!store.readable) notes.push('Autosave is off: this page may not use the browser\'s storage.');
+      else if (full) notes.push((restored ? 'Your saved work was restored; ' : 'Nothing is lost, but ') + FULL_TEXT);
+      notes.push(this.droppedText());
+      this.notes.length = 0;
+      if (this.role === 'second') notes.push(this.secondTabText());
+      if (failed.length) notes.push('Opened with the lessons\' defaults: your work could not be restored (see the dialog).');
+      this.problems = problems;
+      if (offer) setTimeout(() => this.showRecovery(offer), 0);
+      return notes.filter(Boolean);
+    }
+
+    /** What the history lost since the last notice ('' if nothing). */
+    droppedText() {
+      const { full, bound } = this.store.dropped;
+      this.store.dropped = { full: 0, bound: 0 };
+      const n = (k) => `The oldest previous work (${k} ${k === 1 ? 'entry' : 'entries'}) was dropped`;
+      return [full ? n(full) + ' to make room: storage for this site is full.' : '',
+              bound ? n(bound) + `: the history keeps the newest ${HISTORY_MAX}.` : ''].filter(Boolean).join(' ');
+    }
+
+    secondTabText() {
+      return 'This lab is also open in another tab. So that neither tab overwrites the other, this tab saves its work ' +
+             'separately: File > "another tab" brings it back.';
+    }
+
+    /** The single "previous work" slot of earlier versions moves into the history. */
+    migratePrevious() {
+      const old = this.store.json('previous');
+      if (this.store.get('previous') === null || (validWork(old) && !this.pushHistory(old, 'previous', old.savedAt).ok)) return;
+      this.store.remove('previous');
+    }
+
+    /**
+     * Markers of starts whose tab is gone (it trapped, froze or closed mid-restore), and retry
+     * requests. A marker of a tab that may still be restoring is waited for until it goes, its
+     * tab proves alive (its beat moves on) or it goes stale: a start that raced a healthy one
+     * must not open clean.
+     */
+    async leftoverMarkers() {
+      for (const begun = Date.now(); ;) {
+        const now = Date.now();
+        const markers = this.store.markers();
+        const gone = markers.filter((m) => m.trapped || m.choice || !live(m.beat, MARKER_STALE_MS, now));
+        const young = markers.filter((m) => !gone.includes(m) && m.beat - m.startedAt < 2 * BEAT_MS);
+        if (!young.length || now - begun > MARKER_STALE_MS + 2 * BEAT_MS) {
+          const lease = this.store.lease();
+          if (lease && gone.some((m) => m.tab === lease.tab)) this.takeLease();  // its lease went with it
+          return gone;
+        }
+        await sleep(250);
+      }
+    }
+
+    /**
+     * Keeps what a failed restore was about in the history (storage only), so that the clean
+     * start's autosave cannot overwrite it, and clears its marker once it is safe. Returns what
+     * the dialog offers: {id} of an entry, {slot} when there was no room (the work slot keeps
+     * it), or null.
+     */
+    preserve(m) {
+      const s = m.source || {};
+      const work = this.store.json('work');
+      const info = { marker: m, what: String(m.what || 'your work'), error: String(m.error || '') };
+      let id = null;
+      const e = s.kind === 'history' ? this.store.entry(s.id) : null;
+      if (e) {
+        this.store.putEntry(e.id, Object.assign(e, { failed: true }));
+        id = e.id;
+        if (validWork(work)) this.pushHistory(work, 'restore', undefined, false, [e.id]);
+      } else if (s.kind === 'link' && typeof s.query === 'string') {
+        if (validWork(work)) this.pushHistory(work, 'link');
+        const linkId = this.newEntryId();
+        const link = { query: s.query, config: s.config || null };
+        if (this.store.putEntry(linkId, { reason: 'crash', failed: true, lesson: U.parseConfig(s.query).values.get('lesson') || '', link }).ok) id = linkId;
+      } else if (validWork(work)) {
+        id = this.pushHistory(work, 'crash', undefined, true).id;
+      }
+      if (!id && validWork(work)) return Object.assign(info, { slot: true });  // the marker stays
+      this.store.remove('restoring:' + m.tab);
+      return id ? Object.assign(info, { id }) : null;
+    }
+
+    newEntryId() {
+      return Date.now().toString(36) + '-' + randomId().slice(0, 6);
+    }
+
+    /** Keeps a work record in the history; the same work kept before moves up. {ok, full, id}. */
+    pushHistory(record, reason, savedAt = Date.now(), failed = false, keep = []) {
+      const text = workText(record);
+      const same = this.store.entries().filter((e) => e.work && !e.id.startsWith('tab-') && !keep.includes(e.id) && workText(e.work) === text);
+      const id = this.newEntryId();
+      const work = { format: WORK_FORMAT, version: 1, config: record.config === undefined ? null : record.config,
+                     current: record.current, lessons: record.lessons, savedAt: record.savedAt || savedAt };
+      const r = this.store.putEntry(id, { reason, savedAt, failed, lesson: record.current, work }, keep);
+      if (r.ok) for (const e of same) this.store.remove('history:' + e.id);
+      return Object.assign(r, { id: r.ok ? id : null });
     }
 
     /** Applies a link's values over a fresh lesson, part by part; returns the problems. */
     async applyConfig(values) {
       const api = this.api;
       const problems = [];
+      // Each part on its own: a bad one is named in the notice and the rest still applies. A trap
+      // is not a bad part: it stops here (the crash panel takes over).
+      const part = (what, fn) => {
+        try {
+          fn();
+        } catch (e) {
+          if (this.dead) throw e;
+          problems.push(what(e));
+        }
+      };
       let lesson = this.lessons[0].id;  // the app's first lesson, as on a fresh start
       if (values.has('lesson')) {
         const raw = values.get('lesson');
@@ -150,29 +517,24 @@
           }
         }
       }
-      try {
-        api.restore(scene ? { lesson, scene } : { lesson });
-      } catch (e) {
-        problems.push('scene: ' + e.message);
-        api.restore({ lesson });
-      }
-      const template = api.snapshot().params || {};
+      let opened = false;
+      if (scene) part((e) => 'scene: ' + e.message, () => { api.restore({ lesson, scene }); opened = true; });
+      if (!opened) part((e) => `lesson: ${e.message}`, () => api.restore({ lesson }));
+      let template = {};
+      part((e) => `parameters: ${e.message}`, () => { template = api.snapshot().params || {}; });
       for (const [key, raw] of values) {
         if (U.RESERVED.has(key)) continue;
         if (!Object.prototype.hasOwnProperty.call(template, key)) {
           problems.push(`${key} (not a parameter of ${this.lessonName(lesson)})`);
           continue;
         }
-        try {
-          api.setParams({ [key]: U.parseValue(raw, template[key]) });
-        } catch (e) {
-          problems.push(`${key} ${U.excerpt(raw)} (${e.message})`);
-        }
+        part((e) => `${key} ${U.excerpt(raw)} (${e.message})`, () => api.setParams({ [key]: U.parseValue(raw, template[key]) }));
       }
       if (values.has('steps')) {
         const raw = values.get('steps');
-        if (U.STEPS.test(raw)) api.runTo(Number(raw));
-        else problems.push(`steps ${U.excerpt(raw)} (not a whole number of steps)`);
+        if (!U.STEPS.test(raw)) problems.push(`steps ${U.excerpt(raw)} (not a whole number of steps)`);
+        else if (Number(raw) > MAX_STEPS) problems.push(`steps ${U.excerpt(raw)} (more than the lab's ${MAX_STEPS} steps)`);
+        else part((e) => `steps ${U.excerpt(raw)} (${e.message})`, () => api.runTo(Number(raw)));
       }
       if (values.has('ui') && !['full', 'minimal'].includes(values.get('ui')))
         problems.push(`ui ${U.excerpt(values.get('ui'))} (full or minimal)`);
@@ -181,44 +543,145 @@
       return problems;
     }
 
-    // ---- storage ----------------------------------------------------------------------------
 
-    key(slot) {
-      return STORAGE_PREFIX + this.options.scope + ':' + this.options.storageId + ':' + slot;
+    // ---- restore markers: a restore that crashes or freezes the lab must not do it again ----
+
+    /** "Restore in progress", before it: what, and where that work is kept. */
+    beginRestore(what, source) {
+      const now = Date.now();
+      this.marker = { format: MARKER_FORMAT, version: 1, tab: this.tab, what, source, startedAt: now, beat: now };
+      this.markerFrame = null;
+      this.writeMarker();
     }
 
-    readSlot(slot, problems = []) {
-      if (!this.storage) return null;
-      let text;
-      try {
-        text = this.storage.getItem(this.key(slot));
-      } catch {
-        return null;
-      }
-      if (text === null) return null;
-      try {
-        const record = JSON.parse(text);
-        if (record && record.format === WORK_FORMAT && record.version === 1 && typeof record.current === 'string' &&
-            record.lessons && typeof record.lessons === 'object' && !Array.isArray(record.lessons))
-          return record;
-      } catch {
-        // fall through
-      }
-      problems.push(`the ${slot === 'work' ? 'saved work' : 'previous work'} in this browser could not be read`);
-      return null;
+    writeMarker() {
+      if (this.marker) this.store.set('restoring:' + this.tab, JSON.stringify(this.marker));
     }
 
-    writeSlot(slot, record) {
-      if (!this.storage) return false;
-      try {
-        this.storage.setItem(this.key(slot), JSON.stringify(record));
-        return true;
-      } catch {
-        if (!this.warnedQuota) this.api.notify('Autosave failed: the browser\'s storage for this site is full.', 8);
-        this.warnedQuota = true;
-        return false;
-      }
+    /** Its synchronous part is over (and saved, if savedOk: the work is then where this tab saves). */
+    restoreDone(savedOk) {
+      if (!this.marker || this.dead) return;
+      if (savedOk) this.marker.source = this.ownSource();
+      this.markerFrame = this.frames;
+      this.hiddenAtDone = document.visibilityState === 'hidden';
+      this.marker.beat = Date.now();
+      this.writeMarker();
     }
+
+    ownSource() {
+      return this.role === 'owner' ? { kind: 'work' } : { kind: 'history', id: this.tabEntryId };
+    }
+
+    /** After each frame: the marker goes once MARKER_FRAMES were drawn and the app is not busy. */
+    frameDone() {
+      const n = this.frames - this.markerFrame;
+      if (!this.marker || this.markerFrame === null || this.dead || n < MARKER_FRAMES || (n > MARKER_FRAMES && n % 5)) return;
+      try {
+        if (this.api.status().busy) return;  // a background run is not done (absent: not busy)
+      } catch {
+        return;
+      }
+      this.endRestore();
+    }
+
+    endRestore() {
+      this.store.remove('restoring:' + this.tab);
+      this.marker = null;
+      this.markerFrame = null;
+    }
+
+    /** The wasm failed (a trap, an abort): stop, keep what is saved, offer it in the lab's place. */
+    trap(error) {
+      if (this.dead) return;
+      this.dead = true;
+      this.deathText = describe(error).replace(/^(RuntimeError|Error): /, '');
+      console.error('C-Space Lab stopped:', error);
+      clearInterval(this.autosaveTimer);
+      clearInterval(this.heartbeatTimer);
+      if (this.store.readable) {
+        // The next start opens clean and offers the work: a crash while working may have been
+        // saved already and would come back with the restore.
+        if (!this.marker) this.beginRestore('your work', this.ownSource());
+        Object.assign(this.marker, { trapped: true, error: this.deathText });
+        this.writeMarker();
+        this.releaseLease();
+      }
+      if (this.api) this.api.module.cslPageAction = () => {};
+      this.showCrashPanel();
+    }
+
+    // ---- tabs: one writes the work slot, the others their own history entry ----------------
+
+    claimLease() {
+      const lease = this.store.lease();
+      if (lease && lease.tab !== this.tab && live(lease.beat, LEASE_STALE_MS)) this.role = 'second';
+      else this.takeLease();
+    }
+
+    takeLease() {
+      this.role = 'owner';
+      this.store.set('lease', JSON.stringify({ tab: this.tab, beat: Date.now() }), [], false);
+    }
+
+    releaseLease() {
+      const lease = this.store.lease();
+      if (lease && lease.tab === this.tab) this.store.remove('lease');
+    }
+
+    /** Another tab writes the work slot: this one keeps its work in its own entry. */
+    becomeSecond() {
+      if (this.role === 'second' || this.dead) return;
+      this.role = 'second';
+      this.lastSaved = null;
+      if (this.marker) this.marker.source = this.ownSource();
+      this.saveNow();
+      this.refreshHistory();
+      this.say(this.secondTabText(), 12);
+    }
+
+    /** The lease holder is gone: this tab takes the work slot; what that tab left there goes to the history. */
+    becomeOwner() {
+      if (this.role === 'owner' || this.dead) return;
+      this.takeLease();
+      const left = this.store.json('work');
+      if (validWork(left) && workText(left) !== workText(this.captureWork())) this.pushHistory(left, 'tab');
+      this.lastSaved = null;
+      if (this.saveNow()) this.store.remove('history:' + this.tabEntryId);
+      if (this.marker) this.marker.source = this.ownSource();
+      this.refreshHistory();
+    }
+
+    startHeartbeat() {
+      if (!this.store.readable) return;
+      this.heartbeatTimer = setInterval(() => {
+        const lease = this.store.lease();
+        const other = lease && lease.tab !== this.tab && live(lease.beat, LEASE_STALE_MS);
+        if (this.role === 'owner' && other) this.becomeSecond();
+        else if (this.role === 'owner') this.takeLease();
+        else if (!other) this.becomeOwner();
+        if (this.marker) {
+          this.marker.beat = Date.now();
+          this.writeMarker();
+        }
+      }, BEAT_MS);
+      global.addEventListener('storage', (e) => {
+        if (this.dead || e.storageArea !== this.store.storage || !e.key || !e.key.startsWith(this.store.prefix)) return;
+        const slot = e.key.slice(this.store.prefix.length);
+        const lease = this.store.lease();
+        // A tab took the lease (or two tabs both thought they held it: the lease decides), or gave it up.
+        if ((slot === 'lease' || slot === 'work') && lease && lease.tab !== this.tab) this.becomeSecond();
+        else if (slot === 'lease' && !lease) this.becomeOwner();
+        if (slot.startsWith('history:')) {
+          clearTimeout(this.historyTimer);
+          this.historyTimer = setTimeout(() => this.refreshHistory(), 200);
+        }
+      });
+      global.addEventListener('pageshow', (e) => {
+        if (e.persisted && !this.dead) this.claimLease();  // back from the back-forward cache
+      });
+    }
+
+    // ---- work: capture, restore, save -------------------------------------------------------
 
     /** {format, version, config, current, lessons: {id: snapshot}} of every open lesson. */
     captureWork() {
@@ -238,11 +701,13 @@
         try {
           this.api.restore(Object.assign({}, snapshot, { lesson: id }));
         } catch (e) {
+          if (this.dead) throw e;
           problems.push(`${this.lessonName(id)}: ${e.message}`);
           // Parameters a newer version names differently must not cost the scene: keep what fits.
           try {
             if (snapshot.scene) this.api.restore({ lesson: id, scene: snapshot.scene });
-          } catch {
+          } catch (e2) {
+            if (this.dead) throw e2;
             // the scene itself is bad: the lesson stays as it was
           }
         }
@@ -251,25 +716,56 @@
       return problems;
     }
 
-    workText(record) {
-      return JSON.stringify({ config: record.config, current: record.current, lessons: record.lessons });
+
+    /** Saves what is on screen to the work slot (or this tab's own entry). True when saved (or it was already). */
+    saveNow() {
+      if (this.dead || !this.api || !this.store.readable) return false;
+      let work;
+      try {
+        work = this.captureWork();
+      } catch {
+        return false;  // the app stopped (trap() shows it)
+      }
+      const text = workText(work);
+      if (text === this.lastSaved) return true;
+      const lease = this.role === 'owner' && this.store.lease();
+      if (lease && lease.tab !== this.tab && live(lease.beat, LEASE_STALE_MS)) {
+        this.becomeSecond();  // saves to its entry
+        return this.lastSaved === text;
+      }
+      const record = Object.assign(work, { savedAt: Date.now() });
+      const r = this.protectWork ? { ok: false, full: true }
+        : this.role === 'owner' ? this.store.set('work', JSON.stringify(record))
+        : this.store.putEntry(this.tabEntryId, { reason: 'tab', lesson: record.current, savedAt: record.savedAt, work: record });
+      this.dirtySince = 0;
+      // What to tell waits for the next notice (say()): an action's own notice would replace it.
+      if (this.started) this.notes.push(this.droppedText());  // '' when nothing was dropped
+      if (r.ok) {
+        this.lastSaved = text;
+        if (this.saveFailed && this.started) this.notes.push('Saving works again.');
+        this.saveFailed = false;
+        if (this.role === 'second') this.refreshHistory();
+        return true;
+      }
+      if (!this.saveFailed && !this.protectWork) this.notes.push(r.full ? 'Your work is not saved: ' + FULL_TEXT : 'Your work could not be saved in this browser.');
+      this.saveFailed = true;
+      return false;
     }
 
-    saveNow() {
-      const work = this.captureWork();
-      const text = this.workText(work);
-      if (text === this.lastSaved) return;
-      if (this.writeSlot('work', Object.assign(work, { savedAt: Date.now() }))) this.lastSaved = text;
-      this.dirtySince = 0;
+    /** The app's notice: `text`, and what saving had to tell since the last one. */
+    say(text, seconds = 8) {
+      const all = [text, ...this.notes.splice(0)].filter(Boolean).join(' ');
+      if (all && !this.dead) this.api.notify(all, seconds);
     }
 
     startAutosave() {
       const poll = () => {
+        if (this.dead) return;
         let text;
         try {
-          text = this.workText(this.captureWork());
+          text = workText(this.captureWork());
         } catch {
-          return;  // the app stopped (an abort is shown by the loader)
+          return;  // the app stopped (trap() shows it)
         }
         const now = Date.now();
         if (text === this.lastSaved) {
@@ -281,27 +777,86 @@
           this.changedAt = now;
         }
         if (!this.dirtySince) this.dirtySince = now;
-        if (now - this.changedAt >= AUTOSAVE_QUIET_MS || now - this.dirtySince >= AUTOSAVE_MAX_WAIT_MS) this.saveNow();
+        if (now - this.changedAt >= AUTOSAVE_QUIET_MS || now - this.dirtySince >= AUTOSAVE_MAX_WAIT_MS) {
+          this.saveNow();
+          this.say('', 10);
+        }
       };
       this.autosaveTimer = setInterval(poll, AUTOSAVE_POLL_MS);
       // Leaving or hiding the page saves at once: a reload right after an edit keeps it.
-      global.addEventListener('pagehide', () => this.saveNow());
+      global.addEventListener('pagehide', () => {
+        this.saveNow();
+        if (this.dead) return;
+        // A tab opened in the background and closed unseen drew no frames: its restore did not fail.
+        if (this.marker && this.hiddenAtDone && this.frames === this.markerFrame) this.endRestore();
+        this.releaseLease();
+      });
       document.addEventListener('visibilitychange', () => {
         if (document.visibilityState === 'hidden') this.saveNow();
       });
     }
 
-    updatePreviousLabel() {
-      const previous = this.readSlot('previous');
-      const label = previous ? 'your work of ' + new Date(previous.savedAt || 0).toLocaleString() : '';
-      this.api.pageState({ previous: label });
-      return previous;
+    // ---- the history of previous work --------------------------------------------------------
+
+    entryLabel(e) {
+      const why = (REASONS[e.reason] || 'previous work') + (e.failed && e.reason !== 'crash' ? ', could not be restored' : '');
+      const what = e.link ? 'a link' + (e.lesson ? ' to ' + this.lessonName(e.lesson) : '') : this.lessonName(e.lesson || e.work.current);
+      return `${timeText(e.savedAt)} · ${why} · ${what}`.slice(0, 200);
+    }
+
+    /** Tells the app what the history holds (the File menu's list, the top bar's button). */
+    refreshHistory() {
+      if (this.dead || !this.api) return [];
+      const list = this.store.entries().filter((e) => e.id !== this.tabEntryId).slice(0, 20);
+      this.historyIds = list.map((e) => e.id);
+      this.api.pageState({ previous: list.length ? 'your work of ' + new Date(list[0].savedAt).toLocaleString() : '',
+                           history: list.map((e) => ({ label: this.entryLabel(e) })) });
+      return list;
+    }
+
+    /** Restores a history entry; what is on screen goes into the history first (nothing is lost). */
+    async restoreEntry(id, quiet = false) {
+      const entry = id ? this.store.entry(id) : null;
+      if (!entry) {
+        this.api.notify('That previous work is not there any more (another tab may have restored it).', 6);
+        this.refreshHistory();
+        return false;
+      }
+      const current = this.captureWork();
+      if (workText(current) !== this.cleanText && !this.pushHistory(current, 'restore', undefined, false, [id]).ok) {
+        this.api.notify('Not restored: what is on screen could not be kept first (storage for this site is full). File > Export scene keeps a copy.', 10);
+        return false;
+      }
+      const label = this.entryLabel(entry);
+      this.beginRestore('your work of ' + label, { kind: 'history', id });
+      const problems = entry.work ? this.restoreWork(entry.work) : await this.applyConfig(U.parseConfig(entry.link.query).values);
+      this.cleanText = null;
+      const saved = this.saveNow();
+      if (saved) this.store.remove('history:' + id);  // it is the work now
+      this.restoreDone(saved);
+      this.refreshHistory();
+      if (!quiet || problems.length)
+        this.say(problems.length ? `Restored ${label}, except: ${problems.join('; ')}` : `Restored ${label}. What you had is in File > previous work.`, 8);
+      return true;
+    }
+
+    /** An entry as a file to keep: its work (and, on top, the current lesson's scene, which File > Import takes) or its link. */
+    exportEntry(e) {
+      const stamp = new Date(e.savedAt).toISOString().slice(0, 19).replace(/[:T]/g, '-');
+      const w = e.work;
+      const file = e.link ? { format: 'cspacelab-link', version: 1, savedAt: e.savedAt, url: this.options.home + '?' + e.link.query.replace(/^\?/, '') }
+        : Object.assign({ format: WORK_FORMAT, version: 1, savedAt: w.savedAt || e.savedAt, current: w.current, lessons: w.lessons },
+                        w.lessons[w.current] && w.lessons[w.current].scene ? { scene: w.lessons[w.current].scene } : {});
+      this.downloadJson(`cspacelab-${e.link ? 'link' : 'work'}-${stamp}.json`, file);
     }
 
     // ---- actions (the app's buttons) --------------------------------------------------------
 
     async action(name) {
+      if (this.dead) return undefined;
       try {
+        const history = /^restore-history:(\d{1,2})$/.exec(name);
+        if (history) return await this.restoreEntry(this.historyIds[Number(history[1])]);
         switch (name) {
           case 'share': return await this.share();
           case 'embed': return await this.embed();
@@ -310,12 +865,12 @@
           case 'export-png': return await this.exportPng();
           case 'export-state': return this.exportState();
           case 'reset': return this.resetLesson();
-          case 'restore-previous': return this.restorePrevious();
+          case 'restore-previous': return await this.restorePrevious();
           case 'open-full': return await this.openFull();
           default: return undefined;
         }
       } catch (e) {
-        this.api.notify(`${name}: ${e && e.message ? e.message : e}`, 8);
+        if (!this.dead) this.api.notify(`${name}: ${e && e.message ? e.message : e}`, 8);
         return undefined;
       }
     }
@@ -394,13 +949,18 @@
           value.format.startsWith('cspacelab-') && value.scene && typeof value.scene === 'object')
         value = value.scene;  // an exported roadmap/state file: its scene
       if (!value || typeof value !== 'object' || Array.isArray(value)) return fail('is not a scene (a JSON object)');
+      // A scene the app cannot draw must not come back at every start: protected like a restore.
+      this.beginRestore('an imported scene', { kind: 'work' });
       try {
         this.api.setScene(value);
       } catch (e) {
+        if (this.dead) throw e;
+        this.endRestore();
         return fail(`is not a scene this lesson can use: ${e.message}`);
       }
-      this.api.notify(`Imported ${name}.`, 4);
-      this.saveNow();
+      this.cleanText = null;
+      this.restoreDone(this.saveNow());
+      this.say(`Imported ${name}.`, 4);
       return true;
     }
 
@@ -448,13 +1008,29 @@
       return blob;
     }
 
+
     installFrameHook() {
-      // Emscripten calls Module.postMainLoop after each frame, in the same task: the WebGL
-      // drawing buffer still holds the frame there (no preserveDrawingBuffer needed).
-      this.api.module.postMainLoop = () => {
-        if (this.timing.firstFrame === null) this.timing.firstFrame = performance.now();
-        if (this.pendingCaptures.length) this.captureNow(this.pendingCaptures.splice(0));
-      };
+      this.api.module.preMainLoop = () => this.framePre();
+      this.api.module.postMainLoop = () => this.framePost();
+    }
+
+    /** Module.preMainLoop: a stopped lab draws no more (false skips the frame). */
+    framePre() {
+      if (this.dead) return false;
+      this.inFrame = true;
+      return undefined;
+    }
+
+    /**
+     * Module.postMainLoop, after each frame and in its task: the WebGL drawing buffer still
+     * holds the frame (a PNG needs no preserveDrawingBuffer).
+     */
+    framePost() {
+      this.inFrame = false;
+      this.frames += 1;
+      if (this.timing.firstFrame === null) this.timing.firstFrame = performance.now();
+      if (this.pendingCaptures.length) this.captureNow(this.pendingCaptures.splice(0));
+      this.frameDone();
     }
 
     captureNow(waiting) {
@@ -481,31 +1057,29 @@
       }
     }
 
+
+    /** The lesson back to its default (the app asked first); what it replaced goes to the history. */
     resetLesson() {
       const lesson = this.api.status().lesson;
-      const work = this.captureWork();
-      this.writeSlot('previous', Object.assign(work, { savedAt: Date.now() }));
+      const before = this.captureWork();
       this.api.restore({ lesson });
-      this.updatePreviousLabel();
+      if (sameJson(before.lessons[lesson], this.api.snapshot(lesson))) return this.api.notify(`${this.lessonName(lesson)} is at its default already.`, 5);
+      if (this.store.readable && !this.pushHistory(before, 'reset').ok) {
+        this.restoreWork(before);  // without room to keep it, the work stays
+        return this.api.notify('Not reset: your work could not be kept first (storage for this site is full). File > Export scene keeps a copy.', 10);
+      }
+      this.cleanText = null;
+      this.refreshHistory();
       this.saveNow();
-      this.api.notify(`${this.lessonName(lesson)} is back to its default. "Restore my previous work" undoes this.`, 8);
+      return this.say(`${this.lessonName(lesson)} is back to its default. "Restore my previous work" undoes this. ${this.droppedText()}`, 8);
     }
 
-    /** Swaps the work and the previous work: nothing is lost, and doing it twice undoes it. */
-    restorePrevious() {
-      const previous = this.readSlot('previous');
-      if (!previous) {
-        this.api.notify('There is no previous work to restore.', 5);
-        this.api.pageState({ previous: '' });
-        return;
-      }
-      const now = this.captureWork();
-      const problems = this.restoreWork(previous);
-      this.writeSlot('previous', Object.assign(now, { savedAt: Date.now() }));
-      this.updatePreviousLabel();
-      this.saveNow();
-      this.api.notify(problems.length ? 'Restored your previous work, except: ' + problems.join('; ')
-                                      : 'Restored your previous work. What you had is now the previous work.', 8);
+    /** The newest previous work (the top bar's button): pressed twice, it undoes itself. */
+    async restorePrevious() {
+      const list = this.refreshHistory();
+      if (list.length) return this.restoreEntry(list[0].id);
+      this.api.notify('There is no previous work to restore.', 5);
+      return false;
     }
 
     async openFull() {
@@ -535,11 +1109,16 @@
       return ok;
     }
 
-    // ---- dialog (DOM, over the canvas: real text fields that copy like any other) ---------
 
-    showDialog(title, paragraphs, fields) {
+    // ---- dialogs (DOM, over the canvas: real text fields and buttons) -----------------------
+
+    /**
+     * A dialog over the lab: a title, paragraphs, read-only fields with Copy, and buttons
+     * ({name, label, primary, run}). closeLabel null: no Close; crash: over a lab that stopped.
+     */
+    showDialog(title, paragraphs, fields, buttons = [], { closeLabel = 'Close', crash = false } = {}) {
       this.closeDialog();
-      const titleId = 'lab-dialog-title-' + Math.random().toString(36).slice(2, 8);
+      const titleId = 'lab-dialog-title-' + randomId();
       const box = el('div', { class: 'lab-dialog-box' });
       box.appendChild(el('h2', { id: titleId, text: title }));
       for (const p of paragraphs) box.appendChild(el('p', { text: p }));
@@ -553,21 +1132,36 @@
         box.appendChild(el('label', { class: 'lab-dialog-field' }, [el('span', { text: f.label }), area]));
         box.appendChild(el('div', { class: 'lab-dialog-row' }, [copy]));
       }
-      const close = el('button', { type: 'button', class: 'lab-dialog-close', text: 'Close' });
-      close.addEventListener('click', () => this.closeDialog());
-      box.appendChild(el('div', { class: 'lab-dialog-row' }, [close]));
-      const dialog = el('div', { class: 'lab-dialog', role: 'dialog' }, [box]);
+      if (closeLabel) buttons = buttons.concat({ name: 'close', label: closeLabel, close: true, run: () => this.closeDialog() });
+      const row = el('div', { class: 'lab-dialog-row lab-dialog-actions' });
+      for (const b of buttons) {
+        const button = el('button', { type: 'button', text: b.label, class: b.primary ? 'lab-dialog-primary' : b.close ? 'lab-dialog-close' : '' });
+        button.dataset.action = b.name;
+        button.addEventListener('click', () => b.run(button));
+        row.appendChild(button);
+      }
+      box.appendChild(row);
+      const dialog = el('div', { class: 'lab-dialog' + (crash ? ' lab-crash' : ''), role: 'dialog' }, [box]);
       dialog.setAttribute('aria-modal', 'true');
       dialog.setAttribute('aria-labelledby', titleId);
       dialog.addEventListener('keydown', (e) => {
-        if (e.key === 'Escape') this.closeDialog();
+        if (e.key === 'Escape' && closeLabel) this.closeDialog();
+        if (e.key !== 'Tab') return;
+        // Modal: Tab cycles within the dialog.
+        const items = Array.from(dialog.querySelectorAll('button, textarea'));
+        const i = items.indexOf(document.activeElement);
+        const to = e.shiftKey ? (i <= 0 ? items.length - 1 : -1) : (i === items.length - 1 ? 0 : -1);
+        if (to >= 0) {
+          items[to].focus();
+          e.preventDefault();
+        }
       });
       dialog.addEventListener('mousedown', (e) => {
-        if (e.target === dialog) this.closeDialog();
+        if (e.target === dialog && closeLabel) this.closeDialog();
       });
       this.root.appendChild(dialog);
       this.dialog = dialog;
-      const first = dialog.querySelector('textarea') || close;
+      const first = dialog.querySelector('textarea') || row.firstChild;
       first.focus({ preventScroll: true });
       return dialog;
     }
@@ -576,7 +1170,97 @@
       if (!this.dialog) return;
       this.dialog.remove();
       this.dialog = null;
-      this.canvas.focus({ preventScroll: true });
+      if (!this.dead) this.canvas.focus({ preventScroll: true });
+    }
+
+    /** The three choices for work that could not be restored: {retry, discard} run the first and the last. */
+    choices(entry, retry, discard) {
+      return [{ name: 'retry', label: 'Try to restore it again', primary: true, run: retry },
+              { name: 'export', label: 'Export it (JSON file)', run: (b) => { this.exportEntry(entry); b.textContent = 'Exported'; } },
+              { name: 'discard', label: 'Discard it', run: discard }];
+    }
+
+    /** A reload whose start restores the marker's work (and opens clean again if it fails again). */
+    retryByReload(m) {
+      m.choice = 'retry';
+      this.store.set('restoring:' + m.tab, JSON.stringify(m));
+      global.location.reload();
+    }
+
+    /** After a clean start: the work that could not be restored (in the history already) and what to do with it. */
+    showRecovery(offer) {
+      const m = offer.marker;
+      const entry = offer.id ? this.store.entry(offer.id) : this.subjectOf(m);
+      if (this.dead || !entry) return;
+      const cause = m.trapped ? `the lab stopped (${offer.error})` : 'the page stopped responding';
+      this.showDialog('Your work could not be restored', [
+        `Last time ${cause} ${offer.what === 'your work' ? 'while you worked' : 'while restoring ' + offer.what}. So that ` +
+        'this cannot happen again at every start, the lab opened with the lessons\' defaults.',
+        offer.id ? `That work is kept: File > "${this.entryLabel(entry)}".`
+                 : 'That work is still the saved work: there is no room to keep it aside, so nothing here is saved until you decide.',
+      ], [], this.choices(entry, () => {
+        this.closeDialog();
+        return offer.id ? this.action('restore-history:' + this.historyIds.indexOf(offer.id)) : this.retryByReload(m);
+      }, () => {
+        if (offer.id) this.store.remove('history:' + offer.id);
+        else this.discard(m);
+        this.protectWork = false;
+        this.closeDialog();
+        this.refreshHistory();
+        this.saveNow();
+        this.api.notify('Discarded the work that could not be restored.', 5);
+      }), { closeLabel: 'Decide later' });
+    }
+
+    /** The wasm failed: a message in the lab's place, with the same choices (export and discard need only storage). */
+    showCrashPanel() {
+      const m = this.marker;
+      const subject = m && this.subjectOf(m);
+      const status = this.root.querySelector('.lab-status');
+      if (status) status.hidden = true;
+      const text = [`The lab's engine failed: ${this.deathText}.`];
+      let buttons;
+      if (subject) {
+        text.push(m.what === 'your work' ? `Your work saved in this browser at ${timeText(subject.savedAt)} is kept.`
+                                         : `It stopped while restoring ${m.what}, which is kept in this browser.`,
+                  '"Try to restore it again" reloads the page; if it fails again, the lab opens with the defaults and offers it once more.');
+        buttons = this.choices(subject, () => this.retryByReload(m), () => {
+          this.discard(m);
+          global.location.reload();
+        });
+      } else {
+        text.push(this.store.readable ? 'Nothing of yours was saved in this browser before it stopped.' : 'This page may not use the browser\'s storage, so nothing was saved.');
+        buttons = [{ name: 'reload', label: 'Reload the lab', primary: true, run: () => global.location.reload() }];
+      }
+      this.showDialog('C-Space Lab stopped', text, [], buttons, { closeLabel: null, crash: true });
+    }
+
+    /** What a marker's restore was about, as an entry to export, or null. */
+    subjectOf(m) {
+      const s = m.source || {};
+      const e = s.kind === 'history' && this.store.entry(s.id);
+      if (e) return e;
+      if (s.kind === 'link') return { savedAt: m.startedAt, link: { query: s.query } };
+      const work = this.store.json('work');
+      return validWork(work) ? { savedAt: work.savedAt || Date.now(), work } : null;
+    }
+
+    /**
+     * Drops what a failed restore was about. The work slot is emptied, not removed: it remembers
+     * the link it came from, so the same address does not bring the failing state back (for a
+     * failed link, the work it would have replaced stays, with the link marked as seen).
+     */
+    discard(m) {
+      const s = m.source || {};
+      if (s.kind === 'history') {
+        this.store.remove('history:' + s.id);
+      } else {
+        const work = this.store.json('work');
+        const kept = s.kind === 'link' && validWork(work) ? work : { format: WORK_FORMAT, version: 1, current: '', lessons: {} };
+        kept.config = s.kind === 'link' ? s.config || null : validWork(work) ? work.config : null;
+        this.store.set('work', JSON.stringify(kept));
+      }
+      this.store.remove('restoring:' + m.tab);
     }
 
     // ---- input: focus, wheel, drag and drop -------------------------------------------------
@@ -616,7 +1300,7 @@
         e.preventDefault();
         const files = e.dataTransfer.files;
         if (files.length > 1) this.api.notify('Drop one scene file at a time; the first one is read.', 5);
-        if (files.length) this.importFile(files[0]);
+        if (files.length) this.importFile(files[0]).catch(() => {});  // a trap: the crash panel says it
       });
     }
 
@@ -632,5 +1316,6 @@
     }
   }
 
+  LabShell.isTrap = isTrap;
   global.CSpaceLabShell = LabShell;
 })(typeof window !== 'undefined' ? window : globalThis);

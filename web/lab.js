@@ -22,6 +22,17 @@
   const PARTS = [['createCSpaceLab', 'cspacelab.js'], ['CSpaceLabApi', 'lab-api.js'],
                  ['CSpaceLabUrl', 'lab-url.js'], ['CSpaceLabShell', 'lab-shell.js']];
   const registry = window.CSpaceLab = window.CSpaceLab || { instances: [] };
+  const shells = [];  // every lab's page shell, started or not (traps are routed to them)
+
+  // A trap in a frame reaches the page as an uncaught error (Emscripten's main loop rethrows it):
+  // it belongs to the lab whose frame was running. One outside any frame (an input handler) is
+  // the only lab's when there is just one.
+  window.addEventListener('error', (event) => {
+    const live = shells.filter((s) => !s.dead);
+    const inFrame = live.filter((s) => s.inFrame);
+    if (inFrame.length) for (const s of inFrame) s.trap(event.error || new Error(event.message));
+    else if (live.length === 1 && window.CSpaceLabShell && window.CSpaceLabShell.isTrap(event.error)) live[0].trap(event.error);
+  });
 
   function load(file) {
     return new Promise((resolve, reject) => {
@@ -167,6 +178,10 @@
                 'Try Chrome or Edge 91+, Firefox 89+ or Safari 16.4+.');
       return null;
     }
+    // The shell exists before the wasm: if the app fails at any point from here, it shows that
+    // in the lab's place and offers the work saved in this browser (it needs only storage).
+    const shell = new window.CSpaceLabShell(root, canvas, null, options);
+    shells.push(shell);
     let module;
     try {
       module = await window.createCSpaceLab({
@@ -176,7 +191,11 @@
           if (/Could not create an OpenGL\/WebGL2 context/.test(text)) showError(noWebGl2);
           else console.warn(text);
         },
-        onAbort: (what) => showError('C-Space Lab stopped: ' + what),
+        onAbort: (what) => shell.trap(new Error(String(what))),
+        // A frame that throws is a trap (Emscripten stops the loop and rethrows it, past onAbort):
+        // the page's error event finds the lab that was inside a frame. A stopped lab draws no more.
+        preMainLoop: () => shell.framePre(),
+        postMainLoop: () => shell.framePost(),
         instantiateWasm(imports, receive) {
           compileWasm()
             .then((m) => WebAssembly.instantiate(m, imports).then((instance) => receive(instance, m)))
@@ -189,12 +208,19 @@
       return null;
     }
     const api = new window.CSpaceLabApi(module);
-    const shell = new window.CSpaceLabShell(root, canvas, api, options);
+    shell.attach(api);
     api.shell = shell;
+    root.cspacelabShell = shell;
     try {
       await shell.init();
     } catch (err) {
-      console.error('C-Space Lab: the page shell failed', err);
+      if (!shell.dead) console.error('C-Space Lab: the page shell failed', err);
+    }
+    if (shell.dead) {
+      // The crash panel is in the lab's place; the page can tell.
+      status.hidden = true;
+      root.dispatchEvent(new CustomEvent('cspacelab-stopped', { detail: shell, bubbles: true }));
+      return null;
     }
     root.cspacelab = api;
     registry.instances.push(api);

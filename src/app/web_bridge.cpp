@@ -38,7 +38,7 @@ std::map<std::string, std::array<float, 4>>& rects() {
   static std::map<std::string, std::array<float, 4>> r;
   return r;
 }
-void record(const char* name) {
+void record(const std::string& name) {
   const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
   rects()[name] = {a.x, a.y, b.x, b.y};
 }
@@ -69,6 +69,19 @@ void file_menu(const std::string& lesson_name) {
   if (ImGui::MenuItem(("Reset " + lesson_name + " to its default...").c_str())) want_reset = true;
   record("reset");
   if (!s.previous.empty() && ImGui::MenuItem("Restore my previous work")) page_action("restore-previous");
+  if (!s.history.empty()) {
+    // Every replaced state the page kept (links, resets, work that could not be restored, other
+    // tabs): any of them comes back, and what is on screen goes into the list first.
+    ImGui::Separator();
+    ImGui::TextDisabled("Previous work, newest first (click to restore):");
+    for (std::size_t i = 0; i < s.history.size(); ++i) {
+      ImGui::PushID(static_cast<int>(i));  // labels may repeat
+      const std::string action = "restore-history:" + std::to_string(i);
+      if (ImGui::MenuItem(s.history[i].c_str())) page_action(action.c_str());
+      record("history-" + std::to_string(i));
+      ImGui::PopID();
+    }
+  }
   ImGui::Separator();
   ImGui::TextDisabled("C-Space Lab v%s", kVersion);
 }
@@ -100,6 +113,24 @@ void reset_confirmation(const std::string& lesson_name) {
   ImGui::EndPopup();
 }
 
+// page_state's history: [{label}], checked whole before anything changes. A label is shown as
+// a menu item's text, where ImGui would read "##" as the start of a hidden id: it is spelt "# #".
+std::vector<std::string> history_labels(const json& value) {
+  const std::string what = "history: at most " + std::to_string(kMaxHistory) + " entries {label: a string of at most " +
+                           std::to_string(kMaxHistoryLabel) + " characters}";
+  if (!value.is_array() || value.size() > kMaxHistory) throw ApiError(what);
+  std::vector<std::string> labels;
+  for (const json& entry : value) {
+    if (!entry.is_object() || entry.size() != 1 || !entry.contains("label") || !entry["label"].is_string())
+      throw ApiError(what);
+    std::string label = entry["label"].get<std::string>();
+    if (label.size() > kMaxHistoryLabel) throw ApiError(what);
+    for (std::size_t at = label.find("##"); at != std::string::npos; at = label.find("##", at + 2)) label.insert(at + 1, " ");
+    labels.push_back(std::move(label));
+  }
+  return labels;
+}
+
 }  // namespace
 
 const PageState& page() { return state(); }
@@ -127,7 +158,7 @@ void register_api(JsApi& api, LabContext& ctx) {
     ctx.notify(t, seconds);
     return json(true);
   });
-  api.add("page_state", "the page around the app: {attached?, minimal?, previous?}; also where its buttons are (CSS px)", [](const json& args) {
+  api.add("page_state", "the page around the app: {attached?, minimal?, previous?, history?: [{label}]}; also where its buttons are (CSS px)", [](const json& args) {
     PageState next = state();
     for (auto it = args.begin(); it != args.end(); ++it) {
       if (it.key() == "attached" || it.key() == "minimal") {
@@ -136,14 +167,19 @@ void register_api(JsApi& api, LabContext& ctx) {
       } else if (it.key() == "previous") {
         if (!it->is_string() || it->get<std::string>().size() > 200) throw ApiError("previous: a string of at most 200 characters");
         next.previous = it->get<std::string>();
+      } else if (it.key() == "history") {
+        next.history = history_labels(*it);
       } else {
-        throw ApiError("unknown field \"" + it.key() + "\" (attached, minimal, previous)");
+        throw ApiError("unknown field \"" + it.key() + "\" (attached, minimal, previous, history)");
       }
     }
     state() = next;
     json buttons = json::object();
     for (const auto& [name, r] : rects()) buttons[name] = r;
-    return json{{"attached", next.attached}, {"minimal", next.minimal}, {"previous", next.previous}, {"buttons", buttons}};
+    json history = json::array();
+    for (const std::string& label : next.history) history.push_back({{"label", label}});
+    return json{{"attached", next.attached}, {"minimal", next.minimal}, {"previous", next.previous},
+                {"history", history}, {"buttons", buttons}};
   });
   api.add("bundled_scenes", "the bundled scenes by name (what ?scene=NAME loads)", [](const json&) {
     json out = json::object();

@@ -1,12 +1,14 @@
 #pragma once
 // The app's side of the page around it (web/lab-shell.js): the Share, Embed and File buttons
-// of the top bar, the "Reset lesson to default" confirmation, "Restore my previous work", and the
-// API commands the page answers through (notify, page_state, bundled_scenes).
+// of the top bar, the "Reset lesson to default" confirmation, "Restore my previous work", the
+// File menu's list of previous work, and the API commands the page answers through (notify,
+// page_state, bundled_scenes).
 //
 // The buttons only ask; the page does the work (links, clipboard, downloads, file pickers,
 // localStorage): a button calls the page's Module.cslPageAction(name) (EM_JS). Until a page
 // shell has said hello through page_state (and always on the desktop) none of them is shown.
 #include <string>
+#include <vector>
 
 #include "app/context.hpp"
 #include "app/js_api.hpp"
@@ -16,8 +18,15 @@ namespace csl::app::web {
 struct PageState {
   bool attached = false;  ///< a page shell has announced itself (page_state {attached: true})
   bool minimal = false;   ///< ui=minimal: an embed, no lesson menu
-  std::string previous;   ///< what the "previous work" slot holds (shown on its button), "" if empty
+  std::string previous;   ///< the newest previous work (shown on its button's tooltip), "" if none
+  /// The page's history of previous work, newest first, one label each ("14:03 · before a link ·
+  /// Step PRM"); the File menu lists them and asks for "restore-history:<i>".
+  std::vector<std::string> history;
 };
+
+/// At most this many history entries, each label at most kMaxHistoryLabel bytes (page_state).
+constexpr std::size_t kMaxHistory = 20;
+constexpr std::size_t kMaxHistoryLabel = 200;
 const PageState& page();
 
 /// Registers notify, page_state and bundled_scenes.
@@ -31,7 +40,7 @@ float top_bar_actions_width();
 void top_bar_actions(LabContext& ctx, const std::string& lesson_name);
 
 /// Asks the page to do `name` (share, embed, import, export-scene, export-png, export-state,
-/// reset, restore-previous, open-full); a no-op without a page.
+/// reset, restore-previous, restore-history:<i>, open-full); a no-op without a page.
 void page_action(const char* name);
 
 }  // namespace csl::app::web
