@@ -43,6 +43,8 @@ class CSpaceLabApi {
   runTo(steps) { return this.call('run_to', { steps }); }
   run() { return this.call('run'); }
   finishPhase() { return this.call('finish_phase'); }
+  /** Stops long work (a run, a replay) where it is; status().busy is null after it. */
+  cancel() { return this.call('cancel'); }
   reset() { return this.call('reset'); }
   getScene() { return this.call('get_scene'); }
   setScene(scene) { return this.call('set_scene', { scene }); }

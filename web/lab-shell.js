@@ -534,7 +534,7 @@
         const raw = values.get('steps');
         if (!U.STEPS.test(raw)) problems.push(`steps ${U.excerpt(raw)} (not a whole number of steps)`);
         else if (Number(raw) > MAX_STEPS) problems.push(`steps ${U.excerpt(raw)} (more than the lab's ${MAX_STEPS} steps)`);
-        else part((e) => `steps ${U.excerpt(raw)} (${e.message})`, () => api.runTo(Number(raw)));
+        else part((e) => `steps ${U.excerpt(raw)} (${e.message})`, () => api.call('run_to', { steps: Number(raw), background: true }));
       }
       if (values.has('ui') && !['full', 'minimal'].includes(values.get('ui')))
         problems.push(`ui ${U.excerpt(values.get('ui'))} (full or minimal)`);
@@ -563,7 +563,6 @@
       if (!this.marker || this.dead) return;
       if (savedOk) this.marker.source = this.ownSource();
       this.markerFrame = this.frames;
-      this.hiddenAtDone = document.visibilityState === 'hidden';
       this.marker.beat = Date.now();
       this.writeMarker();
     }
@@ -699,7 +698,8 @@
         if (!known.has(id)) continue;  // a lesson this version does not have
         if (!snapshot || typeof snapshot !== 'object') continue;
         try {
-          this.api.restore(Object.assign({}, snapshot, { lesson: id }));
+          // background: a long replay goes on over frames (progress and Cancel in the app).
+          this.api.restore(Object.assign({}, snapshot, { lesson: id, background: true }));
         } catch (e) {
           if (this.dead) throw e;
           problems.push(`${this.lessonName(id)}: ${e.message}`);
@@ -787,8 +787,10 @@
       global.addEventListener('pagehide', () => {
         this.saveNow();
         if (this.dead) return;
-        // A tab opened in the background and closed unseen drew no frames: its restore did not fail.
-        if (this.marker && this.hiddenAtDone && this.frames === this.markerFrame) this.endRestore();
+        // A page that leaves alive did not fail its restore, whether it drew its frames or not (a
+        // reload right after the start, a tab closed unseen): the marker only outlives a trap,
+        // which sets dead, or a freeze, where this handler never runs.
+        if (this.marker) this.endRestore();
         this.releaseLease();
       });
       document.addEventListener('visibilitychange', () => {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
+#include <limits>
 #include <optional>
 
 #include "app/fonts.hpp"
@@ -19,6 +20,14 @@ using json = nlohmann::json;
 
 namespace {
 json vec_json(ImVec2 v) { return json::array({v.x, v.y}); }
+
+// Long work goes on over frames (Lesson::work); an API call finishes what it started before it
+// returns, unless asked {background: true} (the page does, for links and restores, so that the
+// first frames come at once and the progress shows).
+constexpr double kFrameWorkMs = 25.0;
+void finish(Lesson& lesson, const json& args) {
+  if (!args.value("background", false)) lesson.work(std::numeric_limits<double>::infinity());
+}
 
 long count_arg(const json& args, const char* key, long fallback, long max) {
   if (!args.contains(key)) return fallback;
@@ -60,7 +69,8 @@ void App::register_api() {
                 {"cpu_ms", {{"mean", f.mean_cpu_ms}, {"p95", f.p95_cpu_ms}, {"max", f.max_cpu_ms}}},
                 {"ui_ms", {{"mean", f.mean_ui_ms}, {"p95", f.p95_ui_ms}, {"max", f.max_ui_ms}}},
                 {"vertices", f.vertices},
-                {"notice", ImGui::GetTime() < ctx_.notice_until ? ctx_.notice : ""}};
+                {"notice", ImGui::GetTime() < ctx_.notice_until ? ctx_.notice : ""},
+                {"busy", busy_json()}};
   });
   api.add("lessons", "the lessons: [{id, name, category, open}] (open: started, has state)", [this](const json&) {
     json out = json::array();
@@ -77,27 +87,37 @@ void App::register_api() {
           [this](const json& args) { return lesson_->state(args); });
   api.add("set_params", "the lesson's parameters: {params: {...}}", [this](const json& args) {
     lesson_->set_params(args.value("params", json::object()));
+    finish(*lesson_, args);
     return lesson_->state(json::object());
   });
   api.add("step", "forward {count} steps (default 1)", [this](const json& args) {
     const long n = count_arg(args, "count", 1, 10000000);
+    lesson_->cancel_work();
     for (long i = 0; i < n && !lesson_->finished(); ++i) lesson_->step_forward();
     return json(lesson_->steps());
   });
-  api.add("step_back", "back {count} steps (default 1)", [this](const json& args) {
-    lesson_->run_to(std::max(0L, lesson_->steps() - count_arg(args, "count", 1, 10000000)));
+  api.add("step_back", "back {count} steps (default 1; {background: true}: over frames)", [this](const json& args) {
+    lesson_->run_to(std::max(0L, lesson_->wanted_steps() - count_arg(args, "count", 1, 10000000)));
+    finish(*lesson_, args);
     return json(lesson_->steps());
   });
-  api.add("run_to", "to step {steps}", [this](const json& args) {
+  api.add("run_to", "to step {steps} ({background: true}: over frames, see status().busy)", [this](const json& args) {
     lesson_->run_to(count_arg(args, "steps", 0, 100000000));
+    finish(*lesson_, args);
     return json(lesson_->steps());
   });
-  api.add("run", "to the end", [this](const json&) {
+  api.add("run", "to the end ({background: true}: over frames)", [this](const json& args) {
     lesson_->run_all();
+    finish(*lesson_, args);
     return json(lesson_->steps());
   });
-  api.add("finish_phase", "to the end of the current phase", [this](const json&) {
+  api.add("finish_phase", "to the end of the current phase", [this](const json& args) {
     lesson_->finish_phase();
+    finish(*lesson_, args);
+    return json(lesson_->steps());
+  });
+  api.add("cancel", "stop the lesson's running work (a run, a replay) where it is", [this](const json&) {
+    lesson_->cancel_work();
     return json(lesson_->steps());
   });
   api.add("reset", "back to step 0", [this](const json&) {
@@ -113,10 +133,19 @@ void App::register_api() {
     const Scene s = scene_from_json(args["scene"]);  // throws before anything changes
     std::string why;
     if (!lesson_->accept_scene(s, why)) throw ApiError(why);
+    finish(*lesson_, args);
     return scene_to_json(*lesson_->scene());
   });
-  api.add("undo", "undo the last scene edit", [this](const json&) { return json(lesson_->undo()); });
-  api.add("redo", "redo the last undone edit", [this](const json&) { return json(lesson_->redo()); });
+  api.add("undo", "undo the last scene edit", [this](const json& args) {
+    const bool done = lesson_->undo();
+    finish(*lesson_, args);
+    return json(done);
+  });
+  api.add("redo", "redo the last undone edit", [this](const json& args) {
+    const bool done = lesson_->redo();
+    finish(*lesson_, args);
+    return json(done);
+  });
   api.add("view", "CSS pixels of world points in a view: {view: 'workspace'|'cspace', points: [[x,y],...]}",
           [this](const json& args) {
             const std::string name = args.value("view", "workspace");
@@ -144,9 +173,9 @@ void App::register_api() {
             return json{{"lesson", id},
                         {"scene", l.scene() ? scene_to_json(*l.scene()) : json(nullptr)},
                         {"params", l.params()},
-                        {"steps", l.steps()}};
+                        {"steps", l.wanted_steps()}};
           });
-  api.add("restore", "restore a snapshot: {lesson, scene?, params?, steps?}; all checked before anything changes",
+  api.add("restore", "restore a snapshot: {lesson, scene?, params?, steps?, background?}; all checked before anything changes",
           [this](const json& args) {
             const std::string id = args.value("lesson", lesson_id_);
             const LessonInfo* info = find_lesson(id);
@@ -160,6 +189,7 @@ void App::register_api() {
             if (scene && !trial->accept_scene(*scene, why)) throw ApiError("scene: " + why);
             if (args.contains("params")) trial->set_params(args["params"]);
             trial->run_to(steps);
+            finish(*trial, args);
             instances_[id] = std::move(trial);
             select_lesson(id);
             return json{{"lesson", lesson_id_}, {"steps", lesson_->steps()}};
@@ -170,6 +200,22 @@ void App::register_api() {
     for (const auto& [step, text] : ctx_.log.lines()) out.push_back({{"step", step}, {"text", text}});
     return out;
   });
+}
+
+json App::busy_json() const {
+  for (const auto& [id, lesson] : instances_)
+    if (lesson && lesson->busy())
+      return json{{"lesson", id}, {"text", lesson->busy_text()}, {"progress", lesson->progress()},
+                  {"steps", lesson->steps()}};
+  return nullptr;
+}
+
+void App::work() {
+  // The lesson on screen first; when it has nothing to do, a lesson restored in the background
+  // (a saved state of several lessons comes back while the student looks at one).
+  if (lesson_->busy()) return lesson_->work(kFrameWorkMs);
+  for (auto& [id, lesson] : instances_)
+    if (lesson && lesson->busy()) return lesson->work(kFrameWorkMs);
 }
 
 void App::top_bar() {
@@ -241,6 +287,19 @@ void App::top_bar() {
 void App::playback_controls() {
   if (!lesson_->steppable()) return;
   Playback& pb = ctx_.playback;
+  if (lesson_->busy()) {
+    // Long work runs over frames: what it is, how far, and a way out.
+    pb.playing = false;
+    ImGui::TextWrapped("%s", lesson_->busy_text().c_str());
+    const float cancel_w = ui::button_width("Cancel");
+    ImGui::ProgressBar(static_cast<float>(lesson_->progress()), ImVec2(-cancel_w - ImGui::GetStyle().ItemSpacing.x, 0));
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) lesson_->cancel_work();
+    web::record_control("cancel");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("stop here (Esc)");
+    ImGui::Spacing();
+    return;
+  }
   ImGui::BeginDisabled(lesson_->steps() == 0);
   if (ImGui::Button("\xE2\x97\x80 Back")) lesson_->step_back();  // ◀
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("step back (,)");
@@ -272,6 +331,7 @@ void App::playback_controls() {
 
 void App::shortcuts() {
   const ImGuiIO& io = ImGui::GetIO();
+  if (lesson_->busy() && !io.WantTextInput && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) lesson_->cancel_work();
   if (io.WantTextInput || !lesson_->steppable() || io.KeyCtrl || io.KeyAlt) return;
   for (ImWchar c : io.InputQueueCharacters) {
     if (c == ' ') ctx_.playback.playing = !ctx_.playback.playing && !lesson_->finished();
@@ -297,6 +357,7 @@ void App::notice() {
 
 void App::frame() {
   shortcuts();
+  work();
   lesson_->update(ctx_);
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(vp->WorkPos);

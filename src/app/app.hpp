@@ -1,6 +1,8 @@
 #pragma once
 // The lab's shell: the lesson menu, the side panel with the shared playback controls, the
 // lesson's views, the event log, notices, and the JS API that drives all of it.
+#include <nlohmann/json.hpp>
+
 #include <map>
 #include <memory>
 #include <string>
@@ -23,6 +25,10 @@ class App {
 
  private:
   void register_api();
+  // Advances long work (Lesson::work) for a slice of this frame.
+  void work();
+  // status().busy: the first lesson with long work going on, or null.
+  nlohmann::json busy_json() const;
   void top_bar();
   void playback_controls();
   void shortcuts();

@@ -5,6 +5,8 @@
 // 90-140 ms in the headless browser here, k = 50: 420 ms), and the drag would crawl; then the
 // lessons keep the planner on the scene from before the drag, drawn faded, and replay once at
 // the release.
+#include <string>
+
 #include "app/workspace_view.hpp"
 #include "core/prm.hpp"
 
@@ -21,8 +23,9 @@ inline bool replay_is_live(const Prm& prm) {
   return static_cast<long>(prm.samples_drawn()) + prm.edge_checks() <= kLiveReplayWork;
 }
 
-/// Fades what is drawn in `view` so far (the stale roadmap) and says why, at its top left.
-/// Call between view.push_clip() and view.pop_clip().
-void draw_replay_pending(const WorkspaceView& view);
+/// Fades what is drawn in `view` so far (the stale roadmap) and says why at its top left: the
+/// drag's reason, or `text` (a replay catching up). Call between view.push_clip() and
+/// view.pop_clip().
+void draw_replay_pending(const WorkspaceView& view, const std::string& text = "");
 
 }  // namespace csl::app

@@ -38,6 +38,25 @@ class RoadmapLayer {
   ImVector<ImDrawIdx> indices_;  // relative to the first vertex
 };
 
+/// The version a RoadmapLayer should draw: `version` itself, but while long work grows the
+/// roadmap (`busy`) at most a new one every quarter second. Rebuilding the layer's geometry
+/// costs a pass over every edge, and a run to the end changes it every frame (20000 samples and
+/// k = 50: 300-700 ms a frame in the headless browser, where the work itself took 25).
+class RedrawThrottle {
+ public:
+  long long operator()(long long version, bool busy) {
+    const double now = ImGui::GetTime();
+    if (busy && drawn_ >= 0 && now - at_ < 0.25) return drawn_;
+    drawn_ = version;
+    at_ = now;
+    return version;
+  }
+
+ private:
+  long long drawn_ = -1;
+  double at_ = 0.0;
+};
+
 /// The path through roadmap vertices, wide and outlined so it stands out of the roadmap.
 void draw_path(const WorkspaceView& view, const Space& space, const Roadmap& roadmap, const std::vector<int>& path);
 

@@ -1,5 +1,8 @@
 #include "app/js_api.hpp"
 
+#include "core/scene.hpp"
+#include "core/text.hpp"
+
 #ifdef __EMSCRIPTEN__
 #include <emscripten.h>
 #define CSL_EXPORT EMSCRIPTEN_KEEPALIVE
@@ -21,9 +24,17 @@ void JsApi::add(const std::string& name, const std::string& help, ApiHandler han
 }
 
 std::string JsApi::call(const std::string& request) const {
-  auto error = [](const std::string& message) { return text(json{{"ok", false}, {"error", message}}); };
-  const json req = json::parse(request, nullptr, /*allow_exceptions=*/false);
-  if (req.is_discarded() || !req.is_object()) return error("request is not a JSON object");
+  // A message is one printable line whatever it quotes (a key, a scene's name, a command).
+  auto error = [](const std::string& message) { return text(json{{"ok", false}, {"error", printable(message, 600)}}); };
+  json req;
+  try {
+    // Strict and at most 64 levels deep: handlers copy their arguments, and copying a value
+    // nested 100000 deep (a request written by hand, not by JSON.stringify) overflows the stack.
+    req = parse_json_text(request);
+  } catch (const std::invalid_argument& e) {
+    return error(std::string("request: ") + e.what());
+  }
+  if (!req.is_object()) return error("request is not a JSON object");
   auto cmd = req.find("cmd");
   if (cmd == req.end() || !cmd->is_string()) return error("request has no \"cmd\" string");
   const std::string name = cmd->get<std::string>();
@@ -33,7 +44,7 @@ std::string JsApi::call(const std::string& request) const {
     return text(json{{"ok", true}, {"result", list}});
   }
   auto it = commands_.find(name);
-  if (it == commands_.end()) return error("unknown command \"" + name + "\" (try \"help\")");
+  if (it == commands_.end()) return error("unknown command \"" + printable(name, 60) + "\" (try \"help\")");
   json args = req.value("args", json::object());
   if (!args.is_object()) return error("\"args\" must be an object");
   try {

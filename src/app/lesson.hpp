@@ -55,6 +55,18 @@ class Lesson {
   virtual void run_all() {}
   virtual void reset() {}
   virtual void run_to(long) {}
+
+  /// Long work (a run to the end, a replay after an edit) goes on over several frames, so that
+  /// no frame waits for it: work() advances it for about `ms` milliseconds, once a frame (an
+  /// infinite `ms`: to its end, as the API does unless asked not to).
+  virtual bool busy() const { return false; }
+  virtual void work(double /*ms*/) {}
+  virtual void cancel_work() {}
+  /// How far the work is, in [0, 1], and what it is ("replaying to step 1200").
+  virtual double progress() const { return 1.0; }
+  virtual std::string busy_text() const { return ""; }
+  /// The step a snapshot holds: where running work heads, else steps().
+  virtual long wanted_steps() const { return steps(); }
 };
 
 struct LessonInfo {

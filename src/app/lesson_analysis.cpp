@@ -24,6 +24,7 @@
 #include "app/theme.hpp"
 #include "app/ui.hpp"
 #include "core/experiment.hpp"
+#include "core/work.hpp"
 
 namespace csl::app {
 namespace {
@@ -200,6 +201,8 @@ class AnalysisLesson : public Lesson {
     }
     if (!(x >= 0 && x < 0.5 && y >= 0 && y <= 1)) throw ApiError("point: x in [0, 1/2), y in [0, 1]");
     if (!(gap >= 0 && gap <= 1)) throw ApiError("gap: a number in [0, 1]");
+    if (run)
+      if (const std::string problem = experiment_problem(counts, trials); !problem.empty()) throw ApiError(problem);
     length_ = length;
     clearance_ = clearance;
     free_volume_ = volume;
@@ -227,7 +230,10 @@ class AnalysisLesson : public Lesson {
 
   /// "run" from the API: finish the experiment now (starting one if none).
   void run_all() override {
-    if (!experiment_) start_experiment();
+    if (!experiment_) {
+      if (const std::string problem = experiment_problem(sample_counts_, trials_); !problem.empty()) throw ApiError(problem);
+      start_experiment();
+    }
     experiment_->run();
   }
 
@@ -237,7 +243,32 @@ class AnalysisLesson : public Lesson {
     return path_tiling_bound(length_, clearance_, dim_, free_volume_, n);
   }
 
-  // Measures the scene: a reference run for a path (L, r), Monte Carlo for mu(F).
+  // Why an experiment of `trials` runs for each n in `counts` is more than the lab does here, or
+  // "": each run is one step between frames, so one run must fit about ten frames' work; all of
+  // them the lab's budget for a long job (the experiment shows its progress and can be
+  // cancelled, so that is minutes at most).
+  std::string experiment_problem(const std::vector<int>& counts, int trials) const {
+    PrmParams run;
+    double total = 0.0, largest = 0.0;
+    for (int n : counts) {
+      run.samples = n;
+      const double work = expected_prm_work(*world_, run).total();
+      largest = std::max(largest, work);
+      total += trials * work;
+    }
+    if (largest > 10 * kLabFrameWork)
+      return "a run of " + std::to_string(*std::max_element(counts.begin(), counts.end())) + " samples means " +
+             work_text(largest) + " in this scene; the lab runs at most " + work_text(10 * kLabFrameWork) +
+             " at once: take smaller n (or use cspacelab experiment)";
+    if (total > 10 * kLabMaxWork)
+      return "the experiment means " + work_text(total) + " in all; the lab takes at most " +
+             work_text(10 * kLabMaxWork) + ": take fewer runs or smaller n (or use cspacelab experiment)";
+    return "";
+  }
+
+  // Measures the scene: a reference run for a path (L, r), Monte Carlo for mu(F). Within a few
+  // frames' work (it runs on every edit): fewer samples in a dense scene, none in one so dense
+  // that even those would hold the page (then L, r and mu(F) are entered by hand).
   void measure() {
     world_ = std::make_unique<CollisionWorld>(scene_);
     experiment_.reset();
@@ -249,9 +280,27 @@ class AnalysisLesson : public Lesson {
     p.seed = 1;
     p.reference_samples = 3000;
     p.volume_samples = 50000;
+    too_dense_ = false;
     if (!world_->is_free(scene_.start) || !world_->is_free(scene_.goal)) {
       path_exists_ = false;
       return;
+    }
+    const auto work = [&](int reference, long volume) {
+      PrmParams run;
+      run.samples = reference;
+      // The reference run, its path's proven clearance (up to 4096 cuts) and the volume.
+      return expected_prm_work(*world_, run).total() + (4096.0 + static_cast<double>(volume)) * world_->evaluation_cost();
+    };
+    const double budget = 5 * kLabFrameWork;
+    if (const double full = work(p.reference_samples, p.volume_samples); full > budget) {
+      const double f = budget / full;
+      p.reference_samples = std::max(300, static_cast<int>(p.reference_samples * f));
+      p.volume_samples = std::max(2000L, static_cast<long>(static_cast<double>(p.volume_samples) * f));
+      if (work(p.reference_samples, p.volume_samples) > budget) {
+        path_exists_ = false;
+        too_dense_ = true;
+        return;
+      }
     }
     Experiment probe(*world_, scene_.start, scene_.goal, p);
     probe.step();  // the reference run only
@@ -283,7 +332,11 @@ class AnalysisLesson : public Lesson {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.0f, 0.3f, 0.55f, 1.0f));
     ImGui::TextWrapped("P(fail) ≤ m exp(−σ r^d n),  σ = μ(B₁) / (2^d μ(F))");
     ImGui::PopStyleColor();
-    if (!path_exists_) ImGui::TextColored(ImVec4(0.7f, 0.25f, 0.0f, 1.0f), "no path found in this scene: enter L, r by hand");
+    if (too_dense_)
+      ImGui::TextColored(ImVec4(0.7f, 0.25f, 0.0f, 1.0f),
+                         "this scene is too dense to measure here: enter L, r and μ(F) by hand (or use cspacelab experiment)");
+    else if (!path_exists_)
+      ImGui::TextColored(ImVec4(0.7f, 0.25f, 0.0f, 1.0f), "no path found in this scene: enter L, r by hand");
     ImGui::PushItemWidth(-110);
     float l = static_cast<float>(length_), r = static_cast<float>(clearance_), v = static_cast<float>(free_volume_);
     if (ImGui::DragFloat("L (length)", &l, 0.01f, 0.001f, 100.0f, "%.4f")) length_ = static_cast<double>(l);
@@ -332,6 +385,8 @@ class AnalysisLesson : public Lesson {
       }
       if (!ok || counts.empty() || counts.size() > 20) {
         ctx.notify("n values: up to 20 integers in [0, 20000], separated by commas");
+      } else if (const std::string problem = experiment_problem(counts, trials_); !problem.empty()) {
+        ctx.notify(problem, 10);
       } else {
         sample_counts_ = counts;
         start_experiment();
@@ -528,6 +583,7 @@ class AnalysisLesson : public Lesson {
   std::unique_ptr<CollisionWorld> world_;
   std::vector<Config> reference_path_;
   bool path_exists_ = false;
+  bool too_dense_ = false;  // measure() would take more than a few frames' work: not measured
   int dim_ = 2;
   double length_ = 1, clearance_ = 0.05, free_volume_ = 1;
   double measured_length_ = 0, measured_clearance_ = 0, measured_volume_ = 0;

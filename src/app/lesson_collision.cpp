@@ -14,6 +14,7 @@
 #include "app/theme.hpp"
 #include "app/ui.hpp"
 #include "core/edge_check_json.hpp"
+#include "core/work.hpp"
 
 namespace csl::app {
 namespace {
@@ -70,7 +71,9 @@ class CollisionLesson : public Lesson {
 
     ui::section("Fixed resolution");
     ImGui::PushItemWidth(-60.0f);
-    if (ImGui::SliderInt("N", &grid_n_, 2, 200, "%d", ImGuiSliderFlags_Logarithmic)) recompute();
+    // At most what one frame may check in this scene (200 unless it is very dense).
+    const int most = std::max(2, std::min(200, static_cast<int>(kLabFrameWork / world_->evaluation_cost())));
+    if (ImGui::SliderInt("N", &grid_n_, 2, most, "%d", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) recompute();
     ImGui::PopItemWidth();
     if (grid_.collision)
       ImGui::TextColored(ImVec4(0.0f, 0.45f, 0.3f, 1.0f), "N = %d finds the collision at t = %.4f", grid_n_, *grid_.collision_t);
@@ -80,6 +83,9 @@ class CollisionLesson : public Lesson {
       ImGui::Text("N = %d: no collision (and there is none)", grid_n_);
     if (min_grid_)
       ImGui::Text("smallest N that sees it: %d", *min_grid_);
+    else if (bisection_.collision && min_grid_exhausted_)
+      ImGui::TextWrapped("the smallest N that sees it is more than the lab searches in this scene (use cspacelab "
+                         "check --min-grid)");
     else if (bisection_.collision)
       ImGui::Text("no N up to %d sees it", kInteractiveMaxGrid);
 
@@ -122,6 +128,10 @@ class CollisionLesson : public Lesson {
       why = "this lesson shows the point robot and the 2-link arm";
       return false;
     }
+    if (const std::string problem = grid_problem(grid_n_, CollisionWorld(s)); !problem.empty()) {
+      why = problem;
+      return false;
+    }
     editor_.replace(scene_, s);
     arm_ = std::holds_alternative<ArmRobot>(s.robot);
     recompute();
@@ -152,6 +162,7 @@ class CollisionLesson : public Lesson {
         if (!it->is_number_integer() || it->get<int>() < 2 || it->get<int>() > 100000)
           throw ApiError("grid_n: an integer in [2, 100000]");
         n = it->get<int>();
+        if (const std::string problem = grid_problem(n, *world_); !problem.empty()) throw ApiError(problem);
       } else if (it.key() == "p" || it.key() == "q") {
         if (!it->is_array() || it->size() != 2 || !(*it)[0].is_number() || !(*it)[1].is_number())
           throw ApiError(it.key() + ": [a, b]");
@@ -197,6 +208,15 @@ class CollisionLesson : public Lesson {
     recompute();
   }
 
+  // Why N configurations are too many to check at once in this scene's world, or "".
+  static std::string grid_problem(int n, const CollisionWorld& world) {
+    const double work = n * world.evaluation_cost();
+    if (work <= kLabFrameWork) return "";
+    return "grid_n: " + std::to_string(n) + " configurations of this scene mean " + work_text(work) +
+           "; the lab checks at most " + work_text(kLabFrameWork) + " at once (N at most " +
+           std::to_string(static_cast<long>(kLabFrameWork / world.evaluation_cost())) + " here)";
+  }
+
   void recompute() {
     world_ = std::make_unique<CollisionWorld>(scene_);
     if (arm_) {
@@ -206,8 +226,16 @@ class CollisionLesson : public Lesson {
     grid_ = check_edge(*world_, EdgeCheckerSpec::parse("grid:" + std::to_string(grid_n_)), scene_.start, scene_.goal, true);
     bisection_ = check_edge(*world_, EdgeCheckerSpec::parse("bisection"), scene_.start, scene_.goal, true);
     // No grid can see a collision the exact check rules out: skip the search then.
-    min_grid_ = bisection_.collision ? min_grid_resolution(*world_, scene_.start, scene_.goal, kInteractiveMaxGrid)
-                                     : std::nullopt;
+    // Within one frame's work (the search tests few configurations, but a dense scene makes each
+    // one dear).
+    min_grid_.reset();
+    min_grid_exhausted_ = false;
+    if (bisection_.collision) {
+      const long long budget = std::max(64LL, static_cast<long long>(kLabFrameWork / world_->evaluation_cost()));
+      const MinGridResult r = min_grid_search(*world_, scene_.start, scene_.goal, kInteractiveMaxGrid, budget);
+      min_grid_ = r.n;
+      min_grid_exhausted_ = r.exhausted;
+    }
     shown_ = std::min(shown_, static_cast<int>(bisection_.trace.size()));
     logged_ = -1;
   }
@@ -376,6 +404,7 @@ class CollisionLesson : public Lesson {
   int grid_n_ = 4;
   EdgeCheckResult grid_, bisection_;
   std::optional<int> min_grid_;
+  bool min_grid_exhausted_ = false;
   int shown_ = 0;
   int logged_ = -1;
 };

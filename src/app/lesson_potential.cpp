@@ -27,13 +27,15 @@
 #include "core/geometry.hpp"
 #include "core/potential.hpp"
 #include "core/scalar_grid.hpp"
+#include "core/work.hpp"
 
 namespace csl::app {
 namespace {
 
 using json = nlohmann::json;
 
-constexpr int kGridNodes = 97;     // heat maps: 96 x 96 cells, recomputed only when they change
+constexpr int kGridNodes = 97;     // heat maps: 96 x 96 cells, recomputed only when they change...
+constexpr int kLeastGridNodes = 17;  // ...fewer in a dense scene (grid_nodes()), at least 16 x 16
 constexpr int kLevels = 8;         // level lines per heat map
 constexpr double kSliceStep = 0.02;  // rad: how far the angle turns before a playing slice is redrawn
 constexpr float kForcePixels = 250.0f;  // arrow pixels per unit of force: the largest pull (0.2) is 50 px
@@ -199,7 +201,7 @@ class PotentialLesson : public Lesson {
              {"tau", finite_config(r.tau)},
              {"field", {{"zeta", field_params_.zeta}, {"switch", field_params_.switch_distance}, {"eta", field_params_.eta}, {"rho0", field_params_.rho0}}},
              {"steps", descent_ ? descent_->steps() : 0},
-             {"heat_map", {{"nodes", kGridNodes}, {"levels", map_u_.level_count}, {"lo", map_u_.scale.lo}, {"hi", map_u_.scale.hi},
+             {"heat_map", {{"nodes", grid_nodes_}, {"levels", map_u_.level_count}, {"lo", map_u_.scale.lo}, {"hi", map_u_.scale.hi},
                            {"slice_theta", robot_kind() == Kind::Polygon ? json(cspace_key_) : json(nullptr)}}}};
     if (descent_) {
       json trajectory = json::array();
@@ -356,6 +358,10 @@ class PotentialLesson : public Lesson {
     field_.reset();
     world_ = std::make_unique<CollisionWorld>(scene_);
     field_ = std::make_unique<PotentialField>(*world_, scene_.goal, field_params_);
+    // Three heat maps of n x n potentials must fit one frame's work (kLabFrameWork): 97 x 97 in
+    // ordinary scenes, coarser in dense ones (1000 polygons of 256 vertices took seconds a map).
+    grid_nodes_ = std::clamp(static_cast<int>(std::sqrt(kLabFrameWork / (3.0 * world_->evaluation_cost()))),
+                             kLeastGridNodes, kGridNodes);
     map_.reset();
     if (robot_kind() == Kind::Arm) map_ = std::make_unique<ArmCSpaceMap>(std::get<ArmRobot>(scene_.robot), scene_.obstacles);
     workspace_grids();
@@ -393,13 +399,13 @@ class PotentialLesson : public Lesson {
   void workspace_grids() {
     const Scene& s = scene_;
     const PotentialParams fp = field_params_;
-    ScalarGrid rho = sample_grid(kGridNodes, kGridNodes, s.workspace_min, s.workspace_max, [&](const Vec2& x) {
+    ScalarGrid rho = sample_grid(grid_nodes_, grid_nodes_, s.workspace_min, s.workspace_max, [&](const Vec2& x) {
       double best = std::numeric_limits<double>::infinity();
       for (const Obstacle& o : s.obstacles) best = std::min(best, obstacle_distance(o, x).rho);
       return best;
     });
     ws_rings_ = level_set(rho, fp.rho0);
-    ws_map_ = make_heat_map(sample_grid(kGridNodes, kGridNodes, s.workspace_min, s.workspace_max, [&](const Vec2& x) {
+    ws_map_ = make_heat_map(sample_grid(grid_nodes_, grid_nodes_, s.workspace_min, s.workspace_max, [&](const Vec2& x) {
                               double u = 0.0;
                               for (const Obstacle& o : s.obstacles) u += repulsive_field(obstacle_distance(o, x), fp.eta, fp.rho0).U;
                               return u;
@@ -419,7 +425,7 @@ class PotentialLesson : public Lesson {
     cspace_key_ = key;
     const Vec2 lo = kind == Kind::Arm ? Vec2(-kPi, -kPi) : scene_.workspace_min;
     const Vec2 hi = kind == Kind::Arm ? Vec2(kPi, kPi) : scene_.workspace_max;
-    map_u_ = make_heat_map(sample_grid(kGridNodes, kGridNodes, lo, hi, [&](const Vec2& p) {
+    map_u_ = make_heat_map(sample_grid(grid_nodes_, grid_nodes_, lo, hi, [&](const Vec2& p) {
                              const Config q = kind == Kind::Polygon ? config({p.x(), p.y(), key}) : config({p.x(), p.y()});
                              return field_->potential(q);
                            }),
@@ -653,6 +659,7 @@ class PotentialLesson : public Lesson {
   Scene scene_;
   SceneEditor editor_;
   WorkspaceView view_, cspace_view_;
+  int grid_nodes_ = kGridNodes;  // heat maps' nodes per side (see rebuild())
   std::unique_ptr<CollisionWorld> world_;
   std::unique_ptr<PotentialField> field_;
   std::unique_ptr<ArmCSpaceMap> map_;

@@ -7,6 +7,7 @@
 #include "app/drag_replay.hpp"
 #include "app/draw.hpp"
 #include "app/js_api.hpp"
+#include "app/planner_session.hpp"
 #include "app/lesson.hpp"
 #include "app/prm_controls.hpp"
 #include "app/prm_text.hpp"
@@ -20,12 +21,12 @@ using json = nlohmann::json;
 
 class StepPrmLesson : public Lesson {
  public:
-  StepPrmLesson() : scene_(bundled_scene("prm-demo")) { rebuild(0); }
+  StepPrmLesson() : scene_(bundled_scene("prm-demo")), session_(scene_, params_) {}
 
   void update(LabContext& ctx) override {
     const int due = ctx.playback.due(static_cast<double>(ImGui::GetIO().DeltaTime));
-    for (int i = 0; i < due && !prm_->done(); ++i) step_forward();
-    if (prm_->done()) ctx.playback.playing = false;
+    for (int i = 0; i < due && !prm().done() && !session_.busy(); ++i) session_.step_forward();
+    if (prm().done()) ctx.playback.playing = false;
     log_new_steps(ctx);
   }
 
@@ -33,12 +34,12 @@ class StepPrmLesson : public Lesson {
     ImGui::TextWrapped("PRM as the course states it: add q_init and q_final; draw n samples and keep the "
                        "free ones; connect close pairs whose straight line is free; search the graph.");
     ImGui::Spacing();
-    if (prm_controls(params_, world_->space())) rebuild(0);
+    if (prm_controls(params_, session_.world(), ctx)) rebuild(0);
     ImGui::Separator();
     stats();
     ImGui::Separator();
     ImGui::TextDisabled("Obstacles (drawn in the view)");
-    if (editor_.toolbar(scene_, ctx)) rebuild(prm_->steps());
+    if (editor_.toolbar(scene_, ctx)) rebuild(session_.wanted_steps());
   }
 
   void views(LabContext& ctx, ImVec2 size) override {
@@ -49,21 +50,23 @@ class StepPrmLesson : public Lesson {
     view_.push_clip();
     for (std::size_t i = 0; i < scene_.obstacles.size(); ++i) view_.draw_obstacle(scene_.obstacles[i]);
     refresh_labels();
-    roadmap_layer_.draw(view_, world_->space(), prm_->roadmap(), labels_, roadmap_version());
-    if (prm_->solved()) draw_path(view_, world_->space(), prm_->roadmap(), prm_->path());
-    if (replay_pending()) {
+    const Space& space = session_.world().space();
+    roadmap_layer_.draw(view_, space, prm().roadmap(), labels_, throttle_(session_.version(), session_.busy()));
+    if (prm().solved()) draw_path(view_, space, prm().roadmap(), prm().path());
+    if (replay_pending() || session_.replaying()) {
       // The old roadmap faded under the obstacles where they are now.
-      draw_replay_pending(view_);
+      draw_replay_pending(view_, session_.replaying() ? replaying_text(session_) : std::string());
       for (std::size_t i = 0; i < scene_.obstacles.size(); ++i) view_.draw_obstacle(scene_.obstacles[i]);
     } else {
       draw_current_step();
     }
-    view_.draw_marker(Vec2(scene_.start[0], scene_.start[1]), theme::kStart, "S", !world_->is_free(scene_.start));
-    view_.draw_marker(Vec2(scene_.goal[0], scene_.goal[1]), theme::kGoal, "G", !world_->is_free(scene_.goal));
+    view_.draw_marker(Vec2(scene_.start[0], scene_.start[1]), theme::kStart, "S", !session_.world().is_free(scene_.start));
+    view_.draw_marker(Vec2(scene_.goal[0], scene_.goal[1]), theme::kGoal, "G", !session_.world().is_free(scene_.goal));
     view_.pop_clip();
-    if (editor_.edit(view_, scene_, ctx, {})) scene_edited();
-    if (replay_pending() && !editor_.dragging()) rebuild(prm_->steps());  // released
-    if (!world_->is_free(scene_.start) || !world_->is_free(scene_.goal))
+    // An edit replaces the session's world: nothing may hold on to the old one past here.
+    if (editor_.edit(view_, scene_, ctx, {})) session_.edited(scene_, editor_.dragging());
+    if (replay_pending() && !editor_.dragging()) session_.edited(scene_, false);  // released
+    if (!session_.world().is_free(scene_.start) || !session_.world().is_free(scene_.goal))
       view_.draw_label(scene_.workspace_min, "start or goal inside an obstacle: no path can exist",
                        theme::kWarning, ImVec2(4, 8));
     // Above the view's top left corner, clear of the y axis's label.
@@ -82,32 +85,34 @@ class StepPrmLesson : public Lesson {
     rebuild(0);
     return true;
   }
-  bool undo() override { return editor_.undo(scene_) && (rebuild(prm_->steps()), true); }
-  bool redo() override { return editor_.redo(scene_) && (rebuild(prm_->steps()), true); }
+  bool undo() override { return editor_.undo(scene_) && (rebuild(session_.wanted_steps()), true); }
+  bool redo() override { return editor_.redo(scene_) && (rebuild(session_.wanted_steps()), true); }
 
   json state(const json& args) const override {
-    const Roadmap& r = prm_->roadmap();
+    const Prm& planner = prm();
+    const Roadmap& r = planner.roadmap();
     json path = json::array();
-    for (int v : prm_->path()) path.push_back(config_to_json(r.vertices[static_cast<std::size_t>(v)]));
+    for (int v : planner.path()) path.push_back(config_to_json(r.vertices[static_cast<std::size_t>(v)]));
     char hash[32];
     std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(roadmap_hash(r)));
     json out{{"params", prm_params_json(params_)},
-             {"phase", phase_name(prm_->phase())},
-             {"steps", prm_->steps()},
-             {"done", prm_->done()},
+             {"phase", phase_name(planner.phase())},
+             {"steps", planner.steps()},
+             {"done", planner.done()},
              {"nodes", r.vertices.size()},
-             {"edges", prm_->edges_alive()},
-             {"components", const_cast<Prm&>(*prm_).components()},
-             {"edge_checks", prm_->edge_checks()},
-             {"evaluations", prm_->evaluations()},
-             {"samples_drawn", prm_->samples_drawn()},
-             {"solved", prm_->solved()},
+             {"edges", planner.edges_alive()},
+             {"components", const_cast<Prm&>(planner).components()},
+             {"edge_checks", planner.edge_checks()},
+             {"evaluations", planner.evaluations()},
+             {"samples_drawn", planner.samples_drawn()},
+             {"solved", planner.solved()},
              {"replay_pending", replay_pending()},
-             {"planner_builds", rebuilds_},
+             {"planner_builds", session_.builds()},
+             {"running", running_json(session_)},
              {"path", path},
-             {"path_length", prm_->solved() ? json(prm_->path_length()) : json(nullptr)},
+             {"path_length", planner.solved() ? json(planner.path_length()) : json(nullptr)},
              {"roadmap_hash", hash},
-             {"last_event", prm_->steps() > 0 ? json(event_kind_name(prm_->last_event().kind)) : json(nullptr)}};
+             {"last_event", planner.steps() > 0 ? json(event_kind_name(planner.last_event().kind)) : json(nullptr)}};
     if (args.value("roadmap", false)) {
       json vertices = json::array(), edges = json::array();
       for (const Config& q : r.vertices) vertices.push_back(config_to_json(q));
@@ -120,85 +125,69 @@ class StepPrmLesson : public Lesson {
   }
 
   void set_params(const json& j) override {
-    params_ = prm_params_from_json(j, params_, world_->space());
+    params_ = prm_params_from_json(j, params_, session_.world());
     rebuild(0);
   }
 
   json params() const override { return prm_params_json(params_); }
 
   bool steppable() const override { return true; }
-  long steps() const override { return prm_->steps(); }
-  bool finished() const override { return prm_->done(); }
-  void step_forward() override {
-    if (!prm_->done()) prm_->step();
-  }
+  long steps() const override { return prm().steps(); }
+  bool finished() const override { return prm().done(); }
+  void step_forward() override { session_.step_forward(); }
   void step_back() override {
-    if (prm_->steps() > 0) prm_->run_to(prm_->steps() - 1);
+    if (prm().steps() > 0) session_.step_back();
   }
-  void finish_phase() override { prm_->finish_phase(); }
-  void run_all() override { prm_->run(); }
-  void reset() override { prm_->reset(); }
-  void run_to(long steps) override { prm_->run_to(steps); }
+  void finish_phase() override { session_.finish_phase(); }
+  void run_all() override { session_.run_to_end(); }
+  void reset() override { session_.reset(); }
+  void run_to(long steps) override { session_.go_to(steps); }
+  bool busy() const override { return session_.busy(); }
+  void work(double ms) override { session_.work(ms); }
+  void cancel_work() override { session_.cancel(); }
+  double progress() const override { return session_.progress(); }
+  std::string busy_text() const override { return session_.job_text(); }
+  long wanted_steps() const override { return session_.wanted_steps(); }
 
  private:
-  // A fresh world and planner for the current scene and parameters, replayed to `steps` (an
-  // edit keeps the student at the same step, with the same seed).
+  const Prm& prm() const { return session_.prm(); }
+  // A new planner for the current scene and parameters, replayed to `steps` (an edit keeps the
+  // student at the same step, with the same seed).
   void rebuild(long steps) {
-    if (!planned_world_) planned_world_ = std::move(world_);  // prm_ points into it: kept until replaced
-    world_ = std::make_unique<CollisionWorld>(scene_);
-    keep_within_budget(params_, world_->space());  // a smaller workspace makes the same r cover more pairs
-    prm_ = std::make_unique<Prm>(*world_, scene_.start, scene_.goal, params_);
-    planned_world_.reset();
-    planned_scene_ = scene_;
-    prm_->run_to(steps);
+    keep_within_budget(params_, CollisionWorld(scene_));  // a smaller workspace makes the same r cover more pairs
+    session_.rebuild(scene_, params_, steps);
     labels_at_ = -1;
     logged_through_ = -1;
     check_at_ = -1;
-    ++rebuilds_;
   }
-
-  // The scene changed (the editor): replay, unless a drag goes on and the replay is too long for
-  // a frame (see drag_replay.hpp). Then the planner keeps the world and scene it ran in, and
-  // world_ follows the drag for what is drawn from it (the markers' warnings).
-  // A drag back to where it was pressed gives back the scene the planner ran in, exactly (see
-  // SceneEditor::continue_drag): its world again, and nothing to replay.
-  void scene_edited() {
-    if (same_scene(scene_, planned_scene_)) {
-      if (planned_world_) world_ = std::move(planned_world_);
-      return;
-    }
-    if (!editor_.dragging() || replay_is_live(*prm_)) return rebuild(prm_->steps());
-    if (!planned_world_) planned_world_ = std::move(world_);
-    world_ = std::make_unique<CollisionWorld>(scene_);
-  }
-  bool replay_pending() const { return planned_world_ != nullptr; }
-
-  // Changes whenever the roadmap may have: a step, a replay or a rebuild.
-  long long roadmap_version() const { return static_cast<long long>(prm_->steps()) + (rebuilds_ << 32); }
+  bool replay_pending() const { return session_.replay_pending(); }
 
   void refresh_labels() {
-    if (labels_at_ == prm_->steps()) return;
-    labels_ = prm_->component_labels();
-    labels_at_ = prm_->steps();
+    if (labels_at_ == session_.version()) return;
+    labels_ = session_.prm().component_labels();
+    labels_at_ = session_.version();
   }
 
   // The event log follows the planner: after a replay it says where we are, then each new step.
   void log_new_steps(LabContext& ctx) {
-    if (logged_through_ == prm_->steps()) return;
-    if (logged_through_ < 0 || prm_->steps() < logged_through_ || prm_->steps() > logged_through_ + 1) {
+    const Prm& p = prm();
+    if (logged_version_ == session_.version()) return;
+    const bool same_planner = (logged_version_ >> 32) == (session_.version() >> 32);
+    if (!same_planner || logged_through_ < 0 || p.steps() < logged_through_ || p.steps() > logged_through_ + 1) {
       ctx.log.clear();
-      ctx.log.add(0, prm_->steps() == 0 ? std::string("ready: press Step or Play")
-                                        : "at step " + std::to_string(prm_->steps()) + " (" +
-                                              phase_name(prm_->phase()) + ")");
+      ctx.log.add(0, p.steps() == 0 ? std::string("ready: press Step or Play")
+                                    : "at step " + std::to_string(p.steps()) + " (" + phase_name(p.phase()) + ")");
     }
-    if (prm_->steps() > 0) ctx.log.add(prm_->steps(), describe(prm_->last_event(), *prm_, planned_scene_));
-    logged_through_ = prm_->steps();
+    if (p.steps() > 0) ctx.log.add(p.steps(), describe(p.last_event(), p, session_.planned_scene()));
+    logged_through_ = p.steps();
+    logged_version_ = session_.version();
   }
 
   void draw_current_step() {
-    if (prm_->steps() == 0) return;
-    const PrmEvent& e = prm_->last_event();
-    const auto& v = prm_->roadmap().vertices;
+    const Prm& planner = prm();
+    if (planner.steps() == 0) return;
+    const PrmEvent& e = planner.last_event();
+    const auto& v = planner.roadmap().vertices;
     ImDrawList* dl = view_.draw_list();
     const auto at = [&](int i) { return view_.to_screen(Vec2(v[static_cast<std::size_t>(i)][0], v[static_cast<std::size_t>(i)][1])); };
     switch (e.kind) {
@@ -217,7 +206,7 @@ class StepPrmLesson : public Lesson {
         break;
       }
       case PrmEvent::Kind::Neighbors:
-        for (const Neighbor& nb : prm_->candidates()) dl->AddLine(at(e.vertex), at(nb.index), theme::kCurrent, 1.5f);
+        for (const Neighbor& nb : planner.candidates()) dl->AddLine(at(e.vertex), at(nb.index), theme::kCurrent, 1.5f);
         dl->AddCircle(at(e.vertex), 8.0f, theme::kCurrent, 24, 2.5f);
         break;
       case PrmEvent::Kind::EdgeAdded:
@@ -226,11 +215,11 @@ class StepPrmLesson : public Lesson {
         const bool ok = e.kind == PrmEvent::Kind::EdgeAdded;
         dl->AddLine(at(e.vertex), at(e.other), ok ? theme::kFree : theme::kHit, 3.0f);
         // What the edge checker tested along it (recomputed: the check is deterministic).
-        if (check_at_ != prm_->steps()) {
+        if (check_at_ != session_.version()) {
           const auto spec = e.kind == PrmEvent::Kind::PathEdgeRemoved ? EdgeCheckerSpec::parse("bisection")
-                                                                      : prm_->params().checker;
-          check_ = check_edge(prm_->world(), spec, v[static_cast<std::size_t>(e.vertex)], v[static_cast<std::size_t>(e.other)], true);
-          check_at_ = prm_->steps();
+                                                                      : planner.params().checker;
+          check_ = check_edge(planner.world(), spec, v[static_cast<std::size_t>(e.vertex)], v[static_cast<std::size_t>(e.other)], true);
+          check_at_ = session_.version();
         }
         for (const EdgeEvent& ev : check_.trace)
           if (ev.kind == EdgeEvent::Kind::Evaluate)
@@ -243,15 +232,16 @@ class StepPrmLesson : public Lesson {
   }
 
   void stats() {
-    const Roadmap& r = prm_->roadmap();
-    ImGui::Text("step %ld   phase: %s", prm_->steps(), phase_name(prm_->phase()));
-    ImGui::Text("|V| = %zu   |E| = %ld   components: %d", r.vertices.size(), prm_->edges_alive(), prm_->components());
-    ImGui::Text("samples drawn %d of %d", prm_->samples_drawn(), params_.samples);
-    ImGui::Text("edge checks %ld   evaluations %ld", prm_->edge_checks(), prm_->evaluations());
-    if (prm_->solved())
-      ImGui::TextColored(ImVec4(0.0f, 0.45f, 0.3f, 1.0f), "path found: length %.4f, %zu edges", prm_->path_length(),
-                         prm_->path().size() - 1);
-    else if (prm_->done())
+    Prm& planner = session_.prm();
+    const Roadmap& r = planner.roadmap();
+    ImGui::Text("step %ld   phase: %s", planner.steps(), phase_name(planner.phase()));
+    ImGui::Text("|V| = %zu   |E| = %ld   components: %d", r.vertices.size(), planner.edges_alive(), planner.components());
+    ImGui::Text("samples drawn %d of %d", planner.samples_drawn(), params_.samples);
+    ImGui::Text("edge checks %ld   evaluations %ld", planner.edge_checks(), planner.evaluations());
+    if (planner.solved())
+      ImGui::TextColored(ImVec4(0.0f, 0.45f, 0.3f, 1.0f), "path found: length %.4f, %zu edges", planner.path_length(),
+                         planner.path().size() - 1);
+    else if (planner.done())
       ImGui::TextColored(ImVec4(0.7f, 0.25f, 0.0f, 1.0f), "no path found");
     if (replay_pending()) {
       ImGui::PushTextWrapPos(0.0f);
@@ -264,21 +254,15 @@ class StepPrmLesson : public Lesson {
   SceneEditor editor_;
   WorkspaceView view_;
   PrmParams params_;
-  // The scene's world; prm_ points into it, except while a replay waits for the end of a drag:
-  // then prm_ points into planned_world_ (else null; both declared before prm_, so that they
-  // outlive it), and planned_scene_ (otherwise equal to scene_) is the scene it ran in, whose
-  // obstacles the event log names.
-  std::unique_ptr<CollisionWorld> world_;
-  Scene planned_scene_;
-  std::unique_ptr<CollisionWorld> planned_world_;
-  std::unique_ptr<Prm> prm_;
+  PlannerSession session_;  // after scene_ and params_, from which it starts
   std::vector<int> labels_;
-  long labels_at_ = -1;
+  long long labels_at_ = -1;
   EdgeCheckResult check_;
-  long check_at_ = -1;
+  long long check_at_ = -1;
   long logged_through_ = -1;
-  long long rebuilds_ = 0;
+  long long logged_version_ = -1;
   RoadmapLayer roadmap_layer_;
+  RedrawThrottle throttle_;
 };
 
 }  // namespace

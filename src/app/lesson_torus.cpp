@@ -17,6 +17,7 @@
 #include "app/field_draw.hpp"
 #include "app/js_api.hpp"
 #include "app/lesson.hpp"
+#include "app/planner_session.hpp"
 #include "app/prm_controls.hpp"
 #include "app/prm_text.hpp"
 #include "app/scene_editor.hpp"
@@ -39,28 +40,30 @@ enum class Exercise { None, Around, Shrink };
 
 class TorusLesson : public Lesson {
  public:
-  TorusLesson() : scene_(bundled_scene("arm-2link")) {
+  TorusLesson() : scene_(bundled_scene("arm-2link")), session_(scene_, params_) {
     q_ = scene_.start;
-    rebuild(0);
+    rebuild_map();
   }
 
   void update(LabContext& ctx) override {
     const int due = ctx.playback.due(static_cast<double>(ImGui::GetIO().DeltaTime));
-    for (int i = 0; i < due && !prm_->done(); ++i) prm_->step();
-    if (prm_->done()) ctx.playback.playing = false;
-    if (logged_ != prm_->steps()) {
-      if (prm_->steps() == 0 || prm_->steps() < logged_ || prm_->steps() > logged_ + 1) {
+    for (int i = 0; i < due && !prm().done() && !session_.busy(); ++i) session_.step_forward();
+    if (prm().done()) ctx.playback.playing = false;
+    if (logged_version_ != session_.version()) {
+      const Prm& p = prm();
+      const bool same_planner = (logged_version_ >> 32) == (session_.version() >> 32);
+      if (!same_planner || p.steps() == 0 || p.steps() < logged_ || p.steps() > logged_ + 1) {
         ctx.log.clear();  // as the step-prm lesson does: where the planner stands, then each step
-        ctx.log.add(0, prm_->steps() == 0 ? std::string("ready: press Step or Play to grow a roadmap on the torus")
-                                          : "at step " + std::to_string(prm_->steps()) + " (" +
-                                                phase_name(prm_->phase()) + ")");
+        ctx.log.add(0, p.steps() == 0 ? std::string("ready: press Step or Play to grow a roadmap on the torus")
+                                      : "at step " + std::to_string(p.steps()) + " (" + phase_name(p.phase()) + ")");
       }
-      if (prm_->steps() > 0) ctx.log.add(prm_->steps(), describe(prm_->last_event(), *prm_, planned_scene_));
-      logged_ = prm_->steps();
+      if (p.steps() > 0) ctx.log.add(p.steps(), describe(p.last_event(), p, session_.planned_scene()));
+      logged_ = p.steps();
+      logged_version_ = session_.version();
     }
     // The arm walks along the found path, or along the exercise's loop, again and again.
     const double dt = static_cast<double>(ImGui::GetIO().DeltaTime);
-    if (animate_ && (prm_->solved() || exercise_ != Exercise::None)) {
+    if (animate_ && (prm().solved() || exercise_ != Exercise::None)) {
       phase_ = std::fmod(phase_ + 0.12 * dt, 1.0);
       q_ = exercise_ != Exercise::None ? loop_at(phase_) : path_at(phase_);
       push_trail();
@@ -71,7 +74,7 @@ class TorusLesson : public Lesson {
     ImGui::TextWrapped("Two joint angles fix the arm: its C-space is the torus T² = S¹ × S¹, drawn flat as a "
                        "square whose opposite edges are glued. Drag in the square to pose the arm, or drag the "
                        "arm's links; drag obstacles and watch their C-obstacles change.");
-    ImGui::Text("q = (%.3f, %.3f)  %s", q_[0], q_[1], world_->is_free(q_) ? "free" : "in collision");
+    ImGui::Text("q = (%.3f, %.3f)  %s", q_[0], q_[1], world().is_free(q_) ? "free" : "in collision");
     ImGui::Checkbox("animate the path / loop", &animate_);
     ui::flow(ui::button_width("clear trail"));
     if (ImGui::SmallButton("clear trail")) trail_.clear();
@@ -83,12 +86,12 @@ class TorusLesson : public Lesson {
     ImGui::RadioButton("both", &right_view_, 2);
 
     ui::section("PRM on the torus");
-    if (prm_controls(params_, world_->space(), 5000)) rebuild(0);
-    ImGui::Text("|V| = %zu  |E| = %ld  components %d", prm_->roadmap().vertices.size(), prm_->edges_alive(),
-                prm_->components());
+    if (prm_controls(params_, world(), ctx, 5000)) rebuild(0);
+    ImGui::Text("|V| = %zu  |E| = %ld  components %d", prm().roadmap().vertices.size(), prm().edges_alive(),
+                session_.prm().components());
     ImGui::Text("edges across a seam: %d", seam_edges());
-    if (prm_->solved()) ImGui::TextColored(ImVec4(0.0f, 0.45f, 0.3f, 1.0f), "path found, length %.3f rad", prm_->path_length());
-    else if (prm_->done()) ImGui::TextColored(ImVec4(0.7f, 0.25f, 0.0f, 1.0f), "no path found");
+    if (prm().solved()) ImGui::TextColored(ImVec4(0.0f, 0.45f, 0.3f, 1.0f), "path found, length %.3f rad", prm().path_length());
+    else if (prm().done()) ImGui::TextColored(ImVec4(0.7f, 0.25f, 0.0f, 1.0f), "no path found");
     if (replay_pending()) {
       ImGui::PushTextWrapPos(0.0f);
       ImGui::TextDisabled("(the roadmap of the scene before this drag: replayed at the release)");
@@ -112,7 +115,7 @@ class TorusLesson : public Lesson {
       if (ImGui::SmallButton("stop the exercise")) exercise_ = Exercise::None;
     }
     ui::section("Obstacles");
-    if (editor_.toolbar(scene_, ctx)) rebuild(prm_->steps());
+    if (editor_.toolbar(scene_, ctx)) rebuild(session_.wanted_steps());
   }
 
   void views(LabContext& ctx, ImVec2 size) override {
@@ -143,17 +146,18 @@ class TorusLesson : public Lesson {
     rebuild(0);
     return true;
   }
-  bool undo() override { return editor_.undo(scene_) && (rebuild(prm_->steps()), true); }
-  bool redo() override { return editor_.redo(scene_) && (rebuild(prm_->steps()), true); }
+  bool undo() override { return editor_.undo(scene_) && (rebuild(session_.wanted_steps()), true); }
+  bool redo() override { return editor_.redo(scene_) && (rebuild(session_.wanted_steps()), true); }
 
   json state(const json& args) const override {
-    const Roadmap& r = prm_->roadmap();
+    const Prm& planner = prm();
+    const Roadmap& r = planner.roadmap();
     json path = json::array();
-    for (int v : prm_->path()) path.push_back(config_to_json(r.vertices[static_cast<std::size_t>(v)]));
+    for (int v : planner.path()) path.push_back(config_to_json(r.vertices[static_cast<std::size_t>(v)]));
     char hash[32];
     std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(roadmap_hash(r)));
     json out{{"q", config_to_json(q_)},
-             {"q_free", world_->is_free(q_)},
+             {"q_free", world().is_free(q_)},
              {"start", config_to_json(scene_.start)},
              {"goal", config_to_json(scene_.goal)},
              {"free_fraction", free_fraction_},
@@ -163,16 +167,17 @@ class TorusLesson : public Lesson {
              {"exercise", exercise_ == Exercise::None ? "none" : exercise_ == Exercise::Around ? "around" : "shrink"},
              {"prm",
               {{"params", prm_params_json(params_)},
-               {"phase", phase_name(prm_->phase())},
-               {"steps", prm_->steps()},
+               {"phase", phase_name(planner.phase())},
+               {"steps", planner.steps()},
                {"nodes", r.vertices.size()},
-               {"edges", prm_->edges_alive()},
+               {"edges", planner.edges_alive()},
                {"seam_crossing_edges", seam_edges()},
-               {"solved", prm_->solved()},
+               {"solved", planner.solved()},
                {"replay_pending", replay_pending()},
-               {"planner_builds", version_},
+               {"planner_builds", session_.builds()},
+               {"running", running_json(session_)},
                {"path", path},
-               {"path_length", prm_->solved() ? json(prm_->path_length()) : json(nullptr)},
+               {"path_length", planner.solved() ? json(planner.path_length()) : json(nullptr)},
                {"roadmap_hash", hash}}}};
     for (const AngleInterval& i : map_->link1_blocked()) out["link1_blocked"].push_back({i.lo, i.hi});
     if (args.contains("blocked_at")) {
@@ -211,10 +216,10 @@ class TorusLesson : public Lesson {
         throw ApiError("unknown parameter \"" + k + "\"");
       }
     }
-    const PrmParams p = prm_params_from_json(prm_part, params_, world_->space(), 5000);
+    const PrmParams p = prm_params_from_json(prm_part, params_, world(), 5000);
     right_view_ = view;
     if (q) {
-      q_ = world_->space().wrap(*q);
+      q_ = world().space().wrap(*q);
       push_trail();
     }
     if (ex) start_exercise(*ex);
@@ -232,36 +237,36 @@ class TorusLesson : public Lesson {
   }
 
   bool steppable() const override { return true; }
-  long steps() const override { return prm_->steps(); }
-  bool finished() const override { return prm_->done(); }
-  void step_forward() override {
-    if (!prm_->done()) prm_->step();
-  }
+  long steps() const override { return prm().steps(); }
+  bool finished() const override { return prm().done(); }
+  void step_forward() override { session_.step_forward(); }
   void step_back() override {
-    if (prm_->steps() > 0) prm_->run_to(prm_->steps() - 1);
+    if (prm().steps() > 0) session_.step_back();
   }
-  void finish_phase() override { prm_->finish_phase(); }
-  void run_all() override { prm_->run(); }
-  void reset() override { prm_->reset(); }
-  void run_to(long steps) override { prm_->run_to(steps); }
+  void finish_phase() override { session_.finish_phase(); }
+  void run_all() override { session_.run_to_end(); }
+  void reset() override { session_.reset(); }
+  void run_to(long steps) override { session_.go_to(steps); }
+  bool busy() const override { return session_.busy(); }
+  void work(double ms) override { session_.work(ms); }
+  void cancel_work() override { session_.cancel(); }
+  double progress() const override { return session_.progress(); }
+  std::string busy_text() const override { return session_.job_text(); }
+  long wanted_steps() const override { return session_.wanted_steps(); }
 
  private:
-  // After any change of the scene: the world, the exact C-obstacle map, the planner (replayed).
+  const Prm& prm() const { return session_.prm(); }
+  const CollisionWorld& world() const { return session_.world(); }
+
+  // After any change of the scene or the parameters: the planner (replayed to `steps`) and the
+  // exact C-obstacle map.
   void rebuild(long steps) {
-    if (!planned_world_) planned_world_ = std::move(world_);  // prm_ points into it: kept until replaced
-    rebuild_world();
-    prm_ = std::make_unique<Prm>(*world_, scene_.start, scene_.goal, params_);
-    planned_world_.reset();
-    planned_scene_ = scene_;
-    prm_->run_to(steps);
-    ++version_;
-    logged_ = -1;
+    keep_within_budget(params_, CollisionWorld(scene_));
+    session_.rebuild(scene_, params_, steps);
+    rebuild_map();
+    logged_version_ = -1;
   }
 
-  void rebuild_world() {
-    world_ = std::make_unique<CollisionWorld>(scene_);
-    rebuild_map();
-  }
   void rebuild_map() {
     map_ = std::make_unique<ArmCSpaceMap>(std::get<ArmRobot>(scene_.robot), scene_.obstacles);
     std::vector<std::uint8_t> pixels;
@@ -269,33 +274,22 @@ class TorusLesson : public Lesson {
     torus_mesh_.reset();  // built when the 3-D view next draws (a drag in the square view needs none)
   }
 
-  // The scene changed (the editor): replay, unless a drag goes on and the replay is too long for
-  // a frame (see drag_replay.hpp). Then the planner keeps the world it ran in, and the world and
-  // the C-obstacles follow the drag live.
-  // A drag back to where it was pressed gives back the scene the planner ran in, exactly (see
-  // SceneEditor::continue_drag): its world again, and nothing to replay.
+  // The scene changed (the editor): the planner replays now or at the release (see
+  // PlannerSession::edited), and the world and the C-obstacles follow the drag live.
   void scene_edited() {
-    if (same_scene(scene_, planned_scene_)) {
-      if (planned_world_) {
-        world_ = std::move(planned_world_);
-        rebuild_map();
-      }
-      return;
-    }
-    if (!editor_.dragging() || replay_is_live(*prm_)) return rebuild(prm_->steps());
-    if (!planned_world_) planned_world_ = std::move(world_);
-    rebuild_world();
+    session_.edited(scene_, editor_.dragging());
+    rebuild_map();
   }
-  bool replay_pending() const { return planned_world_ != nullptr; }
+  bool replay_pending() const { return session_.replay_pending(); }
 
   int seam_edges() const {
     int n = 0;
-    const auto& v = prm_->roadmap().vertices;
-    for (const RoadmapEdge& e : prm_->roadmap().edges) {
+    const auto& v = prm().roadmap().vertices;
+    for (const RoadmapEdge& e : prm().roadmap().edges) {
       if (!e.alive) continue;
       const Config& a = v[static_cast<std::size_t>(e.a)];
       const Config& b = v[static_cast<std::size_t>(e.b)];
-      const Config d = world_->space().difference(a, b);
+      const Config d = world().space().difference(a, b);
       // The short way round leaves the chart when it differs from the plain difference.
       n += std::fabs(b[0] - a[0] - d[0]) > 1e-9 || std::fabs(b[1] - a[1] - d[1]) > 1e-9;
     }
@@ -309,29 +303,29 @@ class TorusLesson : public Lesson {
   }
 
   Config path_at(double s) const {
-    const auto& v = prm_->roadmap().vertices;
-    const auto& path = prm_->path();
+    const auto& v = prm().roadmap().vertices;
+    const auto& path = prm().path();
     if (path.size() < 2) return q_;
-    const double total = prm_->path_length();
+    const double total = prm().path_length();
     double left = s * total;
     for (std::size_t i = 0; i + 1 < path.size(); ++i) {
       const Config& a = v[static_cast<std::size_t>(path[i])];
       const Config& b = v[static_cast<std::size_t>(path[i + 1])];
-      const double len = world_->space().distance(a, b);
-      if (left <= len || i + 2 == path.size()) return world_->space().interpolate(a, b, len > 0 ? std::min(1.0, left / len) : 0.0);
+      const double len = world().space().distance(a, b);
+      if (left <= len || i + 2 == path.size()) return world().space().interpolate(a, b, len > 0 ? std::min(1.0, left / len) : 0.0);
       left -= len;
     }
     return q_;
   }
 
   Config loop_at(double s) const {
-    if (exercise_ == Exercise::Around) return world_->space().wrap(config({loop_origin_[0] + kTwoPi * s, loop_origin_[1]}));
-    return world_->space().wrap(config({loop_origin_[0] + 0.35 * std::cos(kTwoPi * s), loop_origin_[1] + 0.35 * std::sin(kTwoPi * s)}));
+    if (exercise_ == Exercise::Around) return world().space().wrap(config({loop_origin_[0] + kTwoPi * s, loop_origin_[1]}));
+    return world().space().wrap(config({loop_origin_[0] + 0.35 * std::cos(kTwoPi * s), loop_origin_[1] + 0.35 * std::sin(kTwoPi * s)}));
   }
 
   bool loop_blocked() const {
     for (int i = 0; i < 360; ++i)
-      if (!world_->is_free(loop_at(i / 360.0))) return true;
+      if (!world().is_free(loop_at(i / 360.0))) return true;
     return false;
   }
 
@@ -359,7 +353,7 @@ class TorusLesson : public Lesson {
     }
     draw_robot(view_, robot, scene_.start, theme::with_alpha(theme::kStart, 110), 2.0f);
     draw_robot(view_, robot, scene_.goal, theme::with_alpha(theme::kGoal, 110), 2.0f);
-    draw_robot(view_, robot, q_, world_->is_free(q_) ? theme::kRobot : theme::kHit, 4.0f);
+    draw_robot(view_, robot, q_, world().is_free(q_) ? theme::kRobot : theme::kHit, 4.0f);
     view_.pop_clip();
     (void)grab_link;
     // Links first (a press on a link turns its joint), the editor otherwise.
@@ -387,7 +381,7 @@ class TorusLesson : public Lesson {
     SceneEditor::Options options;
     options.endpoints_are_points = false;
     if (editor_.edit(view_, scene_, ctx, options)) scene_edited();
-    if (replay_pending() && !editor_.dragging()) rebuild(prm_->steps());  // released
+    if (replay_pending() && !editor_.dragging()) scene_edited();  // released
   }
 
   // 1 or 2 if the mouse is on link 1 or 2 of the posed arm, else 0.
@@ -406,22 +400,23 @@ class TorusLesson : public Lesson {
     ctx.views["cspace"] = &cspace_view_;
     cspace_view_.draw_grid("θ₁", "θ₂");
     cspace_view_.push_clip();
-    if (!replay_pending()) draw_arm_cobstacles(cspace_view_, *map_, kCObstacle);  // else over the faded roadmap
-    const Space& space = world_->space();
+    const bool stale = replay_pending() || session_.replaying();
+    if (!stale) draw_arm_cobstacles(cspace_view_, *map_, kCObstacle);  // else over the faded roadmap
+    const Space& space = world().space();
     refresh_labels();
-    roadmap_layer_.draw(cspace_view_, space, prm_->roadmap(), labels_, (static_cast<long long>(version_) << 32) + prm_->steps());
-    if (prm_->solved()) draw_path(cspace_view_, space, prm_->roadmap(), prm_->path());
-    if (replay_pending()) {  // the old roadmap faded under the C-obstacles as they are now
-      draw_replay_pending(cspace_view_);
+    roadmap_layer_.draw(cspace_view_, space, prm().roadmap(), labels_, throttle_(session_.version(), session_.busy()));
+    if (prm().solved()) draw_path(cspace_view_, space, prm().roadmap(), prm().path());
+    if (stale) {  // the old roadmap faded under the C-obstacles as they are now
+      draw_replay_pending(cspace_view_, session_.replaying() ? replaying_text(session_) : std::string());
       draw_arm_cobstacles(cspace_view_, *map_, kCObstacle);
     }
     for (std::size_t i = 1; i < trail_.size(); ++i)
       draw_chart_segment(cspace_view_, space, trail_[i - 1], space.difference(trail_[i - 1], trail_[i]),
                          theme::with_alpha(theme::kCurrent, 200), 2.0f);
-    cspace_view_.draw_marker(Vec2(scene_.start[0], scene_.start[1]), theme::kStart, "S", !world_->is_free(scene_.start));
-    cspace_view_.draw_marker(Vec2(scene_.goal[0], scene_.goal[1]), theme::kGoal, "G", !world_->is_free(scene_.goal));
+    cspace_view_.draw_marker(Vec2(scene_.start[0], scene_.start[1]), theme::kStart, "S", !world().is_free(scene_.start));
+    cspace_view_.draw_marker(Vec2(scene_.goal[0], scene_.goal[1]), theme::kGoal, "G", !world().is_free(scene_.goal));
     const ImVec2 at = cspace_view_.to_screen(Vec2(q_[0], q_[1]));
-    cspace_view_.draw_list()->AddCircleFilled(at, 6.0f, world_->is_free(q_) ? theme::kRobot : theme::kHit, 16);
+    cspace_view_.draw_list()->AddCircleFilled(at, 6.0f, world().is_free(q_) ? theme::kRobot : theme::kHit, 16);
     cspace_view_.draw_list()->AddCircle(at, 6.0f, theme::rgba(255, 255, 255), 16, 2.0f);
     cspace_view_.pop_clip();
 
@@ -465,10 +460,9 @@ class TorusLesson : public Lesson {
   }
 
   void refresh_labels() {
-    if (labels_at_ == prm_->steps() && labels_version_ == version_) return;
-    labels_ = prm_->component_labels();
-    labels_at_ = prm_->steps();
-    labels_version_ = version_;
+    if (labels_at_ == session_.version()) return;
+    labels_ = session_.prm().component_labels();
+    labels_at_ = session_.version();
   }
 
   // --- the torus in 3-D: C-obstacles on its surface, the roadmap and path on it, the arm's point.
@@ -484,58 +478,52 @@ class TorusLesson : public Lesson {
     }
     torus_view_.draw_mesh(*torus_mesh_);
     const auto on_torus = [](const Config& q) { return torus_point((q[0] + kPi) / kTwoPi, (q[1] + kPi) / kTwoPi); };
-    const Space& space = world_->space();
+    const Space& space = world().space();
     const auto curve = [&](const Config& a, const Config& b, ImU32 c, float t) {
       std::vector<SurfacePoint> pts;
       const Config d = space.difference(a, b);
       for (int i = 0; i <= 8; ++i) pts.push_back(on_torus(space.along(a, d, i / 8.0)));
       torus_view_.draw_curve(pts, c, t);
     };
-    const Roadmap& r = prm_->roadmap();
-    // While a replay waits for the end of a drag, the old roadmap and path would lie on the new
-    // C-obstacles with nothing to say so (the square view fades them): not drawn.
-    const bool show_roadmap = !replay_pending();
+    const Roadmap& r = prm().roadmap();
+    // While a replay waits for the end of a drag (or catches up), the old roadmap and path would
+    // lie on the new C-obstacles with nothing to say so (the square view fades them): not drawn.
+    const bool show_roadmap = !replay_pending() && !session_.replaying();
     if (r.edges.size() <= 6000 && show_roadmap)
       for (const RoadmapEdge& e : r.edges)
         if (e.alive)
           curve(r.vertices[static_cast<std::size_t>(e.a)], r.vertices[static_cast<std::size_t>(e.b)],
                 theme::with_alpha(theme::kBlue, r.edges.size() > 1500 ? 45 : 100), 1.0f);
-    for (std::size_t i = 0; show_roadmap && i + 1 < prm_->path().size(); ++i)
-      curve(r.vertices[static_cast<std::size_t>(prm_->path()[i])], r.vertices[static_cast<std::size_t>(prm_->path()[i + 1])],
+    for (std::size_t i = 0; show_roadmap && i + 1 < prm().path().size(); ++i)
+      curve(r.vertices[static_cast<std::size_t>(prm().path()[i])], r.vertices[static_cast<std::size_t>(prm().path()[i + 1])],
             theme::kPath, 3.5f);
     for (std::size_t i = 1; i < trail_.size(); ++i) curve(trail_[i - 1], trail_[i], theme::kCurrent, 2.5f);
     const SurfacePoint p = on_torus(q_);
     const ImVec2 s = torus_view_.project(p.p);
     ImDrawList* dl = ImGui::GetWindowDrawList();
-    dl->AddCircleFilled(s, torus_view_.facing(p.n) ? 6.0f : 3.0f, world_->is_free(q_) ? theme::kRobot : theme::kHit, 16);
+    dl->AddCircleFilled(s, torus_view_.facing(p.n) ? 6.0f : 3.0f, world().is_free(q_) ? theme::kRobot : theme::kHit, 16);
     const ImVec2 corner = ImGui::GetItemRectMin();
     dl->AddText(ImVec2(corner.x + 6, corner.y + 4), theme::kLabel, "θ₁: around the hole, θ₂: around the tube");
     if (!show_roadmap)
       dl->AddText(ImVec2(corner.x + 6, corner.y + 4 + ImGui::GetTextLineHeightWithSpacing()), theme::kWarning,
-                  "the roadmap is replayed when you release");
+                  session_.replaying() ? replaying_text(session_).c_str() : "the roadmap is replayed when you release");
   }
 
   Scene scene_;
   SceneEditor editor_;
   WorkspaceView view_, cspace_view_;
   SurfaceView torus_view_;
-  std::unique_ptr<CollisionWorld> world_;
+  PrmParams params_;
+  PlannerSession session_;  // after scene_ and params_, from which it starts
   std::unique_ptr<ArmCSpaceMap> map_;
   std::optional<SurfaceMesh> torus_mesh_;  // the 3-D torus with map_'s C-obstacles, once drawn
   double free_fraction_ = 0;
-  PrmParams params_;
-  // prm_ points into world_, except while a replay waits for the end of a drag: then into
-  // planned_world_ (else null; both declared before prm_, so that they outlive it), and
-  // planned_scene_ (otherwise equal to scene_) is the scene it ran in, whose obstacles the
-  // event log names.
-  Scene planned_scene_;
-  std::unique_ptr<CollisionWorld> planned_world_;
-  std::unique_ptr<Prm> prm_;
   RoadmapLayer roadmap_layer_;
+  RedrawThrottle throttle_;
   std::vector<int> labels_;
-  long labels_at_ = -1;
-  int version_ = 0, labels_version_ = -1;  // version_: planners built (rebuild())
+  long long labels_at_ = -1;
   long logged_ = -1;
+  long long logged_version_ = -1;
   Config q_;
   std::optional<Config> ghost_;
   std::deque<Config> trail_;

@@ -14,23 +14,58 @@ namespace csl::app {
 namespace {
 constexpr double kMinStep = 0.001;  // the D slider's least: finer steps only cost time
 
-// Only a radius rule is held to the budget (k <= 50 and n <= 20000 make at most about as many
-// pairs). r = max_radius() itself passes, or a clamped r would be clamped again each frame.
-bool over_budget(const PrmParams& p, const Space& space) {
-  return p.neighbors.kind == NeighborRule::Kind::Radius &&
-         !within_pairs_budget(space, p.neighbors, p.samples, kMaxCandidatePairs);
+constexpr int kSliderMaxK = 50;
+
+// The pairs budget. A radius rule is held to it by its r (r = max_radius() itself passes, or a
+// clamped r would be clamped again each frame); k up to the slider's 50 passes at any n (50 with
+// 20000 samples is a hair over 1e6), more only where n is small enough (k = 1000 and 20000
+// samples, 2e7 pairs, ran the wasm out of memory; a link could ask for it).
+bool over_pairs_budget(const PrmParams& p, const Space& space) {
+  if (p.neighbors.kind == NeighborRule::Kind::Nearest && p.neighbors.k <= kSliderMaxK) return false;
+  return !within_pairs_budget(space, p.neighbors, p.samples, kLabMaxPairs);
 }
 }  // namespace
 
-double max_radius(const Space& space, int samples) { return radius_for_pairs(space, samples, kMaxCandidatePairs); }
+double max_radius(const Space& space, int samples) { return radius_for_pairs(space, samples, kLabMaxPairs); }
 
-bool keep_within_budget(PrmParams& p, const Space& space) {
-  if (!over_budget(p, space)) return false;
-  p.neighbors.radius = max_radius(space, p.samples);
+bool keep_within_budget(PrmParams& p, const CollisionWorld& world) {
+  if (p.neighbors.kind != NeighborRule::Kind::Radius || !over_pairs_budget(p, world.space())) return false;
+  p.neighbors.radius = max_radius(world.space(), p.samples);
   return true;
 }
 
-bool prm_controls(PrmParams& p, const Space& space, int max_samples) {
+std::string prm_budget_problem(const PrmParams& p, const CollisionWorld& world) {
+  const Space& space = world.space();
+  char text[400];
+  if (over_pairs_budget(p, space)) {
+    if (p.neighbors.kind == NeighborRule::Kind::Radius) {
+      std::snprintf(text, sizeof text,
+                    "neighbors: radius:%g with %d samples means about %.0f candidate pairs; the lab checks at most "
+                    "%.0f (r at most %s with this n)",
+                    p.neighbors.radius, p.samples, expected_candidate_pairs(space, p.neighbors, p.samples), kLabMaxPairs,
+                    radius_for_pairs_text(space, p.samples, kLabMaxPairs).c_str());
+    } else {
+      std::snprintf(text, sizeof text,
+                    "neighbors: %s with %d samples means about %.0f candidate pairs; the lab checks at most %.0f "
+                    "(take fewer samples or at most k:%d)",
+                    p.neighbors.name().c_str(), p.samples, expected_candidate_pairs(space, p.neighbors, p.samples),
+                    kLabMaxPairs, kSliderMaxK);
+    }
+    return text;
+  }
+  const WorkEstimate w = expected_prm_work(world, p);
+  if (w.total() <= kLabMaxWork) return "";
+  std::snprintf(text, sizeof text,
+                "%d samples with %s and %s mean about %s of work in this scene (one configuration costs %.0f); the "
+                "lab takes at most %s: take fewer samples, fewer neighbours or a coarser checker",
+                p.samples, p.neighbors.name().c_str(), p.checker.name().c_str(), work_text(w.total()).c_str(),
+                world.evaluation_cost(), work_text(kLabMaxWork).c_str());
+  return text;
+}
+
+bool prm_controls(PrmParams& p, const CollisionWorld& world, LabContext& ctx, int max_samples) {
+  const Space& space = world.space();
+  const PrmParams before = p;
   bool changed = false;
   ImGui::PushItemWidth(-90.0f);
   changed |= ImGui::SliderInt("samples n", &p.samples, 0, max_samples, "%d", ImGuiSliderFlags_Logarithmic);
@@ -43,7 +78,7 @@ bool prm_controls(PrmParams& p, const Space& space, int max_samples) {
     changed = true;
   }
   if (p.neighbors.kind == NeighborRule::Kind::Nearest)
-    changed |= ImGui::SliderInt("k", &p.neighbors.k, 1, 50);
+    changed |= ImGui::SliderInt("k", &p.neighbors.k, 1, kSliderMaxK);
   if (p.neighbors.kind == NeighborRule::Kind::Radius) {
     // The slider ends where the pairs budget does; a float rounded up must not pass it.
     // (A workspace so small that the float is 0 still gets a slider with a positive range.)
@@ -60,7 +95,7 @@ bool prm_controls(PrmParams& p, const Space& space, int max_samples) {
       if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Pairs within r grow with n^2. The lab checks at most about %.0f pairs per run,\n"
                           "so that a run takes seconds, not minutes and gigabytes.",
-                          kMaxCandidatePairs);
+                          kLabMaxPairs);
     }
   }
   if (p.neighbors.kind == NeighborRule::Kind::PrmStar)
@@ -92,7 +127,15 @@ bool prm_controls(PrmParams& p, const Space& space, int max_samples) {
   }
   ImGui::PopItemWidth();
   p.checker.resolution = std::max(p.checker.resolution, 2);
-  changed |= keep_within_budget(p, space);  // more samples may have made r too large
+  changed |= keep_within_budget(p, world);  // more samples may have made r too large
+  if (changed) {
+    // Past the work budget (many samples, a fine checker, a heavy scene): the change is undone.
+    if (const std::string why = prm_budget_problem(p, world); !why.empty()) {
+      p = before;
+      ctx.notify(why, 8);
+      return false;
+    }
+  }
   return changed;
 }
 
@@ -100,7 +143,7 @@ nlohmann::json prm_params_json(const PrmParams& p) {
   return {{"samples", p.samples}, {"neighbors", p.neighbors.name()}, {"checker", p.checker.name()}, {"seed", p.seed}};
 }
 
-PrmParams prm_params_from_json(const nlohmann::json& j, PrmParams p, const Space& space, int max_samples) {
+PrmParams prm_params_from_json(const nlohmann::json& j, PrmParams p, const CollisionWorld& world, int max_samples) {
   if (!j.is_object()) throw ApiError("params must be an object");
   for (auto it = j.begin(); it != j.end(); ++it) {
     const std::string& key = it.key();
@@ -128,15 +171,7 @@ PrmParams prm_params_from_json(const nlohmann::json& j, PrmParams p, const Space
       throw ApiError(key + ": " + e.what());
     }
   }
-  if (over_budget(p, space)) {
-    char text[200];
-    std::snprintf(text, sizeof text,
-                  "neighbors: radius:%g with %d samples means about %.0f candidate pairs; the lab checks at most "
-                  "%.0f (r at most %s with this n)",
-                  p.neighbors.radius, p.samples, expected_candidate_pairs(space, p.neighbors, p.samples),
-                  kMaxCandidatePairs, radius_for_pairs_text(space, p.samples, kMaxCandidatePairs).c_str());
-    throw ApiError(text);
-  }
+  if (const std::string why = prm_budget_problem(p, world); !why.empty()) throw ApiError(why);
   return p;
 }
 

@@ -3,26 +3,34 @@
 // the edge checker, the seed. Shared by every lesson that runs PRM.
 #include <nlohmann/json.hpp>
 
+#include <string>
+
+#include "app/context.hpp"
 #include "core/prm.hpp"
+#include "core/work.hpp"
 
 namespace csl::app {
 
-/// The most candidate pairs a roadmap in the lab may be expected to check: as many as k = 50
-/// with the most samples. A radius rule's pairs grow with n^2 (radius 0.3 with 20000 samples:
-/// 57 million pairs, minutes and gigabytes), so its r is kept where this bound allows.
-inline constexpr double kMaxCandidatePairs = 1e6;
 /// The largest r the lab allows with `samples` samples in `space` (infinite: any r).
 double max_radius(const Space& space, int samples);
 /// Lowers a radius rule's r to max_radius() (after n or the scene changed): true if it did.
-bool keep_within_budget(PrmParams& params, const Space& space);
+bool keep_within_budget(PrmParams& params, const CollisionWorld& world);
 
-/// Draws the controls for planning in `space`; returns true if `params` changed.
-bool prm_controls(PrmParams& params, const Space& space, int max_samples = 20000);
+/// What is wrong with planning with `params` in `world` in the lab, or "": the budgets of
+/// core/work.hpp, the same for the panel, links and the API. More candidate pairs than
+/// kLabMaxPairs (a radius rule's r is kept within them; k up to 50, the slider's range, passes
+/// at any n), or more work than kLabMaxWork (the samples, pairs and checker in this scene).
+std::string prm_budget_problem(const PrmParams& params, const CollisionWorld& world);
+
+/// Draws the controls for planning in `world`; returns true if `params` changed. A change past
+/// the lab's budgets is undone, and the notice says why.
+bool prm_controls(PrmParams& params, const CollisionWorld& world, LabContext& ctx, int max_samples = 20000);
 
 nlohmann::json prm_params_json(const PrmParams& params);
 /// Applies {"samples", "neighbors", "checker", "seed"} (any subset) to a copy of `params` and
 /// returns it; throws ApiError naming the bad field, so nothing changes on bad input. Refuses
-/// what the panel cannot set either: more pairs than kMaxCandidatePairs, a step D under 0.001.
-PrmParams prm_params_from_json(const nlohmann::json& j, PrmParams params, const Space& space, int max_samples = 20000);
+/// what the panel cannot set either: prm_budget_problem(), a step D under 0.001.
+PrmParams prm_params_from_json(const nlohmann::json& j, PrmParams params, const CollisionWorld& world,
+                               int max_samples = 20000);
 
 }  // namespace csl::app

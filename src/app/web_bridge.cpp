@@ -135,6 +135,8 @@ std::vector<std::string> history_labels(const json& value) {
 
 const PageState& page() { return state(); }
 
+void record_control(const char* name) { record(name); }
+
 void page_action(const char* name) {
 #ifdef __EMSCRIPTEN__
   csl_page_action_js(name);

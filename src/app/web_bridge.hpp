@@ -39,6 +39,10 @@ float top_bar_actions_width();
 /// attached), and the reset confirmation when it is open. The caller places them.
 void top_bar_actions(LabContext& ctx, const std::string& lesson_name);
 
+/// Records where the last item is, under `name`, for page_state's buttons (this frame only): a
+/// test, or a guided tour, presses the real control there.
+void record_control(const char* name);
+
 /// Asks the page to do `name` (share, embed, import, export-scene, export-png, export-state,
 /// reset, restore-previous, restore-history:<i>, open-full); a no-op without a page.
 void page_action(const char* name);

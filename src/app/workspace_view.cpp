@@ -27,8 +27,11 @@ void WorkspaceView::begin(const char* id, ImVec2 size, const Vec2& world_min, co
 
   const Vec2 extent = world_max_ - world_min_;
   const float avail_w = size.x - 2 * kMargin, avail_h = size.y - 2 * kMargin;
-  const float fit = std::max(1.0f, std::min(avail_w / static_cast<float>(extent.x()),
-                                            avail_h / static_cast<float>(extent.y())));
+  // In double: a float of avail / extent overflowed to infinity for tiny workspaces. The
+  // schema keeps sides >= 0.001 (and a scale far inside float's range); this is the last guard.
+  const double fit_d = std::min(static_cast<double>(avail_w) / std::max(extent.x(), 1e-300),
+                                static_cast<double>(avail_h) / std::max(extent.y(), 1e-300));
+  const float fit = static_cast<float>(std::clamp(std::isfinite(fit_d) ? fit_d : 1.0, 1.0, 1e12));
   const ImGuiIO& io = ImGui::GetIO();
   // Zoom about the cursor: the world point under it stays put.
   if (hovered_ && io.MouseWheel != 0.0f) {
@@ -78,23 +81,36 @@ void WorkspaceView::draw_grid(const char* x_label, const char* y_label) const {
   const ImVec2 lo = to_screen(world_min_), hi = to_screen(world_max_);
   dl->AddRectFilled(ImVec2(lo.x, hi.y), ImVec2(hi.x, lo.y), theme::kCanvasBg);
 
-  // Grid spacing: a power of ten (or half of one) that gives lines at least ~24 px apart.
+  // Grid spacing: a power of ten (or half of one) that gives lines at least ~24 px apart. The
+  // lines are counted, not stepped to an end: at most one per 6 pixels of the canvas, whatever
+  // the scene's size or the float scale does (a step below the rounding of its values stepped
+  // forever, and a 1e-15 wide workspace drew ~1e8 lines into the draw list).
   const double extent = std::max(world_max_.x() - world_min_.x(), world_max_.y() - world_min_.y());
+  const double pixels_per_unit = static_cast<double>(scale_);
+  if (!(extent > 0.0) || !std::isfinite(extent) || !(pixels_per_unit > 0.0) || !std::isfinite(pixels_per_unit)) {
+    dl->PopClipRect();
+    return;
+  }
   double step = std::pow(10.0, std::floor(std::log10(extent)));
-  while (step * static_cast<double>(scale_) > 240.0) step /= 2.0;
-  while (step * static_cast<double>(scale_) > 48.0) step /= 5.0;
-  while (step * static_cast<double>(scale_) < 12.0) step *= 2.0;
+  for (int i = 0; i < 64 && step * pixels_per_unit > 240.0; ++i) step /= 2.0;
+  for (int i = 0; i < 64 && step * pixels_per_unit > 48.0; ++i) step /= 5.0;
+  for (int i = 0; i < 64 && step * pixels_per_unit < 12.0; ++i) step *= 2.0;
   const double major = step * 5.0;
+  const double most_lines = 2.0 + static_cast<double>(std::max(canvas_max_.x - canvas_min_.x, canvas_max_.y - canvas_min_.y)) / 6.0;
   for (int axis = 0; axis < 2; ++axis) {
     const double a0 = world_min_[axis], a1 = world_max_[axis];
-    for (double v = std::ceil(a0 / step) * step; v <= a1 + 1e-9; v += step) {
+    const double first = std::ceil(a0 / step);
+    const double count = std::floor((a1 - first * step) / step + 1e-9) + 1.0;  // lines in [a0, a1]
+    if (!(count >= 1.0) || count > most_lines) continue;
+    for (int k = 0; k < static_cast<int>(count); ++k) {
+      const double v = (first + k) * step;
       const bool is_major = std::fabs(v / major - std::round(v / major)) < 1e-6;
       Vec2 p = world_min_, q = world_max_;
       p[axis] = q[axis] = v;
       dl->AddLine(to_screen(p), to_screen(q), is_major ? theme::kGridMajor : theme::kGridMinor, 1.0f);
       if (!is_major) continue;
       char text[32];
-      std::snprintf(text, sizeof text, "%g", std::fabs(v) < 1e-12 ? 0.0 : v);
+      std::snprintf(text, sizeof text, "%g", std::fabs(v) < 1e-12 * extent ? 0.0 : v);
       ImFont* font = fonts().small;
       const float fs = font->FontSize * ImGui::GetIO().FontGlobalScale;
       const ImVec2 ts = font->CalcTextSizeA(fs, 1e9f, 0.0f, text);

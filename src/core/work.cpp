@@ -9,8 +9,13 @@
 namespace csl {
 
 double expected_edge_length(const Space& space, const NeighborRule& rule, int samples) {
-  if (rule.kind == NeighborRule::Kind::Radius) return rule.radius;
   const int d = space.dim();
+  if (rule.kind == NeighborRule::Kind::Radius) {
+    // Pairs within r lie d / (d + 1) r apart on average (uniform in the ball); no farther than
+    // the space allows (the side of a cube of its volume), whatever r says.
+    const double side = std::pow(space.volume(), 1.0 / d);
+    return std::min(rule.radius, side) * d / (d + 1.0);
+  }
   const double n = static_cast<double>(samples) + 2.0;
   const double k = rule.kind == NeighborRule::Kind::Nearest ? rule.k : NeighborRule::prm_star_k(samples + 2, d);
   // k of n uniform points in a ball of volume k / n of the space's.

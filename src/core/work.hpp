@@ -13,14 +13,20 @@
 
 namespace csl {
 
-/// Units a request of the app (a link, the API, a slider) may be expected to take: about 2 s in
-/// the browser for the densest scenes, far less for most (a run is drawn in slices of a frame,
-/// so the page stays responsive whatever it costs).
+/// Units a request of the app (a link, the API, a slider) may be expected to take: a few seconds
+/// in the browser where every configuration really costs its estimate (50 bands of 256 vertices
+/// whose boxes all hold the workspace: 3e9 expected, 2.1 s natively), far less where boxes prune
+/// (1000 small polygons: 20 times less). A run is drawn in slices of a frame with its progress
+/// and a Cancel, so the page stays responsive whatever it costs.
 inline constexpr double kLabMaxWork = 4e9;
 /// Candidate pairs a request of the app may be expected to check: about as many as k = 50 with
 /// the most samples (20000). The pairs hold memory as well as time (k = 1000 with 20000
 /// samples, 2e7 pairs, ran the wasm out of memory); a radius rule's grow with n^2.
 inline constexpr double kLabMaxPairs = 1e6;
+/// Units the app spends at once, within one frame (an edit's edge checks in the collision
+/// lesson, a heat map, a measurement): about 20 ms natively and 40 in the browser at the dense
+/// end (a point among overlapping polygons; far less where boxes prune).
+inline constexpr double kLabFrameWork = 2e7;
 /// The CLI's default limit (--max-work): 25 times the lab's, a minute or so.
 inline constexpr double kCliMaxWork = 1e11;
 
@@ -29,7 +35,8 @@ inline constexpr double kCliMaxWork = 1e11;
 inline constexpr double kBisectionEvaluationsPerEdge = 2.0;
 
 /// The expected length of a roadmap edge: the radius of the ball around a vertex that holds its
-/// k nearest among n + 2 uniform vertices (or the radius rule's r).
+/// k nearest among n + 2 uniform vertices; for a radius rule, the mean distance within r (at most
+/// the side of the space).
 double expected_edge_length(const Space& space, const NeighborRule& rule, int samples);
 
 /// Configurations one check of an edge of `length` is expected to evaluate with `spec` (the

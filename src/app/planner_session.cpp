@@ -1,0 +1,224 @@
+#include "app/planner_session.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "app/drag_replay.hpp"
+
+namespace csl::app {
+
+namespace {
+// A request's first slice runs at once, in the call: most jobs (a step back on a few hundred
+// samples, a replay after a small edit) end within it, and nothing is seen to wait.
+constexpr double kRequestSliceMs = 30.0;
+
+double now_ms() {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+}  // namespace
+
+PlannerSession::PlannerSession(const Scene& scene, const PrmParams& params) : params_(params) {
+  world_ = std::make_shared<const CollisionWorld>(scene);
+  shown_ = make_run(world_, scene, params);
+}
+
+PlannerSession::Run PlannerSession::make_run(std::shared_ptr<const CollisionWorld> world, const Scene& scene,
+                                             const PrmParams& params) {
+  Run run;
+  run.prm = std::make_unique<Prm>(*world, scene.start, scene.goal, params);
+  run.world = std::move(world);
+  run.scene = scene;
+  run.id = ++builds_;
+  return run;
+}
+
+void PlannerSession::rebuild(const Scene& scene, const PrmParams& params, long steps) {
+  params_ = params;
+  world_ = std::make_shared<const CollisionWorld>(scene);
+  next_ = make_run(world_, scene, params);
+  start(Job::Replay, steps);
+  keep_on_cancel_ = true;  // the planner from before belongs to another scene or other parameters
+  work(kRequestSliceMs);
+}
+
+void PlannerSession::edited(const Scene& scene, bool dragging) {
+  // A drag back to where it was pressed gives back the scene the planner ran in, exactly (see
+  // SceneEditor::continue_drag): its world again, and nothing to replay.
+  if (same_scene(scene, shown_.scene)) {
+    world_ = shown_.world;
+    if (next_) cancel();
+    return;
+  }
+  if (!dragging || replay_is_live(prm())) return rebuild(scene, params_, wanted_steps());
+  if (next_) {  // a replay for a scene the drag has left behind
+    next_.reset();
+    job_ = Job::None;
+  }
+  world_ = std::make_shared<const CollisionWorld>(scene);
+}
+
+void PlannerSession::step_forward() {
+  cancel();
+  if (!prm().done()) prm().step();
+}
+
+void PlannerSession::go_to(long steps) {
+  steps = std::max(0L, steps);
+  if (steps >= prm().steps()) {
+    start(Job::Forward, steps);
+  } else {
+    // Back: a replay from the start in a second planner; this one stays on screen meanwhile.
+    next_ = make_run(shown_.world, shown_.scene, params_);
+    start(Job::Replay, steps);
+  }
+  work(kRequestSliceMs);
+}
+
+void PlannerSession::run_to_end() {
+  start(Job::Forward, kToEnd);
+  work(kRequestSliceMs);
+}
+
+void PlannerSession::finish_phase() {
+  start(Job::Phase, 0);
+  phase_ = prm().phase();
+  work(kRequestSliceMs);
+}
+
+void PlannerSession::reset() {
+  cancel();
+  prm().reset();
+}
+
+void PlannerSession::start(Job job, long target) {
+  if (job != Job::Replay) next_.reset();
+  job_ = job;
+  target_ = target;
+  keep_on_cancel_ = false;
+  from_ = worked().steps();
+}
+
+long PlannerSession::target() const {
+  if (job_ == Job::Forward || job_ == Job::Replay) return target_;
+  if (job_ == Job::Phase) return kToEnd;
+  return prm().steps();
+}
+
+long PlannerSession::wanted_steps() const {
+  if ((job_ == Job::Forward || job_ == Job::Replay) && target_ != kToEnd) return target_;
+  return busy() ? worked().steps() : prm().steps();
+}
+
+double PlannerSession::progress() const {
+  if (!busy()) return 1.0;
+  const Prm& p = worked();
+  if ((job_ == Job::Forward || job_ == Job::Replay) && target_ != kToEnd) {
+    const double span = static_cast<double>(target_ - from_);
+    return span > 0 ? std::clamp(static_cast<double>(p.steps() - from_) / span, 0.0, 1.0) : 1.0;
+  }
+  // To the end (or a phase's end): by where the planner is in its phases; the connecting phase,
+  // by the vertex it connects, takes most of the time.
+  const double vertices = std::max<double>(1.0, static_cast<double>(p.roadmap().vertices.size()));
+  switch (p.phase()) {
+    case PrmPhase::Endpoints:
+      return 0.0;
+    case PrmPhase::Sampling:
+      return 0.02 + 0.18 * p.samples_drawn() / std::max(1, p.params().samples);
+    case PrmPhase::Connecting:
+      return 0.2 + 0.77 * std::max(0, p.connecting_vertex()) / vertices;
+    default:
+      return 0.97;
+  }
+}
+
+std::string PlannerSession::job_text() const {
+  switch (job_) {
+    case Job::Replay:
+      return target_ == kToEnd ? "replaying to the end" : "replaying to step " + std::to_string(target_);
+    case Job::Forward:
+      return target_ == kToEnd ? "running to the end" : "running to step " + std::to_string(target_);
+    case Job::Phase:
+      return std::string("finishing the ") + phase_name(phase_) + " phase";
+    case Job::None:
+      break;
+  }
+  return "";
+}
+
+bool PlannerSession::job_done() const {
+  const Prm& p = worked();
+  if (p.done()) return true;
+  switch (job_) {
+    case Job::Forward:
+    case Job::Replay:
+      return target_ != kToEnd && p.steps() >= target_;
+    case Job::Phase:
+      return p.phase() != phase_;
+    case Job::None:
+      break;
+  }
+  return true;
+}
+
+void PlannerSession::finish_job() {
+  if (next_) {
+    shown_ = std::move(*next_);
+    next_.reset();
+  }
+  job_ = Job::None;
+}
+
+void PlannerSession::work(double ms) {
+  if (!busy()) return;
+  if (!std::isfinite(ms)) {
+    // All of it, at once (the API): the planner's own bulk paths, whose state is the one stepping
+    // leaves (Prm::finish_phase()).
+    Prm& p = worked();
+    if (job_ == Job::Phase) {
+      if (p.phase() == phase_) p.finish_phase();
+    } else if (target_ == kToEnd) {
+      p.run();
+    } else {
+      p.run_to(target_);
+    }
+    finish_job();
+    return;
+  }
+  // Step by step with a look at the clock every few steps: one step is one unit of the
+  // planner's work (a sample, a vertex's neighbours, one edge check, bounded by
+  // kMaxEdgeCheckWork), so a slice ends within a few steps of its time, whatever the phase
+  // (sampling steps are cheap, connecting steps may be dear).
+  constexpr int kStepsPerLook = 16;
+  const double start = now_ms();
+  while (!job_done()) {
+    if (now_ms() - start >= ms) return;
+    Prm& p = worked();
+    for (int i = 0; i < kStepsPerLook && !job_done(); ++i) p.step();
+  }
+  finish_job();
+}
+
+void PlannerSession::cancel() {
+  if (job_ == Job::Replay && next_) {
+    if (keep_on_cancel_) shown_ = std::move(*next_);
+    next_.reset();
+  }
+  job_ = Job::None;
+}
+
+nlohmann::json running_json(const PlannerSession& session) {
+  if (!session.busy()) return nullptr;
+  const long target = session.target();
+  return {{"target", target == PlannerSession::kToEnd ? nlohmann::json(nullptr) : nlohmann::json(target)},
+          {"progress", session.progress()},
+          {"text", session.job_text()}};
+}
+
+std::string replaying_text(const PlannerSession& session) {
+  return "the roadmap from before: " + session.job_text() + ", " +
+         std::to_string(static_cast<int>(100.0 * session.progress())) + "% (Esc cancels)";
+}
+
+}  // namespace csl::app
