@@ -31,8 +31,8 @@ int run_check(Args& args, std::ostream& os) {
   if (min_grid) {
     if (checker_text || trace) throw UsageError("--min-grid takes neither --checker nor --trace");
     const int max_n = static_cast<int>(parse_count(max_text.value_or("1000"), "--max", 100000, 2));
-    const auto limit = static_cast<long>(std::min(1e15, max_work / world.evaluation_cost()));
-    const MinGridResult r = min_grid_search(world, p, q, max_n, std::max(2L, limit));
+    const auto limit = static_cast<long long>(std::min(1e15, max_work / world.evaluation_cost()));
+    const MinGridResult r = min_grid_search(world, p, q, max_n, std::max(2LL, limit));
     if (r.exhausted)
       throw UsageError("--min-grid: gave up after " + std::to_string(r.evaluations) + " configurations (" +
                        work_text(max_work) + " of work, --max-work) without finding N; the edge grazes an "

@@ -197,7 +197,7 @@ EdgeCheckResult check_edge(const CollisionWorld& world, const EdgeCheckerSpec& s
 }
 
 MinGridResult min_grid_search(const CollisionWorld& world, const Config& p, const Config& q, int max_n,
-                              long max_evaluations) {
+                              long long max_evaluations) {
   MinGridResult result;
   // An edge the exact check proves free has no configuration in collision, so no grid finds
   // one: answered at once.
@@ -265,7 +265,7 @@ MinGridResult min_grid_search(const CollisionWorld& world, const Config& p, cons
 }
 
 std::optional<int> min_grid_resolution(const CollisionWorld& world, const Config& p, const Config& q, int max_n) {
-  return min_grid_search(world, p, q, max_n, std::numeric_limits<long>::max()).n;
+  return min_grid_search(world, p, q, max_n, std::numeric_limits<long long>::max()).n;
 }
 
 int bisection_evaluation_limit(const CollisionWorld& world) {

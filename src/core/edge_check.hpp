@@ -217,7 +217,7 @@ EdgeCheckResult check_edge(const CollisionWorld& world, const EdgeCheckerSpec& s
 /// The smallest N in [2, max_n] for which the grid checker finds a collision on p -> q.
 struct MinGridResult {
   std::optional<int> n;    ///< none: no grid up to max_n sees it (or the edge is proven free)
-  long evaluations = 0;    ///< configurations evaluated (the bisection check's included)
+  long long evaluations = 0;  ///< configurations evaluated (the bisection check's included)
   bool exhausted = false;  ///< gave up after max_evaluations: n is not known
 };
 /// None, at once, when the exact bisection check proves the edge free. Otherwise N = 2, 3, ...
@@ -227,7 +227,7 @@ struct MinGridResult {
 /// minutes for max_n = 100000 and a thin wall), from about one evaluation per N near each
 /// collision. Stops with `exhausted` after `max_evaluations`.
 MinGridResult min_grid_search(const CollisionWorld& world, const Config& p, const Config& q, int max_n,
-                              long max_evaluations);
+                              long long max_evaluations);
 /// min_grid_search() without a limit: its N.
 std::optional<int> min_grid_resolution(const CollisionWorld& world, const Config& p, const Config& q, int max_n);
 

@@ -398,9 +398,9 @@ TEST_CASE("bisection against an exact segment-disk oracle, with zero and tiny ra
       if (!world.is_free(p) || !world.is_free(q)) continue;
       long double least = std::numeric_limits<long double>::infinity();
       for (const csl::Disk& d : disks) {
-        const long double px = p[0], py = p[1], dx = static_cast<long double>(q[0]) - px,
-                          dy = static_cast<long double>(q[1]) - py;
-        const long double cx = d.center.x(), cy = d.center.y();
+        const long double px = static_cast<long double>(p[0]), py = static_cast<long double>(p[1]);
+        const long double dx = static_cast<long double>(q[0]) - px, dy = static_cast<long double>(q[1]) - py;
+        const long double cx = static_cast<long double>(d.center.x()), cy = static_cast<long double>(d.center.y());
         long double t = ((cx - px) * dx + (cy - py) * dy) / (dx * dx + dy * dy);
         t = std::min<long double>(1, std::max<long double>(0, t));
         const long double ex = px + t * dx - cx, ey = py + t * dy - cy;
@@ -445,7 +445,7 @@ TEST_CASE("min_grid_search: a thin wall crossed at a slant, as grid after grid f
       while (!grid.done()) grid.step();
       if (grid.verdict() == csl::Verdict::Collision) brute = n;
     }
-    const csl::MinGridResult r = csl::min_grid_search(world, p, q, max_n, 1L << 40);
+    const csl::MinGridResult r = csl::min_grid_search(world, p, q, max_n, 1LL << 40);
     INFO("edge " << e << ": brute force " << (brute ? *brute : -1));
     CHECK(r.n == brute);
     CHECK_FALSE(r.exhausted);
