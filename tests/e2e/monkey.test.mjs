@@ -105,3 +105,69 @@ test('limits in the app: the most samples work, one more is refused and changes 
   assert.equal(await refusal(page, 'setParams', { samples: 20001 }), 'samples: an integer in [0, 20000]');
   assert.equal((await api(page, 'state')).roadmap_hash, s.roadmap_hash, 'nothing changed');
 }));
+
+// Issue 27: links and imports from the hostile families of its round (workspaces too small or too
+// thin to draw, absurd and heavy parameters, deep and broken JSON, control characters, steps past
+// the limit), seeded. Each must leave a lab that starts, keeps drawing, says what it did not
+// use, and never shows the crash panel; a plain start afterwards is clean.
+test(`monkey links and imports: hostile families, seed ${SEED}`, () => withBrowser(async ({ browser, url }) => {
+  const random = rng(SEED + 27);
+  const pick = (list) => list[Math.floor(random() * list.length)];
+  const b64 = (text) => Buffer.from(text).toString('base64').replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
+  const nested = (n) => '['.repeat(n) + ']'.repeat(n);
+  const scenes = [
+    () => ({ version: 1, workspace: { min: [0, 0], max: [pick([1e-15, 1e-100, 5e-324, 1e-4]), 1] } }),
+    () => ({ version: 1, workspace: { min: [0, 0], max: [pick([1000, 1e6]), 1] } }),
+    () => ({ version: 1, obstacles: [{ type: 'disk', center: [0.5, 0.5], radius: pick([-1, 0, 1e6, 1e-300]) }] }),
+    () => ({ version: 1, obstacles: [{ type: 'disk', center: [0, 0], radius: 0.3 }] }),  // start inside
+    () => ({ version: 1, name: 'a\u001b[31m\n' + 'x'.repeat(pick([10, 199, 201])) }),
+    () => ({ version: 1, ['k\ney\u0007']: 1 }),
+    () => ({ version: 1, robot: { type: 'arm2', base: [0.5, 0.5], lengths: [pick([1e-300, 0.3]), 0.2] } }),
+  ];
+  const sceneText = () => random() < 0.15 ? '{"version":1,"name":' + nested(pick([70, 2000])) + '}' : JSON.stringify(pick(scenes)());
+  const parts = [
+    () => 'scene=j.' + b64(sceneText()),
+    () => 'samples=' + pick(['20000', '20001', '1e9', '-5', '1e999', '0x10', ' 5']),
+    () => 'neighbors=' + pick(['k:1000', 'k:0', 'k:50', 'radius:1e300', 'radius:0.3', 'prm*', 'k:%0A5']),
+    () => 'checker=' + pick(['grid:1000000', 'grid:2', 'step:0.0000001', 'step:0x1p-3', 'bisection', 'grid:%1B']),
+    () => 'steps=' + pick(['999999999', '99999999', '100000001', '-1', '7']),
+    () => 'seed=' + pick(['1', '9007199254740993', 'nan']),
+    () => 'grid_n=' + pick(['100000', '100001', '3']),
+  ];
+  const lessons = ['step-prm', 'torus', 'collision', 'potential', 'analysis', 'notation', 'nosuch'];
+  const LINKS = Number(process.env.CSPACELAB_MONKEY_LINKS || 24);
+  const ctx = await browser.newContext({ viewport: { width: 1280, height: 800 } });
+  const page = await ctx.newPage();
+  const errors = collectErrors(page);
+  let where = '';
+  try {
+    for (let i = 0; i < LINKS; ++i) {
+      const query = ['lesson=' + pick(lessons)];
+      for (let k = 1 + Math.floor(random() * 3); k > 0; --k) query.push(pick(parts)());
+      where = `link ${i}: ?${query.join('&').slice(0, 300)}`;
+      await openLab(page, url + '?' + query.join('&'));
+      await waitFrames(page, 3);  // it keeps drawing (a trap stops the frames)
+      assert.equal(await page.locator('.lab-crash').count(), 0, 'no crash panel');
+      // Half the time, an import of a hostile file too, through the page's own import.
+      if (random() < 0.5) {
+        where += ' + import';
+        const text = pick([sceneText(), sceneText() + '\u0000garbage', '{"version":1} trailing', 'x'.repeat(3 << 20)]);
+        await page.evaluate((t) => window.cspacelab.shell.importFile(new File([t], 'hostile.json')), text);
+        await waitFrames(page, 3);
+        assert.equal(await page.locator('.lab-crash').count(), 0, 'no crash panel after the import');
+      }
+      // Long work from a link runs in slices: wait for it, the frames going on meanwhile.
+      await page.waitForFunction(() => window.cspacelab.status().busy === null, null, { timeout: 120000 });
+    }
+    where = 'a plain start afterwards';
+    await openLab(page, url);
+    await waitFrames(page, 3);
+    assert.equal(await page.locator('.lab-crash').count(), 0);
+  } catch (e) {
+    await screenshot(page, 'monkey-links-failure.png').catch(() => {});
+    e.message = `${where}: ${e.message}${errors.length ? `; page errors: ${errors.join(' | ')}` : ''}`;
+    throw e;
+  }
+  assert.deepEqual(errors, [], `no console errors and no traps (${where})`);
+  await ctx.close();
+}));
