@@ -35,7 +35,8 @@
   const MARKER_FRAMES = 3;      // a restore is done once the app drew this many frames after it
   const BEAT_MS = 1000;
   // A marker or a lease not refreshed for this long belongs to a tab that froze, crashed or
-  // closed (hidden tabs still run timers about once a second).
+  // closed. A hidden tab draws no frames, and after 5 minutes Chrome runs its timers about once a
+  // minute: its marker says `hidden`, and is not judged by its age.
   const MARKER_STALE_MS = 6000;
   const LEASE_STALE_MS = 10000;
   const REASONS = { link: 'before a link', reset: 'before reset', crash: 'could not be restored', tab: 'another tab',
@@ -72,14 +73,9 @@
   const live = (beat, staleMs, now = Date.now()) => typeof beat === 'number' && now - beat <= staleMs && beat <= now + 60000;
   const describe = (e) => U.excerpt(String(e && e.message ? e.message : e), 120).slice(1, -1);
 
-  /**
-   * An exception out of the app that is the wasm failing (a trap, a stack overflow, a response
-   * that is no longer JSON), not a command's refusal (a plain Error with the app's message).
-   */
-  function isTrap(e) {
-    return !!e && typeof e === 'object' && ((global.WebAssembly && e instanceof WebAssembly.RuntimeError) ||
-      e.name === 'RuntimeError' || e instanceof RangeError || e instanceof SyntaxError);
-  }
+  // The wasm failing (a trap, an Emscripten abort). A page's scripts throw RangeError and
+  // SyntaxError too: those count only out of _csl_call or a frame (attach(), lab.js).
+  const isTrap = (e) => !!global.WebAssembly && e instanceof WebAssembly.RuntimeError;
 
   function timeText(t) {
     const d = new Date(t);
@@ -171,11 +167,11 @@
       }
     }
 
-    /** Whether saves have room (1 KB more fits, after trimming history if needed). */
+    /** Whether saves have room: 1 KB more fits, or there is history to drop (only a real save drops it). */
     roomy() {
-      const r = this.set('probe', 'x'.repeat(1024));
+      const r = this.set('probe', 'x'.repeat(1024), [], false);
       this.remove('probe');
-      return r.ok;
+      return r.ok || this.slots('history:').length > 0;
     }
 
     /** History entries, newest first: {id, savedAt, reason, lesson, failed, work | link, size}. */
@@ -273,21 +269,26 @@
         const shell = this;
         api[name] = function guarded(...args) {
           if (shell.dead) throw new Error('C-Space Lab has stopped: ' + shell.deathText);
+          const calls = shell.calls;
           try {
             return proto[name].apply(this, args);
           } catch (e) {
-            if (isTrap(e)) shell.trap(e);
+            // A SyntaxError after _csl_call returned: its response was not JSON.
+            if (isTrap(e) || (e instanceof SyntaxError && shell.calls !== calls)) shell.trap(e);
             throw e;
           }
         };
       }
       const raw = api.module._csl_call;  // the wasm's one entry point, whoever calls it
+      this.calls = 0;
       api.module._csl_call = (ptr) => {
         try {
           return raw(ptr);
         } catch (e) {
           this.trap(e);
           throw e;
+        } finally {
+          this.calls += 1;
         }
       };
     }
@@ -426,8 +427,9 @@
       for (const begun = Date.now(); ;) {
         const now = Date.now();
         const markers = this.store.markers();
-        const gone = markers.filter((m) => m.trapped || m.choice || !live(m.beat, MARKER_STALE_MS, now));
-        const young = markers.filter((m) => !gone.includes(m) && m.beat - m.startedAt < 2 * BEAT_MS);
+        // A hidden page's marker is not judged by its age (its timers may run once a minute).
+        const gone = markers.filter((m) => m.trapped || m.choice || (!m.hidden && !live(m.beat, MARKER_STALE_MS, now)));
+        const young = markers.filter((m) => !gone.includes(m) && !m.hidden && m.beat - m.startedAt < 2 * BEAT_MS);
         if (!young.length || now - begun > MARKER_STALE_MS + 2 * BEAT_MS) {
           const lease = this.store.lease();
           if (lease && gone.some((m) => m.tab === lease.tab)) this.takeLease();  // its lease went with it
@@ -555,7 +557,7 @@
     }
 
     writeMarker() {
-      if (this.marker) this.store.set('restoring:' + this.tab, JSON.stringify(this.marker));
+      if (this.marker) this.store.set('restoring:' + this.tab, JSON.stringify(Object.assign(this.marker, { hidden: document.hidden })));
     }
 
     /** Its synchronous part is over (and saved, if savedOk: the work is then where this tab saves). */
@@ -717,7 +719,7 @@
     }
 
 
-    /** Saves what is on screen to the work slot (or this tab's own entry). True when saved (or it was already). */
+    /** Saves what is on screen to the work slot (or this tab's own entry). True when it is there (saved now or before). */
     saveNow() {
       if (this.dead || !this.api || !this.store.readable) return false;
       let work;
@@ -727,7 +729,8 @@
         return false;  // the app stopped (trap() shows it)
       }
       const text = workText(work);
-      if (text === this.lastSaved) return true;
+      // (A second tab's start is "saved" unwritten: it is the work slot's, not in its entry.)
+      if (text === this.lastSaved) return this.role === 'owner' || this.store.get('history:' + this.tabEntryId) !== null;
       const lease = this.role === 'owner' && this.store.lease();
       if (lease && lease.tab !== this.tab && live(lease.beat, LEASE_STALE_MS)) {
         this.becomeSecond();  // saves to its entry
@@ -739,7 +742,10 @@
         : this.store.putEntry(this.tabEntryId, { reason: 'tab', lesson: record.current, savedAt: record.savedAt, work: record });
       this.dirtySince = 0;
       // What to tell waits for the next notice (say()): an action's own notice would replace it.
-      if (this.started) this.notes.push(this.droppedText());  // '' when nothing was dropped
+      if (this.started) {
+        if (this.store.dropped.full) this.refreshHistory();  // the File menu lists what is left
+        this.notes.push(this.droppedText());  // '' when nothing was dropped
+      }
       if (r.ok) {
         this.lastSaved = text;
         if (this.saveFailed && this.started) this.notes.push('Saving works again.');
@@ -794,7 +800,11 @@
         this.releaseLease();
       });
       document.addEventListener('visibilitychange', () => {
-        if (document.visibilityState === 'hidden') this.saveNow();
+        if (document.hidden) this.saveNow();
+        if (this.marker && !this.dead) {
+          this.marker.beat = Date.now();
+          this.writeMarker();  // hidden or not
+        }
       });
     }
 
@@ -943,7 +953,9 @@
       if (file.size > MAX_IMPORT_BYTES) return fail(`is ${U.sizeText(file.size)}; a scene file is at most ${U.sizeText(MAX_IMPORT_BYTES)}`);
       let value;
       try {
-        value = JSON.parse(await file.text());
+        const text = await file.text();
+        if (U.tooDeep(text)) return fail(`is nested more than ${U.LIMITS.depth} levels deep`);
+        value = JSON.parse(text);
       } catch {
         return fail('is not JSON');
       }
@@ -1250,13 +1262,16 @@
     /**
      * Drops what a failed restore was about. The work slot is emptied, not removed: it remembers
      * the link it came from, so the same address does not bring the failing state back (for a
-     * failed link, the work it would have replaced stays, with the link marked as seen).
+     * failed link, the work it would have replaced stays, with the link marked as seen). Once
+     * another tab took over (the marker is gone, or it holds the lease), only the tab's own entry goes.
      */
     discard(m) {
       const s = m.source || {};
+      const lease = this.store.lease();
+      const ours = this.store.get('restoring:' + m.tab) !== null && !(lease && lease.tab !== this.tab && live(lease.beat, LEASE_STALE_MS));
       if (s.kind === 'history') {
-        this.store.remove('history:' + s.id);
-      } else {
+        if (ours || s.id === 'tab-' + m.tab) this.store.remove('history:' + s.id);
+      } else if (ours) {
         const work = this.store.json('work');
         const kept = s.kind === 'link' && validWork(work) ? work : { format: WORK_FORMAT, version: 1, current: '', lessons: {} };
         kept.config = s.kind === 'link' ? s.config || null : validWork(work) ? work.config : null;

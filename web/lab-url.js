@@ -19,6 +19,7 @@
     shareScene: 6000,        // characters of an encoded scene a Share link will hold (servers cap URLs near 8 KB)
     value: 256,              // characters of any other value
     entries: 64,             // key=value pairs
+    depth: 64,               // levels of JSON nesting (the app's kMaxJsonDepth, src/core/scene.hpp)
   });
   const RESERVED = new Set(['lesson', 'scene', 'steps', 'ui', 'id']);
   const KEY = /^[a-z][a-z0-9_]{0,31}$/;
@@ -205,6 +206,20 @@
     return out;
   }
 
+  /** Whether JSON text nests past LIMITS.depth (checked before parsing: a recursive JSON.stringify fails from ~20000). */
+  function tooDeep(text) {
+    for (let i = 0, depth = 0, str = false; i < text.length; ++i) {
+      const c = text[i];
+      if (str) {
+        if (c === '\\') ++i;
+        else if (c === '"') str = false;
+      } else if (c === '"') str = true;
+      else if ((c === '[' || c === '{') && ++depth > LIMITS.depth) return true;
+      else if (c === ']' || c === '}') --depth;
+    }
+    return false;
+  }
+
   /** The compact text of a scene for a link: "z.…" (deflate-raw) or "j.…" (plain JSON). */
   async function encodeScene(scene) {
     const bytes = new TextEncoder().encode(JSON.stringify(scene));
@@ -236,6 +251,7 @@
     } catch {
       throw new Error('is not UTF-8 text');
     }
+    if (tooDeep(json)) throw new Error(`is nested more than ${LIMITS.depth} levels deep`);
     let value;
     try {
       value = JSON.parse(json);
@@ -297,7 +313,7 @@
   const api = Object.freeze({
     LIMITS, RESERVED, NAME, STEPS, ID,
     excerpt, sizeText, parseConfig, hasState, stateKey, parseValue, formatValue, encodeValue,
-    encodeScene, decodeScene, buildQuery, hash, toBase64Url, fromBase64Url,
+    encodeScene, decodeScene, tooDeep, buildQuery, hash, toBase64Url, fromBase64Url,
   });
   global.CSpaceLabUrl = api;
   if (typeof module !== 'undefined' && module.exports) module.exports = api;

@@ -26,7 +26,8 @@
 
   // A trap in a frame reaches the page as an uncaught error (Emscripten's main loop rethrows it):
   // it belongs to the lab whose frame was running. One outside any frame (an input handler) is
-  // the only lab's when there is just one.
+  // the only lab's when there is just one, if it is a WebAssembly.RuntimeError: a page script's
+  // own RangeError or SyntaxError is not the lab's.
   window.addEventListener('error', (event) => {
     const live = shells.filter((s) => !s.dead);
     const inFrame = live.filter((s) => s.inFrame);

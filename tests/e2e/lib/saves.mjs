@@ -109,3 +109,79 @@ export function sceneOf(file) {
   if (file.lessons && file.current && file.lessons[file.current]) return file.lessons[file.current].scene;
   return file.scene || file;
 }
+
+/**
+ * A scene's JSON text with a value nested `levels` deep: JSON.parse reads it, JSON.stringify
+ * overflows the stack (from about 20000 levels in Chromium).
+ */
+export function deepSceneText(levels, scene = sceneWith(2, 'nested too deep')) {
+  return JSON.stringify(scene).replace(/}$/, `,"deep":${'['.repeat(levels)}${']'.repeat(levels)}}`);
+}
+
+/** Waits until the lab has started (two frames) or stopped (the crash panel). */
+export async function startedOrStopped(page) {
+  await page.waitForFunction(() => document.querySelector('.lab-crash') ||
+                             (window.cspacelab && window.cspacelab.status().frames >= 2), null, { timeout: 30000 });
+}
+
+/** File > Import scene (real clicks), choosing a file `name` with `text`. */
+export async function importByPicker(page, name, text) {
+  await click(page, await pageButton(page, 'file'));
+  const at = await pageButton(page, 'import');
+  if (!at) throw new Error('the File menu shows no import');
+  const [chooser] = await Promise.all([page.waitForEvent('filechooser'), click(page, at)]);
+  await chooser.setFiles({ name, mimeType: 'application/json', buffer: Buffer.from(text) });
+}
+
+/**
+ * Makes a page behave as a background tab from its start: hidden (document.hidden), no frames
+ * (requestAnimationFrame holds its callbacks). window.cslTab.throttle(true) stops its interval
+ * timers, as Chrome's throttling of a tab hidden for 5 minutes nearly does (once a minute);
+ * window.cslTab.show() brings it to the front: visible, frames again.
+ */
+export async function backgroundTab(page) {
+  await page.addInitScript(() => {
+    let hidden = true;
+    let paused = false;
+    const held = [];
+    Object.defineProperty(Document.prototype, 'hidden', { configurable: true, get: () => hidden });
+    Object.defineProperty(Document.prototype, 'visibilityState', { configurable: true, get: () => (hidden ? 'hidden' : 'visible') });
+    const raf = window.requestAnimationFrame.bind(window);
+    window.requestAnimationFrame = (cb) => (hidden ? (held.push(cb), 0) : raf(cb));
+    const every = window.setInterval.bind(window);
+    window.setInterval = (fn, ms, ...args) => every(() => { if (!paused) fn(...args); }, ms);
+    window.cslTab = {
+      throttle(on) { paused = on; },
+      show() {
+        hidden = false;
+        document.dispatchEvent(new Event('visibilitychange'));
+        for (const cb of held.splice(0)) raf(cb);
+      },
+    };
+  });
+}
+
+/** The restore markers in a page's storage, parsed. */
+export async function markers(page) {
+  return page.evaluate(() => Object.keys(localStorage).filter((k) => k.includes(':restoring:')).map((k) => JSON.parse(localStorage.getItem(k))));
+}
+
+/**
+ * Makes JSON.stringify throw RangeError past `limit` levels, as it does where it recurses on
+ * the stack (Safari, Chrome before V8 made it iterative: about 20000 levels). Chromium 156
+ * stringifies 500000 levels, so without this the tests would not meet that engine's failure.
+ */
+export async function recursiveStringify(page, limit = 20000) {
+  await page.addInitScript((max) => {
+    const stringify = JSON.stringify;
+    JSON.stringify = function (value, ...rest) {
+      for (const todo = [[value, 1]]; todo.length;) {
+        const [v, depth] = todo.pop();
+        if (v === null || typeof v !== 'object') continue;
+        if (depth > max) throw new RangeError('Maximum call stack size exceeded');
+        for (const k in v) todo.push([v[k], depth + 1]);
+      }
+      return stringify.call(this, value, ...rest);
+    };
+  }, limit);
+}
