@@ -248,8 +248,16 @@ class AnalysisLesson : public Lesson {
   // them the lab's budget for a long job (the experiment shows its progress and can be
   // cancelled, so that is minutes at most).
   std::string experiment_problem(const std::vector<int>& counts, int trials) const {
+    if (too_dense_)
+      return "this scene is too dense for an experiment here (its reference run alone would hold the page): "
+             "use cspacelab experiment";
     PrmParams run;
-    double total = 0.0, largest = 0.0;
+    // The experiment's first step: its reference run and Monte Carlo volume, as measure() sized
+    // them for this scene.
+    run.samples = reference_samples_;
+    double total = expected_prm_work(*world_, run).total() +
+                   (4096.0 + static_cast<double>(volume_samples_)) * world_->evaluation_cost();
+    double largest = total;
     for (int n : counts) {
       run.samples = n;
       const double work = expected_prm_work(*world_, run).total();
@@ -257,9 +265,9 @@ class AnalysisLesson : public Lesson {
       total += trials * work;
     }
     if (largest > 10 * kLabFrameWork)
-      return "a run of " + std::to_string(*std::max_element(counts.begin(), counts.end())) + " samples means " +
-             work_text(largest) + " in this scene; the lab runs at most " + work_text(10 * kLabFrameWork) +
-             " at once: take smaller n (or use cspacelab experiment)";
+      return "a run of " + std::to_string(std::max(reference_samples_, *std::max_element(counts.begin(), counts.end()))) +
+             " samples means " + work_text(largest) + " in this scene; the lab runs at most " +
+             work_text(10 * kLabFrameWork) + " at once: take smaller n (or use cspacelab experiment)";
     if (total > 10 * kLabMaxWork)
       return "the experiment means " + work_text(total) + " in all; the lab takes at most " +
              work_text(10 * kLabMaxWork) + ": take fewer runs or smaller n (or use cspacelab experiment)";
@@ -281,6 +289,8 @@ class AnalysisLesson : public Lesson {
     p.reference_samples = 3000;
     p.volume_samples = 50000;
     too_dense_ = false;
+    reference_samples_ = p.reference_samples;
+    volume_samples_ = p.volume_samples;
     if (!world_->is_free(scene_.start) || !world_->is_free(scene_.goal)) {
       path_exists_ = false;
       return;
@@ -302,6 +312,8 @@ class AnalysisLesson : public Lesson {
         return;
       }
     }
+    reference_samples_ = p.reference_samples;
+    volume_samples_ = p.volume_samples;
     Experiment probe(*world_, scene_.start, scene_.goal, p);
     probe.step();  // the reference run only
     const ExperimentReference& ref = probe.reference();
@@ -320,8 +332,8 @@ class AnalysisLesson : public Lesson {
     p.sample_counts = sample_counts_;
     p.trials = trials_;
     p.seed = 1;
-    p.reference_samples = 3000;
-    p.volume_samples = 50000;
+    p.reference_samples = reference_samples_;  // as measure() sized them for this scene
+    p.volume_samples = volume_samples_;
     experiment_ = std::make_unique<Experiment>(*world_, scene_.start, scene_.goal, p);
   }
 
@@ -584,6 +596,8 @@ class AnalysisLesson : public Lesson {
   std::vector<Config> reference_path_;
   bool path_exists_ = false;
   bool too_dense_ = false;  // measure() would take more than a few frames' work: not measured
+  int reference_samples_ = 3000;  // measure()'s reference run and Monte Carlo volume, fewer in a
+  long volume_samples_ = 50000;   // dense scene; an experiment's first step uses the same
   int dim_ = 2;
   double length_ = 1, clearance_ = 0.05, free_volume_ = 1;
   double measured_length_ = 0, measured_clearance_ = 0, measured_volume_ = 0;

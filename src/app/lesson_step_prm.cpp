@@ -81,6 +81,8 @@ class StepPrmLesson : public Lesson {
       why = "this lesson plans for a point robot; the scene has a '" + std::string(robot_type_name(s.robot)) + "' robot";
       return false;
     }
+    // The parameters were priced in the old scene: a denser one may cost past the lab's budget.
+    if (!(why = scene_budget_problem(params_, s)).empty()) return false;
     editor_.replace(scene_, s);
     rebuild(0);
     return true;
@@ -136,7 +138,7 @@ class StepPrmLesson : public Lesson {
   bool finished() const override { return prm().done(); }
   void step_forward() override { session_.step_forward(); }
   void step_back() override {
-    if (prm().steps() > 0) session_.step_back();
+    if (session_.wanted_steps() > 0) session_.step_back();
   }
   void finish_phase() override { session_.finish_phase(); }
   void run_all() override { session_.run_to_end(); }

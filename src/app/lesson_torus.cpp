@@ -140,6 +140,8 @@ class TorusLesson : public Lesson {
       why = "this lesson is about the 2-link arm (robot type 'arm2')";
       return false;
     }
+    // The parameters were priced in the old scene: a denser one may cost past the lab's budget.
+    if (!(why = scene_budget_problem(params_, s)).empty()) return false;
     editor_.replace(scene_, s);
     q_ = scene_.start;
     trail_.clear();
@@ -241,7 +243,7 @@ class TorusLesson : public Lesson {
   bool finished() const override { return prm().done(); }
   void step_forward() override { session_.step_forward(); }
   void step_back() override {
-    if (prm().steps() > 0) session_.step_back();
+    if (session_.wanted_steps() > 0) session_.step_back();
   }
   void finish_phase() override { session_.finish_phase(); }
   void run_all() override { session_.run_to_end(); }

@@ -38,6 +38,7 @@ void PlannerSession::rebuild(const Scene& scene, const PrmParams& params, long s
   params_ = params;
   world_ = std::make_shared<const CollisionWorld>(scene);
   next_ = make_run(world_, scene, params);
+  desired_ = steps == kToEnd ? desired_ : steps;
   start(Job::Replay, steps);
   keep_on_cancel_ = true;  // the planner from before belongs to another scene or other parameters
   work(kRequestSliceMs);
@@ -48,10 +49,15 @@ void PlannerSession::edited(const Scene& scene, bool dragging) {
   // SceneEditor::continue_drag): its world again, and nothing to replay.
   if (same_scene(scene, shown_.scene)) {
     world_ = shown_.world;
-    if (next_) cancel();
+    if (next_) {  // a replay for another scene: the one on screen is this scene's again
+      next_.reset();
+      job_ = Job::None;
+    }
     return;
   }
   if (!dragging || replay_is_live(prm())) return rebuild(scene, params_, wanted_steps());
+  // (A drag keeps the step the student asked for: wanted_steps() is not where the planner of
+  // some frame of the drag ended.)
   if (next_) {  // a replay for a scene the drag has left behind
     next_.reset();
     job_ = Job::None;
@@ -62,10 +68,25 @@ void PlannerSession::edited(const Scene& scene, bool dragging) {
 void PlannerSession::step_forward() {
   cancel();
   if (!prm().done()) prm().step();
+  desired_ = prm().steps();
+}
+
+void PlannerSession::step_back() {
+  if (job_ == Job::Forward || job_ == Job::Phase) cancel();
+  go_to(wanted_steps() - 1);
 }
 
 void PlannerSession::go_to(long steps) {
   steps = std::max(0L, steps);
+  desired_ = steps;
+  if (rebuilding()) {
+    // The new scene's replay is what the student will see: it heads for this step instead (from
+    // the start again if it is already past it).
+    if (steps < next_->prm->steps()) next_ = make_run(next_->world, next_->scene, params_);
+    target_ = steps;
+    from_ = next_->prm->steps();
+    return work(kRequestSliceMs);
+  }
   if (steps >= prm().steps()) {
     start(Job::Forward, steps);
   } else {
@@ -90,10 +111,16 @@ void PlannerSession::finish_phase() {
 void PlannerSession::reset() {
   cancel();
   prm().reset();
+  desired_ = 0;
 }
 
 void PlannerSession::start(Job job, long target) {
-  if (job != Job::Replay) next_.reset();
+  if (job != Job::Replay && next_) {
+    // A forward job goes on from the new scene's replay where it got to (the planner on screen
+    // belongs to the old scene); a step back's replay is simply dropped.
+    if (keep_on_cancel_) shown_ = std::move(*next_);
+    next_.reset();
+  }
   job_ = job;
   target_ = target;
   keep_on_cancel_ = false;
@@ -107,8 +134,8 @@ long PlannerSession::target() const {
 }
 
 long PlannerSession::wanted_steps() const {
-  if ((job_ == Job::Forward || job_ == Job::Replay) && target_ != kToEnd) return target_;
-  return busy() ? worked().steps() : prm().steps();
+  if (job_ == Job::Forward || job_ == Job::Replay) return target_ == kToEnd ? kMaxSteps : target_;
+  return busy() ? worked().steps() : desired_;
 }
 
 double PlannerSession::progress() const {
@@ -167,6 +194,9 @@ void PlannerSession::finish_job() {
     shown_ = std::move(*next_);
     next_.reset();
   }
+  // A run to the end or to a phase's end asked for wherever it ended; a run to a step (or a
+  // replay) for that step, even where the planner ended before it.
+  if (job_ == Job::Phase || target_ == kToEnd) desired_ = prm().steps();
   job_ = Job::None;
 }
 
@@ -190,21 +220,27 @@ void PlannerSession::work(double ms) {
   // planner's work (a sample, a vertex's neighbours, one edge check, bounded by
   // kMaxEdgeCheckWork), so a slice ends within a few steps of its time, whatever the phase
   // (sampling steps are cheap, connecting steps may be dear).
-  constexpr int kStepsPerLook = 16;
+  // In a dense scene (a configuration past 64 units) a single step may take a while: the clock
+  // after every one.
+  const int steps_per_look = worked().world().evaluation_cost() > 64.0 ? 1 : 16;
   const double start = now_ms();
   while (!job_done()) {
     if (now_ms() - start >= ms) return;
     Prm& p = worked();
-    for (int i = 0; i < kStepsPerLook && !job_done(); ++i) p.step();
+    for (int i = 0; i < steps_per_look && !job_done(); ++i) p.step();
   }
   finish_job();
 }
 
 void PlannerSession::cancel() {
+  if (job_ == Job::None) return;
   if (job_ == Job::Replay && next_) {
     if (keep_on_cancel_) shown_ = std::move(*next_);
     next_.reset();
   }
+  // Stopped here: this is where the student is now (a step back's replay left the planner where
+  // it was).
+  desired_ = prm().steps();
   job_ = Job::None;
 }
 

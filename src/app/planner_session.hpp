@@ -30,6 +30,9 @@ class PlannerSession {
  public:
   /// A job's target meaning "to the end".
   static constexpr long kToEnd = -1;
+  /// The most steps a link or the API asks for (app.cpp's run_to): what a snapshot holds for a
+  /// run to the end that is still running, so that a reload comes back to its end.
+  static constexpr long kMaxSteps = 100000000;
 
   /// A planner for `scene` and `params` at step 0.
   PlannerSession(const Scene& scene, const PrmParams& params);
@@ -58,7 +61,9 @@ class PlannerSession {
 
   // ---- requests (each replaces any job)
   void step_forward();
-  void step_back() { go_to(prm().steps() - 1); }
+  /// One step before the one the student asked for (pressed again during the replay, one more;
+  /// during a run forward, one before where the run got to).
+  void step_back();
   void go_to(long steps);
   void run_to_end();
   void finish_phase();
@@ -70,8 +75,10 @@ class PlannerSession {
   bool replaying() const { return next_.has_value(); }
   /// The steps the job heads for (kToEnd, or the phase's end: -1), or the shown planner's.
   long target() const;
-  /// The step a snapshot should hold: the job's target when it has one (so that a reload in the
-  /// middle comes back to where the student asked to be), else the planner's steps.
+  /// The step the student asked to be at: where a job heads, or where a step, a run or a cancel
+  /// left the planner. An edit replays to it, and a snapshot holds it. It is not lowered when an
+  /// edit makes the planner end sooner (an obstacle dragged over the start ends the run at step
+  /// 1): undoing the edit brings the whole run back (issue 21).
   long wanted_steps() const;
   /// How far the job is, in [0, 1].
   double progress() const;
@@ -87,10 +94,24 @@ class PlannerSession {
     std::unique_ptr<Prm> prm;
     Scene scene;
     long id = 0;
+    Run() = default;
+    Run(Run&&) = default;
+    // The old planner goes before the world it references (the default would release the world
+    // first).
+    Run& operator=(Run&& o) noexcept {
+      prm.reset();
+      world = std::move(o.world);
+      prm = std::move(o.prm);
+      scene = std::move(o.scene);
+      id = o.id;
+      return *this;
+    }
   };
   enum class Job { None, Forward, Phase, Replay };
 
   Run make_run(std::shared_ptr<const CollisionWorld> world, const Scene& scene, const PrmParams& params);
+  // A replay for a new scene or new parameters is running (the planner on screen is stale).
+  bool rebuilding() const { return next_ && keep_on_cancel_; }
   void start(Job job, long target);
   // The planner the job advances.
   Prm& worked() { return next_ ? *next_->prm : *shown_.prm; }
@@ -105,6 +126,7 @@ class PlannerSession {
   Job job_ = Job::None;
   long target_ = 0;
   long from_ = 0;                         // the worked planner's steps when the job started
+  long desired_ = 0;                      // wanted_steps() when no job has a target
   PrmPhase phase_ = PrmPhase::Endpoints;  // Job::Phase: the phase to finish
   bool keep_on_cancel_ = false;           // Job::Replay: the replay replaces shown_ even unfinished
   long builds_ = 0;

@@ -54,6 +54,15 @@ std::string prm_budget_problem(const PrmParams& p, const CollisionWorld& world) 
     return text;
   }
   const WorkEstimate w = expected_prm_work(world, p);
+  // One edge check is one step of the planner, which runs within a frame (PlannerSession).
+  if (w.per_edge > kLabFrameWork) {
+    std::snprintf(text, sizeof text,
+                  "checker: one edge check with %s means about %s in this scene (one configuration costs %.0f); "
+                  "the lab does at most %s at once: take a coarser checker",
+                  p.checker.name().c_str(), work_text(w.per_edge).c_str(), world.evaluation_cost(),
+                  work_text(kLabFrameWork).c_str());
+    return text;
+  }
   if (w.total() <= kLabMaxWork) return "";
   std::snprintf(text, sizeof text,
                 "%d samples with %s and %s mean about %s of work in this scene (one configuration costs %.0f); the "
@@ -61,6 +70,13 @@ std::string prm_budget_problem(const PrmParams& p, const CollisionWorld& world) 
                 p.samples, p.neighbors.name().c_str(), p.checker.name().c_str(), work_text(w.total()).c_str(),
                 world.evaluation_cost(), work_text(kLabMaxWork).c_str());
   return text;
+}
+
+std::string scene_budget_problem(PrmParams params, const Scene& scene) {
+  const CollisionWorld world(scene);
+  keep_within_budget(params, world);
+  const std::string why = prm_budget_problem(params, world);
+  return why.empty() ? why : "with these parameters this scene is too much for the lab: " + why;
 }
 
 bool prm_controls(PrmParams& p, const CollisionWorld& world, LabContext& ctx, int max_samples) {

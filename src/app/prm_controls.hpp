@@ -7,6 +7,7 @@
 
 #include "app/context.hpp"
 #include "core/prm.hpp"
+#include "core/scene.hpp"
 #include "core/work.hpp"
 
 namespace csl::app {
@@ -21,6 +22,11 @@ bool keep_within_budget(PrmParams& params, const CollisionWorld& world);
 /// kLabMaxPairs (a radius rule's r is kept within them; k up to 50, the slider's range, passes
 /// at any n), or more work than kLabMaxWork (the samples, pairs and checker in this scene).
 std::string prm_budget_problem(const PrmParams& params, const CollisionWorld& world);
+
+/// prm_budget_problem() for `params` in a scene about to replace the lesson's (a radius rule's r
+/// lowered first, as the lesson will), phrased for the scene: "with these parameters, this
+/// scene means ...", or "".
+std::string scene_budget_problem(PrmParams params, const Scene& scene);
 
 /// Draws the controls for planning in `world`; returns true if `params` changed. A change past
 /// the lab's budgets is undone, and the notice says why.

@@ -270,7 +270,7 @@ std::optional<int> min_grid_resolution(const CollisionWorld& world, const Config
 
 int bisection_evaluation_limit(const CollisionWorld& world) {
   const double fits = kMaxEdgeCheckWork / world.evaluation_cost();
-  return fits >= kMaxBisectionEvaluations ? kMaxBisectionEvaluations : std::max(128, static_cast<int>(fits));
+  return fits >= kMaxBisectionEvaluations ? kMaxBisectionEvaluations : std::max(16, static_cast<int>(fits));
 }
 
 }  // namespace csl

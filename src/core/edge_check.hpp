@@ -36,12 +36,13 @@ inline constexpr double kMinBisectionPiece = 1e-12;
 /// Configurations one bisection check evaluates at most before it gives up (as a collision)...
 inline constexpr int kMaxBisectionEvaluations = 1 << 20;
 /// ...and fewer in scenes where one configuration costs much (work.hpp's units): one check
-/// does at most about this much work, a fraction of a second, so that no single step of a
-/// planner holds a browser's frame for long (1000 polygons of 256 vertices: 128 configurations
-/// rather than 2^20, which took minutes).
-inline constexpr double kMaxEdgeCheckWork = 1 << 25;
+/// does at most about this much work, what the app does within a frame, so that no single step
+/// of a planner holds a browser's frame for long (1000 polygons of 256 vertices: 65
+/// configurations rather than 2^20, which took minutes).
+inline constexpr double kMaxEdgeCheckWork = 1 << 24;
 /// The evaluations one bisection check of this world may make: kMaxBisectionEvaluations, or
-/// fewer where kMaxEdgeCheckWork runs out first (at least 128).
+/// fewer where kMaxEdgeCheckWork runs out first (at least 16: past 2^20 units a configuration,
+/// more than kMaxEdgeCheckWork).
 int bisection_evaluation_limit(const CollisionWorld& world);
 
 /// What one step of an edge checker did. t, q, eta and free describe the configuration of an

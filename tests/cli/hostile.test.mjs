@@ -52,6 +52,8 @@ test('min-grid across a thin wall among 999 others: answered from few configurat
   assert.ok(r.evaluations < r.min_grid, `${r.evaluations} configurations for N = ${r.min_grid}`);
   const brute = json('check', file, '--from', '0.01,0.5', '--to', '0.99,0.52', '--checker', `grid:${r.min_grid}`);
   assert.equal(brute.collision, true, 'that grid does see the wall');
+  const one_less = json('check', file, '--from', '0.01,0.5', '--to', '0.99,0.52', '--checker', `grid:${r.min_grid - 1}`);
+  assert.equal(one_less.collision, false, 'and the grid of one configuration less does not');
   fails(/--min-grid: gave up after \d+ configurations/, 'check', file, '--from', '0.01,0.5', '--to', '0.99,0.52',
         '--min-grid', '--max', '100000', '--max-work', '100000');
 });

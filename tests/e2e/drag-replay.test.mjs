@@ -5,7 +5,7 @@
 // (which may stop short of the end: the new scene's run can take more steps).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { withPage, worldToPage, waitFrames, keys, api, screenshot, hold } from './lib/harness.mjs';
+import { withPage, worldToPage, waitFrames, keys, api, screenshot, hold, chord } from './lib/harness.mjs';
 
 const DISK = { type: 'disk', center: [0.5, 0.5], radius: 0.1 };
 const SCENE = { version: 1, start: [0.05, 0.05], goal: [0.95, 0.95], obstacles: [DISK] };
@@ -191,4 +191,38 @@ test('the torus lesson: a drag out and back keeps the planner; a press beside a 
   assert.deepEqual((await api(page, 'get_scene')).start, scene.start, 'the marker did not jump to the cursor');
   assert.equal(s.prm.planner_builds, before.prm.planner_builds, 'and the run was not restarted');
   assert.equal(s.prm.steps, before.prm.steps);
+}));
+
+// Issue 21: a finished run in the torus lesson, an obstacle dragged over the start arm (the start
+// in collision ends every replay at step 1 while it is there) and on: the run comes back to its
+// step after the drag, and Ctrl+Z gives back the run from before it, not a run of one step.
+test('the torus lesson: a drag across the start keeps the student\'s step; undo brings the run back',
+  () => withPage({ viewport: { width: 1280, height: 800 } }, async ({ page }) => {
+  await api(page, 'select_lesson', { id: 'torus' });
+  await api(page, 'run');
+  const before = await api(page, 'state');
+  assert.equal(before.prm.phase, 'done');
+  await keys(page, 'v');
+  await waitFrames(page, 2);
+  const scene = await api(page, 'get_scene');
+  const disk = scene.obstacles[0];
+  // Over link 1 of the start pose (theta1 = 0.2 from the base at (0.5, 0.5), 0.25 long), then away.
+  const elbow = [0.5 + 0.25 * Math.cos(0.2) * 0.6, 0.5 + 0.25 * Math.sin(0.2) * 0.6];
+  const [from, over, away] = await worldToPage(page, [disk.center, elbow, [0.9, 0.95]], 'workspace');
+  await hold(page, from, over, { steps: 4, frames: 2 });
+  const crossing = await api(page, 'state');
+  assert.equal(crossing.q_free !== undefined, true);
+  assert.ok(crossing.prm.steps <= 2, `over the start arm the run ends at once (step ${crossing.prm.steps})`);
+  await page.mouse.move(away.x, away.y, { steps: 4 });
+  await waitFrames(page, 3);
+  await page.mouse.up();
+  await waitFrames(page, 3);
+  const after = await api(page, 'state');
+  assert.ok(after.prm.steps === before.prm.steps || after.prm.phase === 'done', `back at the student's step: ${after.prm.steps}`);
+  assert.ok(after.prm.steps > 2, 'not the one-step run of the frames over the start');
+  await chord(page, 'Control', 'z');
+  const undone = await api(page, 'state');
+  assert.deepEqual(await api(page, 'get_scene'), scene, 'the drag undone');
+  assert.equal(undone.prm.steps, before.prm.steps, 'the whole run is back');
+  assert.equal(undone.prm.roadmap_hash, before.prm.roadmap_hash);
 }));

@@ -74,6 +74,11 @@ test('the same scenes through setScene and import-like API calls: refused with t
     assert.match(why, /workspace: (each side must be at least 0\.001|one side may be at most 100 times)/);
   }
   assert.deepEqual(await api(page, 'get_scene'), before);
+  // Parameters priced in a light scene do not carry over to a dense one: 20000 samples among 50
+  // bands of 256 vertices (7.7e9 units) is refused as a scene, the parameters stay.
+  await api(page, 'set_params', { params: { samples: 20000 } });
+  assert.match(await refusal(page, 'setScene', BANDS), /^with these parameters this scene is too much for the lab: 20000 samples .* 4e\+09 units/);
+  assert.deepEqual(await api(page, 'get_scene'), before);
   // A request nested 100000 deep, written by hand (JSON.stringify would not): refused, no trap.
   const deep = await page.evaluate(() => {
     const m = window.cspacelab.module;
@@ -107,7 +112,8 @@ test('heavy links: refused by the budgets with the reason, or run in slices the 
   // grid:1000000 with 2000 samples (no load event in 150 s): the work budget refuses the checker.
   {
     const { ctx, page, errors } = await open(browser, url, '?lesson=step-prm&samples=2000&checker=grid:1000000');
-    assert.match((await api(page, 'status')).notice, /checker "grid:1000000" \(2000 samples with k:10 and grid:1000000 mean about .* of work in this scene .* the lab takes at most 4e\+09 units/);
+    assert.match((await api(page, 'status')).notice,
+                 /checker "grid:1000000" \((2000 samples with k:10 and grid:1000000 mean about .* of work in this scene .* the lab takes at most 4e\+09 units|checker: one edge check with grid:1000000 means about .* the lab does at most 2e\+07 units at once)/);
     assert.equal((await api(page, 'state')).params.checker, 'bisection');
     assert.deepEqual(errors, []);
     await ctx.close();
