@@ -332,7 +332,12 @@ void App::playback_controls() {
 void App::shortcuts() {
   const ImGuiIO& io = ImGui::GetIO();
   if (lesson_->busy() && !io.WantTextInput && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) lesson_->cancel_work();
-  if (io.WantTextInput || !lesson_->steppable() || io.KeyCtrl || io.KeyAlt) return;
+  if (io.WantTextInput || io.KeyCtrl || io.KeyAlt) return;
+  // F: every view of the lesson back to its whole rectangle (after zooming and panning).
+  for (ImWchar c : io.InputQueueCharacters)
+    if (c == 'f' || c == 'F')
+      for (auto& [name, view] : ctx_.views) view->reset_view();
+  if (!lesson_->steppable()) return;
   for (ImWchar c : io.InputQueueCharacters) {
     if (c == ' ') ctx_.playback.playing = !ctx_.playback.playing && !lesson_->finished();
     if (c == '.') lesson_->step_forward();

@@ -23,8 +23,9 @@ struct LabContext {
   EventLog log;
   std::string notice;          ///< one line shown prominently (a refused edit, a warning)
   double notice_until = 0.0;   ///< ImGui time after which it fades
-  /// The lesson's views by name ("workspace", "cspace"), for the JS API's coordinate queries.
-  std::map<std::string, const WorkspaceView*> views;
+  /// The lesson's views by name ("workspace", "cspace"), for the JS API's coordinate queries and
+  /// the F key (fit the view).
+  std::map<std::string, WorkspaceView*> views;
 
   /// Shows a one-line notice for a few seconds.
   void notify(const std::string& text, double seconds = 5.0);

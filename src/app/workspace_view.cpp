@@ -14,6 +14,8 @@ constexpr float kMargin = 36.0f;  // room for the axis labels
 }
 
 void WorkspaceView::begin(const char* id, ImVec2 size, const Vec2& world_min, const Vec2& world_max) {
+  // A scene of another size (an import, a link): the whole of it, not the old zoom on it.
+  if (world_min != world_min_ || world_max != world_max_) reset_view();
   world_min_ = world_min;
   world_max_ = world_max;
   canvas_min_ = ImGui::GetCursorScreenPos();
@@ -97,8 +99,13 @@ void WorkspaceView::draw_grid(const char* x_label, const char* y_label) const {
   for (int i = 0; i < 64 && step * pixels_per_unit < 12.0; ++i) step *= 2.0;
   const double major = step * 5.0;
   const double most_lines = 2.0 + static_cast<double>(std::max(canvas_max_.x - canvas_min_.x, canvas_max_.y - canvas_min_.y)) / 6.0;
+  // The part of the world rectangle on the canvas: zoomed in, lines outside it are not counted
+  // (or a 1 x 1 workspace at zoom 10 would have more lines than the cap, and none drawn).
+  const Vec2 seen_a = to_world(canvas_min_), seen_b = to_world(canvas_max_);
   for (int axis = 0; axis < 2; ++axis) {
-    const double a0 = world_min_[axis], a1 = world_max_[axis];
+    const double a0 = std::max(world_min_[axis], std::min(seen_a[axis], seen_b[axis]));
+    const double a1 = std::min(world_max_[axis], std::max(seen_a[axis], seen_b[axis]));
+    if (!(a0 <= a1)) continue;
     const double first = std::ceil(a0 / step);
     const double count = std::floor((a1 - first * step) / step + 1e-9) + 1.0;  // lines in [a0, a1]
     if (!(count >= 1.0) || count > most_lines) continue;
@@ -121,6 +128,16 @@ void WorkspaceView::draw_grid(const char* x_label, const char* y_label) const {
     }
   }
   dl->AddRect(ImVec2(lo.x, hi.y), ImVec2(hi.x + 1, lo.y + 1), theme::kFrame, 0.0f, 0, 1.0f);
+  if (zoom_ != 1.0 || pan_ != Vec2(0, 0)) {
+    // Zoomed or panned: say how to get the whole picture back.
+    const char* hint = "F: fit the view";
+    ImFont* small = fonts().small;
+    const float size = small->FontSize * ImGui::GetIO().FontGlobalScale;
+    const ImVec2 ts = small->CalcTextSizeA(size, 1e9f, 0.0f, hint);
+    const ImVec2 at(canvas_max_.x - ts.x - 8.0f, canvas_min_.y + 4.0f);
+    dl->AddRectFilled(ImVec2(at.x - 4, at.y - 1), ImVec2(at.x + ts.x + 4, at.y + ts.y + 1), theme::rgba(255, 255, 255, 220), 3.0f);
+    dl->AddText(small, size, at, theme::kLabel, hint);
+  }
   // Axis names beside the frame.
   ImFont* font = fonts().small;
   const float fs = font->FontSize * ImGui::GetIO().FontGlobalScale;

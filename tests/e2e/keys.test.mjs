@@ -52,3 +52,35 @@ test('Ctrl chords count whatever else lands in their frame, and nothing else mak
   await send(ctrlUp);
   assert.equal(await count(), 1);
 }));
+
+// Issue 21: F, which the keys dialog lists, fits the view again after zooming and panning (it did
+// nothing), and a scene of another size is shown whole.
+test('F fits the view after zooming and panning; a scene of another size is shown whole',
+  () => withPage({ viewport: { width: 1280, height: 800 } }, async ({ page }) => {
+  await page.evaluate(() => window.cspacelab.selectLesson('step-prm'));
+  await waitFrames(page, 2);
+  const fitted = await page.evaluate(() => window.cspacelab.view([[0, 0], [1, 1]]));
+  const box = await page.locator('canvas').boundingBox();
+  const [x, y] = fitted.points[1];
+  await page.mouse.move(box.x + x - 40, box.y + y + 40);
+  await waitFrames(page, 2);
+  for (let i = 0; i < 4; ++i) { await page.mouse.wheel(0, -200); await waitFrames(page, 1); }
+  await page.mouse.down({ button: 'right' });
+  await page.mouse.move(box.x + x + 60, box.y + y + 90, { steps: 4 });
+  await page.mouse.up({ button: 'right' });
+  await waitFrames(page, 2);
+  const zoomed = await page.evaluate(() => window.cspacelab.view([[0, 0], [1, 1]]));
+  assert.ok(zoomed.scale > fitted.scale * 1.5, `zoomed in: ${fitted.scale} -> ${zoomed.scale}`);
+  await page.keyboard.press('f');
+  await waitFrames(page, 2);
+  assert.deepEqual(await page.evaluate(() => window.cspacelab.view([[0, 0], [1, 1]])), fitted, 'F fits it again');
+  // Zoomed again, then a larger scene: shown whole.
+  for (let i = 0; i < 3; ++i) { await page.mouse.wheel(0, -200); await waitFrames(page, 1); }
+  await page.evaluate(() => window.cspacelab.setScene({ version: 1, workspace: { min: [0, 0], max: [4, 2] }, goal: [4, 2] }));
+  await waitFrames(page, 2);
+  const wide = await page.evaluate(() => window.cspacelab.view([[0, 0], [4, 2]]));
+  for (const [px, py] of wide.points) {
+    assert.ok(px >= wide.canvas_min[0] && px <= wide.canvas_max[0] && py >= wide.canvas_min[1] && py <= wide.canvas_max[1],
+              `corner (${px}, ${py}) on the canvas`);
+  }
+}));
