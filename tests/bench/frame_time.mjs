@@ -3,9 +3,12 @@
 //   node tests/bench/frame_time.mjs torus-drag                 the torus lesson while an obstacle is dragged
 //   node tests/bench/frame_time.mjs potential                  P13's rectangle descending (its slice's heat
 //                                                              map, 97 x 97 potentials, redone every step)
+//   node tests/bench/frame_time.mjs heavy-link                 links that start long runs (issue 27): every
+//                                                              frame from the first until the run is done
 // Headless Chromium renders WebGL with SwiftShader, on the CPU: the browser's frame interval
 // here is far above what a GPU gives. The app's own CPU time per frame (building the UI and
 // its geometry, before GL) is the figure that carries over to students' machines.
+import zlib from 'node:zlib';
 import { startServer, launchBrowser, openLab, api, worldToPage, waitFrames } from '../e2e/lib/harness.mjs';
 
 const scenario = process.argv[2] || 'roadmap';
@@ -71,6 +74,48 @@ try {
     await page.mouse.up();
     const moved = (await api(page, 'get_scene')).obstacles[0].center;
     console.log(`(the disk moved to ${moved.map((v) => v.toFixed(3))})`);
+  } else if (scenario === 'heavy-link') {
+    // 50 nested C-shaped bands of 128 vertices whose boxes all hold the workspace (every
+    // configuration costs its 6451 units), and the bundled wall-gap with the most the lab takes.
+    const band = (i) => {
+      const o = 0.01 + i * 0.004, w = 0.002;
+      const c = [[1 - o, o], [o, o], [o, 1 - o], [1 - o, 1 - o], [1 - o, 1 - o - w], [o + w, 1 - o - w], [o + w, o + w], [1 - o, o + w]];
+      const vertices = [];
+      for (let k = 0; k < 8; ++k)
+        for (let j = 0; j < 16; ++j)
+          vertices.push([0, 1].map((a) => Math.round((c[k][a] + (c[(k + 1) % 8][a] - c[k][a]) * j / 16) * 1e6) / 1e6));
+      return { type: 'polygon', vertices };
+    };
+    const bands = { version: 1, start: [0.3, 0.3], goal: [0.7, 0.7], obstacles: Array.from({ length: 50 }, (_, i) => band(i)) };
+    const zipped = 'z.' + zlib.deflateRawSync(Buffer.from(JSON.stringify(bands)), { level: 9 }).toString('base64')
+      .replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
+    for (const [name, query] of [['50 bands, 4000 samples', `scene=${zipped}&samples=4000`],
+                                 ['wall-gap, 20000 samples, k = 50', 'scene=wall-gap&samples=20000&neighbors=k:50']]) {
+      const t0 = Date.now();
+      await page.goto(url + `?lesson=step-prm&${query}&steps=99999999`);
+      // Every frame from the first one the page shows until the run is done, counted in the page.
+      const run = await page.evaluate(() => new Promise((resolve) => {
+        const times = [];
+        let seen = false;  // the link's run has started (the shell applies it after the first frames)
+        const tick = (t) => {
+          times.push(t);
+          const api = window.cspacelab;
+          const busy = api && api.status().busy;
+          seen = seen || !!busy;
+          if (api && !busy && (seen || times.length > 600)) {
+            const s = api.status();
+            resolve({ intervals: times.slice(1).map((x, i) => x - times[i]), cpu_max: s.cpu_ms.max, ui_max: s.ui_ms.max,
+                      frames: s.frames, steps: api.state().steps });
+          } else requestAnimationFrame(tick);
+        };
+        requestAnimationFrame(tick);
+      }));
+      const sorted = run.intervals.slice().sort((a, b) => a - b);
+      console.log(`${name}: done in ${Date.now() - t0} ms after navigation, ${run.steps} steps, ${run.frames} frames; ` +
+                  `browser frame intervals: median ${sorted[sorted.length >> 1].toFixed(1)} ms, ` +
+                  `max ${sorted.at(-1).toFixed(1)} ms; app CPU per frame max ${run.cpu_max.toFixed(1)} ms ` +
+                  `(building the UI: max ${run.ui_max.toFixed(1)} ms)`);
+    }
   } else if (scenario === 'potential') {
     await api(page, 'select_lesson', { id: 'potential' });
     // Slow steps, so the descent (and its turning slice) lasts the whole measurement.
