@@ -1,6 +1,7 @@
 #pragma once
 // Drawing what the core computes: robots at a configuration, roadmaps (coloured by connected
 // component, edges split where they cross a seam of the torus), paths.
+#include <algorithm>
 #include <vector>
 
 #include "app/workspace_view.hpp"
@@ -26,6 +27,9 @@ void draw_roadmap(const WorkspaceView& view, const Space& space, const Roadmap& 
 /// caller bumps whenever the roadmap or its colours change) or the view's transform changes;
 /// otherwise the previous frame's vertices are copied. A static 5000-node roadmap then costs a
 /// memcpy a frame.
+/// The most roadmap edges drawn: past it, an even subset, and the view says so.
+inline constexpr std::size_t kMaxDrawnEdges = 50000;
+
 class RoadmapLayer {
  public:
   void draw(const WorkspaceView& view, const Space& space, const Roadmap& roadmap,
@@ -39,14 +43,17 @@ class RoadmapLayer {
 };
 
 /// The version a RoadmapLayer should draw: `version` itself, but while long work grows the
-/// roadmap (`busy`) at most a new one every quarter second. Rebuilding the layer's geometry
+/// roadmap (`busy`) at most a new one every quarter second (or 8 frames, if longer). Rebuilding the layer's geometry
 /// costs a pass over every edge, and a run to the end changes it every frame (20000 samples and
 /// k = 50: 300-700 ms a frame in the headless browser, where the work itself took 25).
 class RedrawThrottle {
  public:
   long long operator()(long long version, bool busy) {
     const double now = ImGui::GetTime();
-    if (busy && drawn_ >= 0 && now - at_ < 0.25) return drawn_;
+    // Where frames are slow (a huge roadmap in software WebGL), less often still: a rebuild at
+    // most every 8 frames.
+    const double interval = std::max(0.25, 8.0 * static_cast<double>(ImGui::GetIO().DeltaTime));
+    if (busy && drawn_ >= 0 && now - at_ < interval) return drawn_;
     drawn_ = version;
     at_ = now;
     return version;
