@@ -7,6 +7,7 @@
 #include "app/drag_replay.hpp"
 #include "app/draw.hpp"
 #include "app/js_api.hpp"
+#include "app/planner_lesson.hpp"
 #include "app/planner_session.hpp"
 #include "app/lesson.hpp"
 #include "app/prm_controls.hpp"
@@ -19,7 +20,7 @@ namespace {
 
 using json = nlohmann::json;
 
-class StepPrmLesson : public Lesson {
+class StepPrmLesson : public PlannerLesson {
  public:
   StepPrmLesson() : scene_(bundled_scene("prm-demo")), session_(scene_, params_) {}
 
@@ -133,23 +134,9 @@ class StepPrmLesson : public Lesson {
 
   json params() const override { return prm_params_json(params_); }
 
-  bool steppable() const override { return true; }
-  long steps() const override { return prm().steps(); }
-  bool finished() const override { return prm().done(); }
-  void step_forward() override { session_.step_forward(); }
-  void step_back() override {
-    if (session_.wanted_steps() > 0) session_.step_back();
-  }
-  void finish_phase() override { session_.finish_phase(); }
-  void run_all() override { session_.run_to_end(); }
-  void reset() override { session_.reset(); }
-  void run_to(long steps) override { session_.go_to(steps); }
-  bool busy() const override { return session_.busy(); }
-  void work(double ms) override { session_.work(ms); }
-  void cancel_work() override { session_.cancel(); }
-  double progress() const override { return session_.progress(); }
-  std::string busy_text() const override { return session_.job_text(); }
-  long wanted_steps() const override { return session_.wanted_steps(); }
+ protected:
+  PlannerSession& planner() override { return session_; }
+  const PlannerSession& planner() const override { return session_; }
 
  private:
   const Prm& prm() const { return session_.prm(); }

@@ -17,6 +17,7 @@
 #include "app/field_draw.hpp"
 #include "app/js_api.hpp"
 #include "app/lesson.hpp"
+#include "app/planner_lesson.hpp"
 #include "app/planner_session.hpp"
 #include "app/prm_controls.hpp"
 #include "app/prm_text.hpp"
@@ -38,7 +39,7 @@ const ImU32 kCObstacle = theme::rgba(96, 96, 104, 210);
 
 enum class Exercise { None, Around, Shrink };
 
-class TorusLesson : public Lesson {
+class TorusLesson : public PlannerLesson {
  public:
   TorusLesson() : scene_(bundled_scene("arm-2link")), session_(scene_, params_) {
     q_ = scene_.start;
@@ -238,23 +239,9 @@ class TorusLesson : public Lesson {
     return p;
   }
 
-  bool steppable() const override { return true; }
-  long steps() const override { return prm().steps(); }
-  bool finished() const override { return prm().done(); }
-  void step_forward() override { session_.step_forward(); }
-  void step_back() override {
-    if (session_.wanted_steps() > 0) session_.step_back();
-  }
-  void finish_phase() override { session_.finish_phase(); }
-  void run_all() override { session_.run_to_end(); }
-  void reset() override { session_.reset(); }
-  void run_to(long steps) override { session_.go_to(steps); }
-  bool busy() const override { return session_.busy(); }
-  void work(double ms) override { session_.work(ms); }
-  void cancel_work() override { session_.cancel(); }
-  double progress() const override { return session_.progress(); }
-  std::string busy_text() const override { return session_.job_text(); }
-  long wanted_steps() const override { return session_.wanted_steps(); }
+ protected:
+  PlannerSession& planner() override { return session_; }
+  const PlannerSession& planner() const override { return session_; }
 
  private:
   const Prm& prm() const { return session_.prm(); }
