@@ -79,9 +79,10 @@ void PlannerSession::step_back() {
 void PlannerSession::go_to(long steps) {
   steps = std::max(0L, steps);
   desired_ = steps;
-  if (rebuilding()) {
-    // The new scene's replay is what the student will see: it heads for this step instead (from
-    // the start again if it is already past it).
+  if (next_ && (rebuilding() || steps < prm().steps())) {
+    // A replay is running (for a new scene, or back in this one) and still the way there: it
+    // heads for this step instead, from the start again only if it is already past it (a step
+    // back pressed again keeps the replay's progress).
     if (steps < next_->prm->steps()) next_ = make_run(next_->world, next_->scene, params_);
     target_ = steps;
     from_ = next_->prm->steps();
