@@ -23,7 +23,11 @@ class CSpaceLabApi {
       m.stringToUTF8(request, ptr, size);
       response = JSON.parse(m.UTF8ToString(m._csl_call(ptr)));
     } finally {
-      m._free(ptr);
+      try {
+        m._free(ptr);
+      } catch {
+        // the wasm trapped in the call: the error that matters is that one, not this
+      }
     }
     if (!response.ok) throw new Error(response.error);
     return response.result;

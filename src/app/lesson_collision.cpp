@@ -39,7 +39,9 @@ class CollisionLesson : public Lesson {
 
   void panel(LabContext& ctx) override {
     ImGui::TextWrapped("Is the straight line from p to q free? Test N configurations along it, or prove "
-                       "it piece by piece: a piece is free when λ(p, q) ≤ η(p) + η(q), with p and q its ends.");
+                       "it piece by piece: a piece is free when λ(p, q) < η(p) + η(q), with p and q its ends. "
+                       "(The handout writes ≤; here touching an obstacle is a collision, and with equality the "
+                       "line may touch one where the two balls meet.)");
     int robot = arm_ ? 1 : 0;
     if (ImGui::RadioButton("point robot (P12)", &robot, 0)) load(false);
     ui::flow(ui::toggle_width("2-link arm"));
@@ -298,7 +300,7 @@ class CollisionLesson : public Lesson {
         }
         char text[96];
         std::snprintf(text, sizeof text, "λ = %.3f %s η₀ + η₁ = %.3f", e.lambda,
-                      e.lambda <= e.eta0 + e.eta1 ? "≤" : ">", e.eta0 + e.eta1);
+                      e.kind == EdgeEvent::Kind::Certify ? "<" : "≥", e.eta0 + e.eta1);
         view_.draw_label(Vec2(scene_.workspace_min.x(), scene_.workspace_max.y()), text, theme::kCurrent, ImVec2(6, 6));
       }
     }
@@ -386,13 +388,13 @@ class CollisionLesson : public Lesson {
     if (e.kind == EdgeEvent::Kind::Evaluate && e.t0 == e.t1)
       std::snprintf(buf, sizeof buf, "endpoint t = %g: η = %.4f (%s)", e.t, e.eta, e.free ? "free" : "in collision");
     else if (e.kind == EdgeEvent::Kind::Evaluate)
-      std::snprintf(buf, sizeof buf, "piece [%.4g, %.4g]: λ = %.4f > η₀ + η₁ = %.4f, midpoint t = %.4g has η = %.4f: %s",
+      std::snprintf(buf, sizeof buf, "piece [%.4g, %.4g]: λ = %.4f ≥ η₀ + η₁ = %.4f, midpoint t = %.4g has η = %.4f: %s",
                     e.t0, e.t1, e.lambda, e.eta0 + e.eta1, e.t, e.eta, e.free ? "free, split" : "in collision");
     else if (e.kind == EdgeEvent::Kind::Certify)
-      std::snprintf(buf, sizeof buf, "piece [%.4g, %.4g]: λ = %.4f ≤ η₀ + η₁ = %.4f: proven free", e.t0, e.t1,
+      std::snprintf(buf, sizeof buf, "piece [%.4g, %.4g]: λ = %.4f < η₀ + η₁ = %.4f: proven free", e.t0, e.t1,
                     e.lambda, e.eta0 + e.eta1);
     else
-      std::snprintf(buf, sizeof buf, "piece [%.4g, %.4g] too short to split: taken as a collision", e.t0, e.t1);
+      std::snprintf(buf, sizeof buf, "piece [%.4g, %.4g] too short to split (or past the check's limit): taken as a collision", e.t0, e.t1);
     ctx.log.add(shown_, buf);
   }
 
