@@ -26,7 +26,8 @@ const CONTROL = /[\u0000-\u001f\u007f-\u009f]/;
 const DECIMAL = /^-?(\d+(\.\d*)?|\.\d+)([eE][-+]?\d{1,3})?$/;
 const SCENE_ERRORS = [/ is more than a link may carry$/, /^".*" is neither a bundled scene nor an encoded one/s,
   /^is not base64url$/, /^is more than [\d.]+ [KM]B once decompressed$/, /^is not valid compressed data$/,
-  /^is more than [\d.]+ [KM]B$/, /^is not UTF-8 text$/, /^is not JSON$/, /^is not a JSON object$/];
+  /^is more than [\d.]+ [KM]B$/, /^is not UTF-8 text$/, /^is not JSON$/, /^is not a JSON object$/,
+  /^is nested more than \d+ levels deep$/];
 const VALUE_ERRORS = [/^not a number$/, /^out of range$/, /^not true or false$/, /^not \d+ comma-separated numbers$/,
   /^cannot be set from a link$/];
 
@@ -169,7 +170,11 @@ async function checkLink(s) {
     assert.equal(keys.filter((x) => x === k).length, 1, `${k} read although given ${keys.filter((x) => x === k).length} times`);
     if (k === 'scene' && !NAME.test(v)) await checkScene(v);
     else if (k === 'steps' && STEPS.test(v)) assert.ok(Number.isSafeInteger(Number(v)) && Number(v) >= 0);
-    else if (k === 'id') assert.equal(typeof ID.test(v), 'boolean');
+    else if (k === 'id') {
+      // The autosave slot's name, against the documented rule written out without a regex.
+      const rule = v.length >= 1 && v.length <= 40 && [...v].every((c) => /^[A-Za-z0-9_-]$/.test(c));
+      assert.equal(ID.test(v), rule, `id ${JSON.stringify(v)}`);
+    }
     else if (!RESERVED.has(k)) for (const t of TEMPLATES) checkValue(v, t);
   }
   assert.equal(typeof U.hasState(values), 'boolean');
