@@ -251,19 +251,9 @@ class AnalysisLesson : public Lesson {
     if (too_dense_)
       return "this scene is too dense for an experiment here (its reference run alone would hold the page): "
              "use cspacelab experiment";
-    PrmParams run;
-    // The experiment's first step: its reference run and Monte Carlo volume, as measure() sized
-    // them for this scene.
-    run.samples = reference_samples_;
-    double total = expected_prm_work(*world_, run).total() +
-                   (4096.0 + static_cast<double>(volume_samples_)) * world_->evaluation_cost();
-    double largest = total;
-    for (int n : counts) {
-      run.samples = n;
-      const double work = expected_prm_work(*world_, run).total();
-      largest = std::max(largest, work);
-      total += trials * work;
-    }
+    // Its first step, the reference run and Monte Carlo volume, as measure() sized them.
+    const ExperimentWork w = expected_experiment_work(*world_, experiment_params(reference_samples_, volume_samples_, counts, trials));
+    const double largest = w.largest_run, total = w.total;
     if (largest > 10 * kLabFrameWork)
       return "a run of " + std::to_string(std::max(reference_samples_, *std::max_element(counts.begin(), counts.end()))) +
              " samples means " + work_text(largest) + " in this scene; the lab runs at most " +
@@ -282,12 +272,7 @@ class AnalysisLesson : public Lesson {
     experiment_.reset();
     reference_path_.clear();
     dim_ = world_->space().dim();
-    ExperimentParams p;
-    p.sample_counts = {1};
-    p.trials = 1;
-    p.seed = 1;
-    p.reference_samples = 3000;
-    p.volume_samples = 50000;
+    ExperimentParams p = experiment_params(3000, 50000, {1}, 1);
     too_dense_ = false;
     reference_samples_ = p.reference_samples;
     volume_samples_ = p.volume_samples;
@@ -296,10 +281,7 @@ class AnalysisLesson : public Lesson {
       return;
     }
     const auto work = [&](int reference, long volume) {
-      PrmParams run;
-      run.samples = reference;
-      // The reference run, its path's proven clearance (up to 4096 cuts) and the volume.
-      return expected_prm_work(*world_, run).total() + (4096.0 + static_cast<double>(volume)) * world_->evaluation_cost();
+      return expected_experiment_work(*world_, experiment_params(reference, volume, {}, 0)).reference;
     };
     const double budget = 5 * kLabFrameWork;
     if (const double full = work(p.reference_samples, p.volume_samples); full > budget) {
@@ -328,13 +310,20 @@ class AnalysisLesson : public Lesson {
   }
 
   void start_experiment() {
+    // The reference run and volume as measure() sized them for this scene.
+    experiment_ = std::make_unique<Experiment>(*world_, scene_.start, scene_.goal,
+                                               experiment_params(reference_samples_, volume_samples_, sample_counts_, trials_));
+  }
+
+  // The lesson's experiments: PRM's defaults (k = 10, bisection), seed 1.
+  static ExperimentParams experiment_params(int reference, long volume, std::vector<int> counts, int trials) {
     ExperimentParams p;
-    p.sample_counts = sample_counts_;
-    p.trials = trials_;
+    p.sample_counts = std::move(counts);
+    p.trials = trials;
     p.seed = 1;
-    p.reference_samples = reference_samples_;  // as measure() sized them for this scene
-    p.volume_samples = volume_samples_;
-    experiment_ = std::make_unique<Experiment>(*world_, scene_.start, scene_.goal, p);
+    p.reference_samples = reference;
+    p.volume_samples = volume;
+    return p;
   }
 
   void bound_panel(LabContext& ctx) {

@@ -229,12 +229,12 @@ class CollisionLesson : public Lesson {
     bisection_ = check_edge(*world_, EdgeCheckerSpec::parse("bisection"), scene_.start, scene_.goal, true);
     // No grid can see a collision the exact check rules out: skip the search then.
     // Within one frame's work (the search tests few configurations, but a dense scene makes each
-    // one dear).
+    // one dear), from the bisection check above rather than a second one.
     min_grid_.reset();
     min_grid_exhausted_ = false;
     if (bisection_.collision) {
       const long long budget = std::max(64LL, static_cast<long long>(kLabFrameWork / world_->evaluation_cost()));
-      const MinGridResult r = min_grid_search(*world_, scene_.start, scene_.goal, kInteractiveMaxGrid, budget);
+      const MinGridResult r = min_grid_search(*world_, scene_.start, scene_.goal, kInteractiveMaxGrid, budget, &bisection_);
       min_grid_ = r.n;
       min_grid_exhausted_ = r.exhausted;
     }

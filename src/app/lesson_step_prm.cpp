@@ -143,7 +143,8 @@ class StepPrmLesson : public PlannerLesson {
   // A new planner for the current scene and parameters, replayed to `steps` (an edit keeps the
   // student at the same step, with the same seed).
   void rebuild(long steps) {
-    keep_within_budget(params_, CollisionWorld(scene_));  // a smaller workspace makes the same r cover more pairs
+    // A smaller workspace makes the same r cover more pairs.
+    keep_within_budget(params_, robot_space(scene_.robot, scene_.workspace_min, scene_.workspace_max));
     session_.rebuild(scene_, params_, steps);
     labels_at_ = -1;
     logged_through_ = -1;

@@ -250,7 +250,7 @@ class TorusLesson : public PlannerLesson {
   // After any change of the scene or the parameters: the planner (replayed to `steps`) and the
   // exact C-obstacle map.
   void rebuild(long steps) {
-    keep_within_budget(params_, CollisionWorld(scene_));
+    keep_within_budget(params_, robot_space(scene_.robot, scene_.workspace_min, scene_.workspace_max));
     session_.rebuild(scene_, params_, steps);
     rebuild_map();
     logged_version_ = -1;

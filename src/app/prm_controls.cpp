@@ -28,9 +28,9 @@ bool over_pairs_budget(const PrmParams& p, const Space& space) {
 
 double max_radius(const Space& space, int samples) { return radius_for_pairs(space, samples, kLabMaxPairs); }
 
-bool keep_within_budget(PrmParams& p, const CollisionWorld& world) {
-  if (p.neighbors.kind != NeighborRule::Kind::Radius || !over_pairs_budget(p, world.space())) return false;
-  p.neighbors.radius = max_radius(world.space(), p.samples);
+bool keep_within_budget(PrmParams& p, const Space& space) {
+  if (p.neighbors.kind != NeighborRule::Kind::Radius || !over_pairs_budget(p, space)) return false;
+  p.neighbors.radius = max_radius(space, p.samples);
   return true;
 }
 
@@ -74,7 +74,7 @@ std::string prm_budget_problem(const PrmParams& p, const CollisionWorld& world) 
 
 std::string scene_budget_problem(PrmParams params, const Scene& scene) {
   const CollisionWorld world(scene);
-  keep_within_budget(params, world);
+  keep_within_budget(params, world.space());
   const std::string why = prm_budget_problem(params, world);
   return why.empty() ? why : "with these parameters this scene is too much for the lab: " + why;
 }
@@ -143,7 +143,7 @@ bool prm_controls(PrmParams& p, const CollisionWorld& world, LabContext& ctx, in
   }
   ImGui::PopItemWidth();
   p.checker.resolution = std::max(p.checker.resolution, 2);
-  changed |= keep_within_budget(p, world);  // more samples may have made r too large
+  changed |= keep_within_budget(p, space);  // more samples may have made r too large
   if (changed) {
     // Past the work budget (many samples, a fine checker, a heavy scene): the change is undone.
     if (const std::string why = prm_budget_problem(p, world); !why.empty()) {

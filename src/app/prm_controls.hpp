@@ -15,7 +15,7 @@ namespace csl::app {
 /// The largest r the lab allows with `samples` samples in `space` (infinite: any r).
 double max_radius(const Space& space, int samples);
 /// Lowers a radius rule's r to max_radius() (after n or the scene changed): true if it did.
-bool keep_within_budget(PrmParams& params, const CollisionWorld& world);
+bool keep_within_budget(PrmParams& params, const Space& space);
 
 /// What is wrong with planning with `params` in `world` in the lab, or "": the budgets of
 /// core/work.hpp, the same for the panel, links and the API. More candidate pairs than

@@ -48,15 +48,7 @@ void require_total_budget(const Space& space, const PlannerOptions& options, con
 // The runs' work together (work.hpp): each run is held to --max-work, and all of them, with the
 // reference run and its Monte Carlo volume, to `limit` (--max-total-work).
 void require_total_work(const CollisionWorld& world, const ExperimentParams& params, double limit) {
-  PrmParams run;
-  run.neighbors = params.neighbors;
-  run.checker = params.checker;
-  run.samples = params.reference_samples;
-  double total = expected_prm_work(world, run).total() + static_cast<double>(params.volume_samples) * world.evaluation_cost();
-  for (int n : params.sample_counts) {
-    run.samples = n;
-    total += params.trials * expected_prm_work(world, run).total();
-  }
+  const double total = expected_experiment_work(world, params).total;
   if (total <= limit) return;
   throw UsageError("the experiment's runs mean about " + work_text(total) + " of work in all, more than the " +
                    work_text(limit) + " an experiment may take (--max-total-work, default 10 x --max-work); " +

@@ -197,13 +197,14 @@ EdgeCheckResult check_edge(const CollisionWorld& world, const EdgeCheckerSpec& s
 }
 
 MinGridResult min_grid_search(const CollisionWorld& world, const Config& p, const Config& q, int max_n,
-                              long long max_evaluations) {
+                              long long max_evaluations, const EdgeCheckResult* exact) {
   MinGridResult result;
   // An edge the exact check proves free has no configuration in collision, so no grid finds
   // one: answered at once.
-  const EdgeCheckResult exact = check_edge(world, {EdgeCheckerSpec::Kind::Bisection, 0}, p, q);
-  result.evaluations = exact.evaluations;
-  if (!exact.collision) return result;
+  const EdgeCheckResult own = exact ? EdgeCheckResult{} : check_edge(world, {EdgeCheckerSpec::Kind::Bisection, 0}, p, q);
+  if (!exact) exact = &own;
+  result.evaluations = exact->evaluations;
+  if (!exact->collision) return result;
 
   // [0, 1] cut at configurations evaluated so far, all free (one in collision ends the search).
   // A gap between two cuts is dropped once their balls prove it free, as bisection certifies a

@@ -152,8 +152,6 @@ class EdgeChecker {
   bool certifies(double lambda, double eta0, double eta1) const {
     return lambda * (1.0 + 1e-12) + 2.0 * slack_ < eta0 + eta1;
   }
-  /// The configurations this checker's bisection evaluates at most per edge.
-  int max_evaluations() const { return max_evaluations_; }
   bool done() const { return verdict_ != Verdict::Pending; }
   /// One unit of work (see the file comment); call only while !done(). The event stays valid
   /// until the next step() or reset() (no copy per step: roadmaps check millions of edges).
@@ -226,9 +224,10 @@ struct MinGridResult {
 /// so far do not already prove it free (their clearances' balls cover it, as bisection
 /// certifies pieces): the same answer as checking every grid in full (max_n^2 / 2 evaluations,
 /// minutes for max_n = 100000 and a thin wall), from about one evaluation per N near each
-/// collision. Stops with `exhausted` after `max_evaluations`.
+/// collision. Stops with `exhausted` after `max_evaluations`. `exact`: the bisection check of
+/// p -> q (check_edge()), where the caller has done it already; else it is done here.
 MinGridResult min_grid_search(const CollisionWorld& world, const Config& p, const Config& q, int max_n,
-                              long long max_evaluations);
+                              long long max_evaluations, const EdgeCheckResult* exact = nullptr);
 /// min_grid_search() without a limit: its N.
 std::optional<int> min_grid_resolution(const CollisionWorld& world, const Config& p, const Config& q, int max_n);
 

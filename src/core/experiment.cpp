@@ -8,11 +8,6 @@
 #include "core/graph.hpp"
 
 namespace csl {
-namespace {
-// Clearances computed along an edge of the reference path to prove its least clearance: the
-// path has a few dozen edges, and this budget lets the halving reach its 1% rule.
-constexpr int kProofPieces = 4096;
-}  // namespace
 
 double proven_edge_clearance(const CollisionWorld& world, const Config& p, const Config& q, double eta_p,
                              double eta_q, int max_evaluations) {
@@ -161,7 +156,7 @@ void Experiment::run_reference() {
         if (!m.path.empty()) m.path_length += space.distance(m.path.back(), q);
         m.path.push_back(q);
       }
-      m.workspace_clearance = std::max(0.0, proven_path_clearance(*world_, m.path, kProofPieces));
+      m.workspace_clearance = std::max(0.0, proven_path_clearance(*world_, m.path, kReferenceProofEvaluations));
       return m;
     };
     ExperimentReference best = measure(prm.path());

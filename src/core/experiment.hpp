@@ -16,6 +16,10 @@
 
 namespace csl {
 
+/// Clearances computed along the reference path to prove its least clearance: the path has a
+/// few dozen edges, and this budget lets the halving reach its 1% rule.
+inline constexpr int kReferenceProofEvaluations = 4096;
+
 struct ExperimentParams {
   std::vector<int> sample_counts;  ///< the n to test, e.g. {50, 100, 200}
   int trials = 20;                 ///< T runs per n

@@ -51,6 +51,24 @@ WorkEstimate expected_prm_work(const CollisionWorld& world, const PrmParams& par
   return w;
 }
 
+ExperimentWork expected_experiment_work(const CollisionWorld& world, const ExperimentParams& params) {
+  PrmParams run;
+  run.neighbors = params.neighbors;
+  run.checker = params.checker;
+  run.samples = params.reference_samples;
+  ExperimentWork w;
+  w.reference = expected_prm_work(world, run).total() +
+                (kReferenceProofEvaluations + static_cast<double>(params.volume_samples)) * world.evaluation_cost();
+  w.largest_run = w.total = w.reference;
+  for (int n : params.sample_counts) {
+    run.samples = n;
+    const double one = expected_prm_work(world, run).total();
+    w.largest_run = std::max(w.largest_run, one);
+    w.total += params.trials * one;
+  }
+  return w;
+}
+
 double expected_check_work(const CollisionWorld& world, const EdgeCheckerSpec& spec, const Config& p, const Config& q) {
   const double cost = world.evaluation_cost();
   if (spec.kind == EdgeCheckerSpec::Kind::Bisection) return bisection_evaluation_limit(world) * cost;

@@ -9,6 +9,7 @@
 // from the parameters alone, deterministic (no clocks), and on the high side for the edges
 // (the ends' clearances settle most roadmap edges without a configuration: measured on the
 // bundled scenes at n = 2000, bisection evaluates 0.1 to 1.5 configurations per edge).
+#include "core/experiment.hpp"
 #include "core/prm.hpp"
 
 namespace csl {
@@ -55,6 +56,16 @@ struct WorkEstimate {
 };
 /// What PRM with `params` on `world` is expected to cost.
 WorkEstimate expected_prm_work(const CollisionWorld& world, const PrmParams& params);
+
+/// An experiment's expected work (experiment.hpp), in units.
+struct ExperimentWork {
+  double reference = 0;    ///< its first step: the reference run, the proof of its path's clearance, the volume
+  double largest_run = 0;  ///< its dearest single step (the first, or a run of the largest n)
+  double total = 0;        ///< all of it: the first step and `trials` runs for each n
+};
+/// What Experiment(world, ..., params) is expected to cost, with params.reference_samples as
+/// given (the experiment's own default applies when it is 0: pass Experiment::params()).
+ExperimentWork expected_experiment_work(const CollisionWorld& world, const ExperimentParams& params);
 
 /// One check of the edge p -> q with `spec` from scratch (the ends evaluated too): its expected
 /// units. Grid and step checkers: exactly their configurations times the evaluation cost;
