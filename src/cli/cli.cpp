@@ -15,7 +15,8 @@ namespace {
 
 const Command* const kCommands[] = {&kValidateCommand, &kCheckCommand,      &kDistanceCommand,   &kCspaceOfCommand,
                                     &kPlanCommand,     &kBoundCommand,      &kVisibilityCommand, &kExperimentCommand,
-                                    &kCspaceCommand,   &kPotentialCommand,  &kDescendCommand};
+                                    &kCspaceCommand,   &kPotentialCommand,  &kDescendCommand,    &kHomeworkCommand,
+                                    &kExerciseCommand};
 
 const Command* find_command(const std::string& name) {
   for (const Command* c : kCommands)

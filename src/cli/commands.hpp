@@ -31,6 +31,8 @@ extern const Command kExperimentCommand;
 extern const Command kCspaceCommand;
 extern const Command kPotentialCommand;
 extern const Command kDescendCommand;
+extern const Command kHomeworkCommand;
+extern const Command kExerciseCommand;
 
 /// Reads a whole file; UsageError naming the path if it cannot be read.
 std::string read_file(const std::string& path);
