@@ -1,5 +1,7 @@
 #pragma once
 // Small widgets the panels share.
+#include <string>
+
 #include "imgui.h"
 
 namespace csl::app::ui {
@@ -26,6 +28,33 @@ inline void section(const char* title) {
   ImGui::Spacing();
   ImGui::TextDisabled("%s", title);
   ImGui::Separator();
+}
+
+/// Wrapped text that breaks only at spaces: ImGui's own wrapping also breaks after '.', which
+/// split numbers ("0." and "9832" on two lines).
+inline void text_flow(const std::string& text) {
+  // Lines of one paragraph as close as ImGui's wrapped text sets them; the usual gap after it.
+  ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(ImGui::GetStyle().ItemSpacing.x, 0.0f));
+  const float space = ImGui::CalcTextSize(" ").x;
+  const float right = ImGui::GetContentRegionMax().x;
+  bool first = true;
+  for (std::size_t i = 0; i <= text.size();) {
+    std::size_t j = text.find(' ', i);
+    if (j == std::string::npos) j = text.size();
+    if (j > i) {
+      const std::string word = text.substr(i, j - i);
+      const float width = ImGui::CalcTextSize(word.c_str()).x;
+      if (!first) {
+        ImGui::SameLine(0.0f, space);
+        if (ImGui::GetCursorPosX() + width > right) ImGui::NewLine();
+      }
+      ImGui::TextUnformatted(word.c_str());
+      first = false;
+    }
+    i = j + 1;
+  }
+  ImGui::PopStyleVar();
+  ImGui::Dummy(ImVec2(0.0f, 0.0f));
 }
 
 }  // namespace csl::app::ui

@@ -74,9 +74,10 @@ test(`monkey: ${EVENTS_PER_LESSON} random events per lesson, seed ${SEED}`,
       const status = await api(page, 'status');
       assert.ok(status.frames > 0 && typeof status.lesson === 'string');
       const snapshot = await api(page, 'snapshot');
-      // Every lesson has a scene but the notation lesson, whose work is its parameters: a lesson
-      // that lost its scene must not skip the round trip below unnoticed.
-      assert.equal(snapshot.scene === null, status.lesson === 'notation', `${status.lesson}: a scene where one belongs`);
+      // Every lesson has a scene but the notation and distances lessons, whose work is their
+      // parameters: a lesson that lost its scene must not skip the round trip below unnoticed.
+      assert.equal(snapshot.scene === null, ['notation', 'distances'].includes(status.lesson),
+                   `${status.lesson}: a scene where one belongs`);
       if (snapshot.scene) {
         const scene = await api(page, 'get_scene');
         assert.equal(typeof JSON.stringify(scene), 'string');
@@ -138,7 +139,7 @@ test(`monkey links and imports: hostile families, seed ${SEED}`, () => withBrows
     () => 'seed=' + pick(['1', '9007199254740993', 'nan']),
     () => 'grid_n=' + pick(['100000', '100001', '3']),
   ];
-  const lessons = ['step-prm', 'torus', 'collision', 'potential', 'analysis', 'notation', 'nosuch'];
+  const lessons = ['step-prm', 'torus', 'collision', 'potential', 'analysis', 'notation', 'distances', 'nosuch'];
   const LINKS = Number(process.env.CSPACELAB_MONKEY_LINKS || 24);
   const ctx = await browser.newContext({ viewport: { width: 1280, height: 800 } });
   const page = await ctx.newPage();
