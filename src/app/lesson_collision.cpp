@@ -5,6 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "app/bundled_scenes.hpp"
 #include "app/draw.hpp"
@@ -20,6 +24,24 @@ namespace csl::app {
 namespace {
 
 using json = nlohmann::json;
+
+// Numbers beside a row of points that must not overlap: each takes a span of x, and one that
+// would touch a span already taken is left out. Filled newest first, so the step being shown
+// always has its number (the table beside lists them all).
+class LabelRow {
+ public:
+  // Whether [x, x + width] is free (with a margin); if so, it is taken.
+  bool take(float x, float width) {
+    for (const auto& [a, b] : taken_)
+      if (x < b + kMargin && x + width + kMargin > a) return false;
+    taken_.emplace_back(x, x + width);
+    return true;
+  }
+
+ private:
+  static constexpr float kMargin = 3.0f;
+  std::vector<std::pair<float, float>> taken_;
+};
 
 constexpr int kInteractiveMaxGrid = 2000;
 
@@ -38,10 +60,9 @@ class CollisionLesson : public Lesson {
   }
 
   void panel(LabContext& ctx) override {
-    ImGui::TextWrapped("Is the straight line from p to q free? Test N configurations along it, or prove "
-                       "it piece by piece: a piece is free when λ(p, q) < η(p) + η(q), with p and q its ends. "
-                       "(The handout writes ≤; here touching an obstacle is a collision, and with equality the "
-                       "line may touch one where the two balls meet.)");
+    ImGui::TextWrapped("Is the line from p to q free? Test N configurations on it, or prove it piece by piece: "
+                       "a piece is free when λ < η₀ + η₁, the clearances at its ends. (The handout's ≤ would let "
+                       "the line touch an obstacle; here touching is a collision.)");
     int robot = arm_ ? 1 : 0;
     if (ImGui::RadioButton("point robot (P12)", &robot, 0)) load(false);
     ui::flow(ui::toggle_width("2-link arm"));
@@ -72,6 +93,9 @@ class CollisionLesson : public Lesson {
     if (changed) recompute();
 
     ui::section("Fixed resolution");
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("N configurations, p and q included: t = i/(N−1)");
+    ImGui::PopStyleColor();
     ImGui::PushItemWidth(-60.0f);
     // At most what one frame may check in this scene (200 unless it is very dense).
     const int most = std::max(2, std::min(200, static_cast<int>(kLabFrameWork / world_->evaluation_cost())));
@@ -84,12 +108,13 @@ class CollisionLesson : public Lesson {
     else
       ImGui::Text("N = %d: no collision (and there is none)", grid_n_);
     if (min_grid_)
-      ImGui::Text("smallest N that sees it: %d", *min_grid_);
+      ImGui::TextWrapped("smallest N that sees it: %d (p, q counted)", *min_grid_);
     else if (bisection_.collision && min_grid_exhausted_)
       ImGui::TextWrapped("the smallest N that sees it is more than the lab searches in this scene (use cspacelab "
                          "check --min-grid)");
     else if (bisection_.collision)
       ImGui::Text("no N up to %d sees it", kInteractiveMaxGrid);
+    interior_count_lines();
 
     ui::section("Exact: bisection");
     ImGui::Text("step %d of %zu", shown_, bisection_.trace.size());
@@ -151,6 +176,8 @@ class CollisionLesson : public Lesson {
             {"grid_n", grid_n_},
             {"grid", grid},
             {"min_grid", min_grid_ ? json(*min_grid_) : json(nullptr)},
+            {"min_grid_interior", min_interior_ ? json(*min_interior_) : json(nullptr)},
+            {"min_grid_one_end", one_end() ? json(*one_end()) : json(nullptr)},
             {"bisection", bisection},
             {"shown", shown_}};
   }
@@ -232,17 +259,48 @@ class CollisionLesson : public Lesson {
     // one dear), from the bisection check above rather than a second one.
     min_grid_.reset();
     min_grid_exhausted_ = false;
+    min_interior_.reset();
+    min_interior_exhausted_ = false;
     if (bisection_.collision) {
       const long long budget = std::max(64LL, static_cast<long long>(kLabFrameWork / world_->evaluation_cost()));
       const MinGridResult r = min_grid_search(*world_, scene_.start, scene_.goal, kInteractiveMaxGrid, budget, &bisection_);
       min_grid_ = r.n;
       min_grid_exhausted_ = r.exhausted;
+      // The same question without p and q: the handout does not say whether they count.
+      const MinGridResult inner =
+          min_interior_grid_search(*world_, scene_.start, scene_.goal, kInteractiveMaxGrid, budget, &bisection_);
+      min_interior_ = inner.n;
+      min_interior_exhausted_ = inner.exhausted;
     }
+    ends_free_ = world_->is_free(scene_.start) && world_->is_free(scene_.goal);
     shown_ = std::min(shown_, static_cast<int>(bisection_.trace.size()));
     logged_ = -1;
   }
 
   Config at(double t) const { return world_->space().interpolate(scene_.start, scene_.goal, t); }
+
+  // Counting one end only (t = i/N, i = 1..N, or 0..N-1): with p and q free that is the grid
+  // of N + 1 with both ends, less the free end, so one fewer than min_grid.
+  std::optional<int> one_end() const {
+    if (!ends_free_ || !min_grid_) return std::nullopt;
+    return *min_grid_ - 1;
+  }
+
+  // The smallest N without the endpoints, and why the handout's answer may be 3, 4 or 5.
+  void interior_count_lines() {
+    if (min_interior_)
+      ImGui::TextWrapped("without p, q (t = i/(N+1)): %d", *min_interior_);
+    else if (bisection_.collision && min_interior_exhausted_)
+      ImGui::TextWrapped("without p and q: more than the lab searches here");
+    else if (bisection_.collision)
+      ImGui::Text("without p and q: no N up to %d", kInteractiveMaxGrid);
+    if (min_grid_ && min_interior_ && one_end()) {
+      ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+      ImGui::TextWrapped("So the handout's N is %d with both ends, %d with one (t = i/N), %d with neither.",
+                         *min_grid_, *one_end(), *min_interior_);
+      ImGui::PopStyleColor();
+    }
+  }
 
   void draw_checks() {
     ImDrawList* dl = view_.draw_list();
@@ -283,10 +341,19 @@ class CollisionLesson : public Lesson {
       const ImU32 c = e.free ? theme::kFree : theme::kHit;
       if (arm_) draw_robot(view_, robot, e.q, theme::with_alpha(c, i + 1 == shown_ ? 255 : 110), 2.0f);
       else dl->AddCircleFilled(view_.to_screen(Vec2(e.q[0], e.q[1])), 5.0f, c, 16);
-      if (!arm_) {
-        char text[16];
-        std::snprintf(text, sizeof text, "%d", number);
-        view_.draw_label(Vec2(e.q[0], e.q[1]), text, theme::kLabel, ImVec2(-4, 6));
+    }
+    if (!arm_) {
+      // Their numbers under them, newest first, none over another (p -> q need not be level,
+      // but along it the numbers' spans in x are what collide).
+      LabelRow row;
+      for (int i = shown_ - 1; i >= 0; --i) {
+        const EdgeEvent& e = bisection_.trace[static_cast<std::size_t>(i)];
+        if (e.kind != EdgeEvent::Kind::Evaluate) continue;
+        const std::string text = std::to_string(number--);
+        const float w = ImGui::CalcTextSize(text.c_str()).x;
+        const ImVec2 at = view_.to_screen(Vec2(e.q[0], e.q[1]));
+        // Below the grid's ticks (9 px either side of the line), not over them.
+        if (row.take(at.x - 0.5f * w, w)) view_.draw_label(Vec2(e.q[0], e.q[1]), text.c_str(), theme::kLabel, ImVec2(-0.5f * w, 10));
       }
     }
     if (shown_ > 0) {
@@ -321,7 +388,7 @@ class CollisionLesson : public Lesson {
     for (double t : {0.0, 0.25, 0.5, 0.75, 1.0}) {
       char text[16];
       std::snprintf(text, sizeof text, "%g", t);
-      dl->AddText(ImVec2(x(t) - 6, row2 + 12), theme::kLabel, text);
+      dl->AddText(ImVec2(x(t) - 0.5f * ImGui::CalcTextSize(text).x, row2 + 12), theme::kLabel, text);
     }
     // The true colliding part of the edge (fine sampling), for reference.
     for (const EdgeEvent& e : grid_.trace)
@@ -336,23 +403,36 @@ class CollisionLesson : public Lesson {
       if (e.kind != EdgeEvent::Kind::Evaluate) continue;
       ++number;
       dl->AddCircleFilled(ImVec2(x(e.t), row2), 5.0f, e.free ? theme::kFree : theme::kHit, 12);
-      char text[16];
-      std::snprintf(text, sizeof text, "%d", number);
-      dl->AddText(ImVec2(x(e.t) - 3, row2 - 22), theme::kLabel, text);
+    }
+    // Their numbers above them, centred, newest first and never over one another: deep in a
+    // bisection the midpoints come closer than a number is wide.
+    LabelRow labels;
+    for (int i = shown_ - 1; i >= 0; --i) {
+      const EdgeEvent& e = bisection_.trace[static_cast<std::size_t>(i)];
+      if (e.kind != EdgeEvent::Kind::Evaluate) continue;
+      const std::string text = std::to_string(number--);
+      const float w = ImGui::CalcTextSize(text.c_str()).x;
+      const float left = std::clamp(x(e.t) - 0.5f * w, o.x, o.x + size.x - w);
+      if (labels.take(left, w)) dl->AddText(ImVec2(left, row2 - 22), theme::kLabel, text.c_str());
     }
   }
 
   void trace_table() {
+    // As tall as its rows, up to 180 px and what is left of the panel (at least four rows): then
+    // it scrolls, following the newest row. So the panel itself need not scroll to show it.
+    const float row = ImGui::GetTextLineHeight() + 2.0f * ImGui::GetStyle().CellPadding.y + 1.0f;
+    const float rows = row * static_cast<float>(std::max(shown_, 1) + 1) + 4.0f;
+    const float height = std::min({180.0f, rows, std::max(5.0f * row, ImGui::GetContentRegionAvail().y - 2.0f)});
     if (!ImGui::BeginTable("trace", 5, ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_BordersInnerH,
-                           ImVec2(0, 180)))
+                           ImVec2(0, height)))
       return;
     ImGui::TableSetupScrollFreeze(0, 1);
     // Weighted: a certified piece's eta column holds a sum ("0.260+0.754").
-    ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_WidthStretch, 0.5f);
+    ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_WidthStretch, 0.45f);
     ImGui::TableSetupColumn("t", ImGuiTableColumnFlags_WidthStretch, 1.0f);
-    ImGui::TableSetupColumn("η", ImGuiTableColumnFlags_WidthStretch, 1.7f);
-    ImGui::TableSetupColumn("λ", ImGuiTableColumnFlags_WidthStretch, 1.1f);
-    ImGui::TableSetupColumn("piece", ImGuiTableColumnFlags_WidthStretch, 1.2f);
+    ImGui::TableSetupColumn("η", ImGuiTableColumnFlags_WidthStretch, 1.5f);
+    ImGui::TableSetupColumn("λ", ImGuiTableColumnFlags_WidthStretch, 0.95f);
+    ImGui::TableSetupColumn("piece", ImGuiTableColumnFlags_WidthStretch, 1.7f);
     ImGui::TableHeadersRow();
     int number = 0;
     for (int i = 0; i < shown_; ++i) {
@@ -407,6 +487,9 @@ class CollisionLesson : public Lesson {
   EdgeCheckResult grid_, bisection_;
   std::optional<int> min_grid_;
   bool min_grid_exhausted_ = false;
+  std::optional<int> min_interior_;  // the same, N configurations strictly between p and q
+  bool min_interior_exhausted_ = false;
+  bool ends_free_ = true;
   int shown_ = 0;
   int logged_ = -1;
 };

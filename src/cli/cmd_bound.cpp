@@ -36,7 +36,9 @@ int run_bound(Args& args, std::ostream& os) {
                       {"covering_balls", count_json(t.covering_balls)},
                       {"boundary_balls", count_json(t.boundary_balls)},
                       {"sigma", t.sigma},
+                      {"rate", t.rate},
                       {"interior_bound", t.interior_bound},
+                      {"interior_samples_for_target", t.interior_samples_for(goal)},
                       {"failure_bound", t.bound},
                       {"vacuous", t.vacuous},
                       {"samples_for_target", t.samples_for(goal)},
@@ -78,7 +80,9 @@ const Command kBoundCommand{
     "N balls per axis within min(r,1)/2 of a face.\n"
     "  -> {\"balls\": m, \"balls_per_axis\": N, \"covering_balls\": ceil(sqrt(d)/r)^d (enough to\n"
     "      cover every point), \"boundary_balls\": those reaching out of the cube, \"sigma\",\n"
-    "      \"interior_bound\", \"failure_bound\", \"vacuous\", \"samples_for_target\", \"target\"}\n"
+    "      \"rate\": sigma r^d, \"interior_bound\", \"interior_samples_for_target\": the handout's\n"
+    "      n = ln(m / p) / (sigma r^d) at which interior_bound reaches p, \"failure_bound\",\n"
+    "      \"vacuous\", \"samples_for_target\": the n at which failure_bound reaches p, \"target\"}\n"
     "The failure bound is not clamped to 1: a value above 1 is reported as vacuous.\n",
     run_bound};
 

@@ -125,6 +125,8 @@ double TilingBound::bound_at(double n) const {
   return std::exp(top + std::log(sum));
 }
 
+double TilingBound::interior_bound_at(double n) const { return balls * std::exp(-rate * n); }
+
 double TilingBound::samples_for(double target) const {
   require(target > 0.0 && target < 1.0, "target probability must be in (0, 1)");
   if (bound_at(0.0) <= target) return 0.0;
@@ -194,6 +196,58 @@ double visibility_probability(double x1, double y1, double gap) {
   // falls out of the clipping.
   const double right = clamped_linear_integral(hi, s_hi, 0.5) - clamped_linear_integral(lo, s_lo, 0.5);
   return 0.5 + right;  // the left half [0, 1/2] x [0, 1] is convex: all of it is visible
+}
+
+const char* p9_exit_name(P9Ray::Exit exit) {
+  switch (exit) {
+    case P9Ray::Exit::Top: return "top";
+    case P9Ray::Exit::Bottom: return "bottom";
+    case P9Ray::Exit::Right: break;
+  }
+  return "right edge";
+}
+
+namespace {
+
+// The ray y = a + s t over t in [0, 1/2] (x = 1/2 + t), a in [0, 1]: where it leaves the right
+// half and the area below it there, by the closed form of its case (see P9Ray).
+P9Ray p9_ray(double a, double s) {
+  P9Ray r;
+  r.start = a;
+  r.slope = s;
+  const double end = a + 0.5 * s;  // its height at x = 1
+  if (end > 1.0) {  // rises through the top first: s > 0 here
+    r.exit = P9Ray::Exit::Top;
+    r.exit_x = 0.5 + (1.0 - a) / s;
+    r.exit_y = 1.0;
+    r.area_under = 0.5 - (1.0 - a) * (1.0 - a) / (2.0 * s);
+  } else if (end < 0.0) {  // falls through the bottom first: s < 0 here
+    r.exit = P9Ray::Exit::Bottom;
+    r.exit_x = 0.5 + a / -s;
+    r.exit_y = 0.0;
+    r.area_under = a * a / (2.0 * -s);
+  } else {
+    r.exit = P9Ray::Exit::Right;
+    r.exit_x = 1.0;
+    r.exit_y = end;
+    r.area_under = (a + end) / 4.0;
+  }
+  return r;
+}
+
+}  // namespace
+
+P9Breakdown p9_breakdown(double x1, double y1, double gap) {
+  require_p9(x1, y1, gap);
+  // The same rays as visibility_probability(), each integrated by the formula of its case.
+  const double lo = 0.5 - 0.5 * gap, hi = 0.5 + 0.5 * gap, run = 0.5 - x1;
+  P9Breakdown b;
+  b.upper = p9_ray(hi, (hi - y1) / run);
+  b.lower = p9_ray(lo, (lo - y1) / run);
+  b.right_area = b.upper.area_under - b.lower.area_under;
+  b.probability = b.left_area + b.right_area;
+  b.case_name = std::string(p9_exit_name(b.upper.exit)) + "/" + p9_exit_name(b.lower.exit);
+  return b;
 }
 
 bool visible_in_p9(double x1, double y1, double gap, double x2, double y2) {

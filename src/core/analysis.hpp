@@ -3,6 +3,7 @@
 // tiling argument, the whole-space tiling bound, the visibility probability of the
 // wall-with-a-gap square, and confidence intervals for measured failure rates.
 #include <cstdint>
+#include <string>
 
 #include "core/rng.hpp"
 
@@ -47,6 +48,11 @@ struct TilingBound {
   double samples_for(double target) const;
   /// The bound after n samples (what `bound` holds for the n it was made with).
   double bound_at(double n) const;
+  /// The handout's version (interior_bound): samples for m exp(-sigma r^d n) to reach
+  /// `target` in (0, 1), n = ln(m / target) / (sigma r^d). Fewer than samples_for(target).
+  double interior_samples_for(double target) const { return FailureBound::samples_to_reach(balls, rate, target); }
+  /// interior_bound after n samples.
+  double interior_bound_at(double n) const;
 
   // Per axis, the balls within reach of a face (`edge_per_axis`) and the rate a ball reaching
   // out along j axes is at least hit with, `hit_rate` / 2^j (see the derivation).
@@ -60,6 +66,35 @@ TilingBound whole_space_tiling_bound(double clearance, int d, double samples);
 /// (x1, y1), x1 < 1/2: the whole left half (convex, so all of it is seen) plus the part of the
 /// right half inside the cone through the opening, clipped to the square.
 double visibility_probability(double x1, double y1, double gap);
+
+/// One ray of P9's cone, from (x1, y1) through an end of the opening, over the right half
+/// x = 1/2 + t, t in [0, 1/2]: y = start + slope t, until it leaves through an edge.
+struct P9Ray {
+  enum class Exit { Top, Right, Bottom };
+  double start = 0;        ///< a: where it crosses the wall, 1/2 -+ gap/2
+  double slope = 0;        ///< s = (a - y1) / (1/2 - x1)
+  Exit exit = Exit::Right; ///< the edge of the right half it leaves through (a corner: Right)
+  double exit_x = 1, exit_y = 0;  ///< where
+  /// The area of the right half below it (the ray clamped to [0, 1]), by the exit's formula:
+  ///   Right (a + s/2 in [0, 1]):  (a + e) / 4,  e = a + s/2 (a trapezoid)
+  ///   Top (a + s/2 > 1):          1/2 - (1 - a)^2 / (2 s)  (the half minus the triangle above)
+  ///   Bottom (a + s/2 < 0):       a^2 / (2 |s|)  (a triangle)
+  double area_under = 0;
+};
+/// "top", "right edge" or "bottom".
+const char* p9_exit_name(P9Ray::Exit exit);
+
+/// P9 worked out by cases: which edges the cone's two rays leave the right half through,
+/// and the areas that give the probability, p = 1/2 + (area under the upper ray - area under
+/// the lower one). Equals visibility_probability() (up to rounding); throws as it does.
+struct P9Breakdown {
+  P9Ray upper, lower;       ///< through (1/2, 1/2 + gap/2) and (1/2, 1/2 - gap/2)
+  double left_area = 0.5;   ///< all of the left half is visible (it is convex)
+  double right_area = 0;    ///< the visible part of the right half: upper - lower area_under
+  double probability = 0;   ///< left_area + right_area
+  std::string case_name;    ///< "<upper exit>/<lower exit>", e.g. "top/right edge"
+};
+P9Breakdown p9_breakdown(double x1, double y1, double gap);
 
 /// Whether (x2, y2) is visible from (x1, y1) in the P9 square (x1 < 1/2).
 bool visible_in_p9(double x1, double y1, double gap, double x2, double y2);

@@ -265,6 +265,41 @@ MinGridResult min_grid_search(const CollisionWorld& world, const Config& p, cons
   return result;
 }
 
+MinGridResult min_interior_grid_search(const CollisionWorld& world, const Config& p, const Config& q, int max_n,
+                                       long long max_evaluations, const EdgeCheckResult* exact) {
+  const EdgeCheckResult own = exact ? EdgeCheckResult{} : check_edge(world, {EdgeCheckerSpec::Kind::Bisection, 0}, p, q);
+  if (!exact) exact = &own;
+  MinGridResult result;
+  result.evaluations = exact->evaluations;
+  if (!exact->collision || max_n < 1) return result;  // nothing on the edge to see
+  if (world.is_free(p) && world.is_free(q)) {
+    // N interior points are grid N + 2 without its (free) ends: same t, same verdict.
+    const int widest = max_n > std::numeric_limits<int>::max() - 2 ? std::numeric_limits<int>::max() : max_n + 2;
+    result = min_grid_search(world, p, q, widest, max_evaluations, exact);
+    result.evaluations += 2;  // the two is_free() above
+    if (result.n) *result.n -= 2;
+    return result;
+  }
+  // An endpoint in collision: grid after grid, each t computed as step_grid() computes it.
+  const Space& space = world.space();
+  const Config delta = space.difference(p, q);
+  for (int n = 1; n <= max_n; ++n) {
+    const double last = static_cast<double>(n) + 1.0;
+    for (int i = 1; i <= n; ++i) {
+      if (result.evaluations >= max_evaluations) {
+        result.exhausted = true;
+        return result;
+      }
+      ++result.evaluations;
+      if (!world.is_free(space.along(p, delta, static_cast<double>(i) / last))) {
+        result.n = n;
+        return result;
+      }
+    }
+  }
+  return result;
+}
+
 std::optional<int> min_grid_resolution(const CollisionWorld& world, const Config& p, const Config& q, int max_n) {
   return min_grid_search(world, p, q, max_n, std::numeric_limits<long long>::max()).n;
 }

@@ -228,6 +228,15 @@ struct MinGridResult {
 /// p -> q (check_edge()), where the caller has done it already; else it is done here.
 MinGridResult min_grid_search(const CollisionWorld& world, const Config& p, const Config& q, int max_n,
                               long long max_evaluations, const EdgeCheckResult* exact = nullptr);
+/// The same question with the endpoints not counted: the smallest N in [1, max_n] for which
+/// the N configurations strictly between p and q, t_i = i / (N + 1), i = 1..N, include one in
+/// collision (P12 read as "N points between p and q"). Those t are the grid checker's
+/// i / (N' - 1) for N' = N + 2 to the bit, so with p and q free the answer is
+/// min_grid_search()'s N' - 2 (and searched that way); with an endpoint in collision, where
+/// that grid stops at once, the interior grids are tested one by one. The same
+/// `max_evaluations` and `exact` as min_grid_search().
+MinGridResult min_interior_grid_search(const CollisionWorld& world, const Config& p, const Config& q, int max_n,
+                                       long long max_evaluations, const EdgeCheckResult* exact = nullptr);
 /// min_grid_search() without a limit: its N.
 std::optional<int> min_grid_resolution(const CollisionWorld& world, const Config& p, const Config& q, int max_n);
 

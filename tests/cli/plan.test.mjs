@@ -173,3 +173,59 @@ test('plan and experiment refuse a run with too many candidate pairs, and say wh
         'experiment', GAP, '--trials', '1000', '--samples-list', '2000', '--k', '10', '--max-pairs', '80020');
   fails(/--max-total-pairs: must be at least 1/, ...small, '--max-total-pairs', '0');
 });
+
+// P8 as the handout has it: m = N^d balls put into the path bound, and the n it needs.
+test('bound --tiling: the handout\'s rate and samples for the target', () => {
+  for (const [r, d, p] of [[0.042, 2, 0.01], [0.1, 3, 0.05], [0.2, 6, 1e-4]]) {
+    const t = json('bound', '--tiling', '--clearance', String(r), '--dim', String(d), '--samples', '1000', '--target', String(p));
+    const perAxis = Math.ceil(Math.max(2, Math.sqrt(d)) / r);
+    const ball = d === 2 ? Math.PI : d === 3 ? 4 / 3 * Math.PI : Math.PI ** 3 / 6;  // mu(B_1) in R^d
+    const rate = ball / 2 ** d * r ** d;
+    assert.equal(t.balls_per_axis, perAxis);
+    assert.equal(t.balls, perAxis ** d);
+    assert.ok(Math.abs(t.rate / rate - 1) < 1e-13, `rate ${t.rate} against ${rate}`);
+    const n = Math.log(perAxis ** d / p) / rate;
+    assert.ok(Math.abs(t.interior_samples_for_target / n - 1) < 1e-12, `${t.interior_samples_for_target} against ${n}`);
+    // The refined bound, faces counted, needs more.
+    assert.ok(t.samples_for_target > t.interior_samples_for_target);
+  }
+});
+
+// P9 by cases: the rays' exits, their areas and the probability, against a polygon clipped here.
+test('visibility: the breakdown by cases', () => {
+  const clipArea = (x1, y1, gap) => {
+    let poly = [[0.5, 0], [1, 0], [1, 1], [0.5, 1]];
+    const clip = (through, sign) => {
+      const side = ([x, y]) => sign * ((through[0] - x1) * (y - y1) - (through[1] - y1) * (x - x1));
+      const out = [];
+      poly.forEach((a, i) => {
+        const b = poly[(i + 1) % poly.length], sa = side(a), sb = side(b);
+        if (sa >= 0) out.push(a);
+        if (sa * sb < 0) out.push([a[0] + sa / (sa - sb) * (b[0] - a[0]), a[1] + sa / (sa - sb) * (b[1] - a[1])]);
+      });
+      poly = out;
+    };
+    clip([0.5, 0.5 + gap / 2], -1);
+    clip([0.5, 0.5 - gap / 2], 1);
+    let twice = 0;
+    poly.forEach((a, i) => { const b = poly[(i + 1) % poly.length]; twice += a[0] * b[1] - b[0] * a[1]; });
+    return Math.abs(twice) / 2;
+  };
+  const cases = [[0.3, 0.2, 0.2, 'top/right edge'], [0.45, 0.5, 0.2, 'top/bottom'], [0.45, 0.95, 0.1, 'bottom/bottom'],
+                 [0.1, 0.5, 0.1, 'right edge/right edge'], [0.4, 0.1, 0.2, 'top/top'], [0.2, 0.9, 0.4, 'right edge/bottom']];
+  for (const [x, y, gap, name] of cases) {
+    const v = json('visibility', '--x', String(x), '--y', String(y), '--gap', String(gap), '--trials', '0');
+    const b = v.breakdown;
+    assert.equal(b.case, name, `(${x}, ${y}) gap ${gap}`);
+    assert.equal(b.upper.exit + '/' + b.lower.exit, name);
+    assert.equal(b.left_area, 0.5);
+    assert.ok(Math.abs(b.upper.slope - (0.5 + gap / 2 - y) / (0.5 - x)) < 1e-12);
+    assert.ok(Math.abs(b.lower.slope - (0.5 - gap / 2 - y) / (0.5 - x)) < 1e-12);
+    assert.ok(Math.abs(b.right_area - clipArea(x, y, gap)) < 1e-12, `${b.right_area} against ${clipArea(x, y, gap)}`);
+    assert.ok(Math.abs(b.probability - v.exact) < 1e-12);
+  }
+  // With samples, the same breakdown beside the estimate.
+  const withMc = json('visibility', '--x', '0.3', '--y', '0.2', '--gap', '0.2', '--trials', '1000');
+  assert.equal(withMc.breakdown.case, 'top/right edge');
+  assert.equal(typeof withMc.within_ci, 'boolean');
+});

@@ -3,8 +3,12 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "core/analysis.hpp"
 #include "core/angles.hpp"
@@ -184,6 +188,150 @@ TEST_CASE("P9: exact probability and Monte Carlo agree within the interval, all 
   // About 5% of 95% intervals miss; far more would mean a biased formula.
   CHECK(outside <= cases / 8);
   MESSAGE(outside << " of " << cases << " exact values outside their 95% interval");
+}
+
+TEST_CASE("P8 as the handout has it: m = N^d balls in the path bound, and the n it needs") {
+  // r = 0.042 in the plane (about the wall-gap scene's clearance): N = ceil(2 / 0.042) = 48.
+  const auto t = csl::whole_space_tiling_bound(0.042, 2, 1000);
+  CHECK(t.per_axis == 48);
+  CHECK(t.balls == 48 * 48);
+  const double rate = csl::kPi / 4 * 0.042 * 0.042;
+  CHECK(t.rate == Approx(rate).epsilon(1e-14));
+  CHECK(t.interior_bound_at(1000) == Approx(2304 * std::exp(-rate * 1000)).epsilon(1e-13));
+  CHECK(t.interior_bound_at(1000) == t.interior_bound);
+  // n = ln(m / p) / (sigma r^d), solved by hand, and the bound there is p.
+  for (double p : {0.5, 0.01, 1e-6}) {
+    const double n = t.interior_samples_for(p);
+    CHECK(n == Approx(std::log(2304 / p) / rate).epsilon(1e-13));
+    CHECK(t.interior_bound_at(n) == Approx(p).epsilon(1e-12));
+    // The refined bound counts the faces' balls as hit less often: it needs more samples.
+    CHECK(t.samples_for(p) > n);
+  }
+  CHECK_THROWS_AS(t.interior_samples_for(0.0), std::invalid_argument);
+  CHECK_THROWS_AS(t.interior_samples_for(1.0), std::invalid_argument);
+}
+
+namespace {
+// P9's oracle, written apart from analysis.cpp: the right half [1/2, 1] x [0, 1] as a polygon,
+// clipped (Sutherland-Hodgman) to the wedge between the two lines from (x1, y1) through the
+// opening's ends, in implicit form (no slopes); the shoelace area of what is left.
+using Pt = std::array<double, 2>;
+std::vector<Pt> clip(const std::vector<Pt>& poly, Pt from, Pt through, double keep_sign) {
+  // side(v) > 0 on the kept side of the line from `from` through `through`.
+  const auto side = [&](const Pt& v) {
+    return keep_sign * ((through[0] - from[0]) * (v[1] - from[1]) - (through[1] - from[1]) * (v[0] - from[0]));
+  };
+  std::vector<Pt> out;
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const Pt a = poly[i], b = poly[(i + 1) % poly.size()];
+    const double sa = side(a), sb = side(b);
+    if (sa >= 0) out.push_back(a);
+    if ((sa > 0 && sb < 0) || (sa < 0 && sb > 0)) {
+      const double u = sa / (sa - sb);
+      out.push_back({a[0] + u * (b[0] - a[0]), a[1] + u * (b[1] - a[1])});
+    }
+  }
+  return out;
+}
+double polygon_area(const std::vector<Pt>& poly) {
+  double twice = 0;
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const Pt a = poly[i], b = poly[(i + 1) % poly.size()];
+    twice += a[0] * b[1] - b[0] * a[1];
+  }
+  return std::fabs(twice) / 2;
+}
+double p9_oracle(double x1, double y1, double gap) {
+  std::vector<Pt> right = {{0.5, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.5, 1.0}};
+  const Pt eye{x1, y1};
+  // Below the line through the top of the opening (clockwise of it, seen from the eye), above
+  // the one through its bottom.
+  right = clip(right, eye, {0.5, 0.5 + gap / 2}, -1.0);
+  right = clip(right, eye, {0.5, 0.5 - gap / 2}, +1.0);
+  return 0.5 + polygon_area(right);
+}
+// A coarse second opinion, by counting: cell centres of a k x k grid over the right half seen
+// through the opening (the segment crosses x = 1/2 within it).
+double p9_grid_count(double x1, double y1, double gap, int k) {
+  long seen = 0;
+  for (int i = 0; i < k; ++i)
+    for (int j = 0; j < k; ++j) {
+      const double x2 = 0.5 + (i + 0.5) / (2.0 * k), y2 = (j + 0.5) / k;
+      const double y = y1 + (y2 - y1) * (0.5 - x1) / (x2 - x1);
+      seen += std::fabs(y - 0.5) <= gap / 2;
+    }
+  return 0.5 + 0.5 * static_cast<double>(seen) / (static_cast<double>(k) * k);
+}
+}  // namespace
+
+TEST_CASE("P9 by cases: the rays' exits and areas, against polygon clipping, every case") {
+  // By hand: from (0.3, 0.2) through a gap of 0.2 (0.4 to 0.6), run 0.2: the upper ray has
+  // slope 2 and leaves through the top at x = 0.7; the lower slope 1, the right edge at 0.9.
+  {
+    const auto b = csl::p9_breakdown(0.3, 0.2, 0.2);
+    CHECK(b.case_name == "top/right edge");
+    CHECK(b.upper.exit == csl::P9Ray::Exit::Top);
+    CHECK(b.upper.slope == Approx(2.0));
+    CHECK(b.upper.exit_x == Approx(0.7));
+    CHECK(b.upper.area_under == Approx(0.5 - 0.16 / 4));  // 1/2 - (1 - 0.6)^2 / (2 * 2)
+    CHECK(b.lower.exit == csl::P9Ray::Exit::Right);
+    CHECK(b.lower.exit_y == Approx(0.9));
+    CHECK(b.lower.area_under == Approx((0.4 + 0.9) / 4));
+    CHECK(b.probability == Approx(0.5 + 0.46 - 0.325));
+  }
+  // Level with the opening, near the wall: both rays leave at once, the upper through the top,
+  // the lower through the bottom.
+  CHECK(csl::p9_breakdown(0.45, 0.5, 0.2).case_name == "top/bottom");
+  // High up: both fall through the bottom; the lower one's triangle a^2 / (2|s|).
+  {
+    const auto b = csl::p9_breakdown(0.45, 0.95, 0.1);
+    CHECK(b.case_name == "bottom/bottom");
+    CHECK(b.lower.area_under == Approx(0.45 * 0.45 / (2 * 10.0)));
+  }
+  CHECK(csl::p9_breakdown(0.1, 0.5, 0.1).case_name == "right edge/right edge");
+  CHECK(csl::p9_exit_name(csl::P9Ray::Exit::Right) == std::string("right edge"));
+  CHECK_THROWS_AS(csl::p9_breakdown(0.5, 0.5, 0.1), std::invalid_argument);
+  CHECK_THROWS_AS(csl::p9_breakdown(0.2, 0.5, 1.5), std::invalid_argument);
+
+  // Random points and gaps, many near the wall and with small gaps so that every pair of
+  // exits comes up: the breakdown is the oracle's area and visibility_probability().
+  csl::Rng rng(99);
+  std::map<std::string, int> seen;
+  for (int i = 0; i < 20000; ++i) {
+    const double x1 = i % 3 == 0 ? 0.5 - std::pow(rng.uniform01(), 3) * 0.5 : rng.uniform(0.0, 0.5);
+    if (!(x1 < 0.5)) continue;
+    const double y1 = rng.uniform01(), gap = i % 2 ? rng.uniform01() : std::pow(rng.uniform01(), 3);
+    const auto b = csl::p9_breakdown(x1, y1, gap);
+    CAPTURE(x1);
+    CAPTURE(y1);
+    CAPTURE(gap);
+    REQUIRE(std::fabs(b.probability - csl::visibility_probability(x1, y1, gap)) <= 1e-12);
+    REQUIRE(std::fabs(b.probability - p9_oracle(x1, y1, gap)) <= 1e-12);
+    REQUIRE(b.probability == Approx(b.left_area + b.upper.area_under - b.lower.area_under));
+    // Each ray's exit lies on the edge its case names, on its line.
+    for (const auto* r : {&b.upper, &b.lower}) {
+      REQUIRE(r->exit_x >= 0.5 - 1e-12);
+      REQUIRE(r->exit_x <= 1.0 + 1e-12);
+      REQUIRE(std::fabs(r->exit_y - (r->start + r->slope * (r->exit_x - 0.5))) <= 1e-9 * (1 + std::fabs(r->slope)));
+      if (r->exit == csl::P9Ray::Exit::Top) REQUIRE(r->exit_y == 1.0);
+      if (r->exit == csl::P9Ray::Exit::Bottom) REQUIRE(r->exit_y == 0.0);
+      if (r->exit == csl::P9Ray::Exit::Right) REQUIRE(r->exit_x == 1.0);
+    }
+    ++seen[b.case_name];
+  }
+  // The six pairs that can happen (the upper ray is never below the lower one).
+  for (const char* c : {"top/top", "top/right edge", "top/bottom", "right edge/right edge", "right edge/bottom",
+                        "bottom/bottom"}) {
+    CAPTURE(c);
+    CHECK(seen[c] > 200);
+  }
+  CHECK(seen.size() == 6);
+  // And the counting oracle, coarser, on a few of them.
+  for (const std::array<double, 3>& c : {std::array<double, 3>{0.3, 0.2, 0.2}, {0.45, 0.5, 0.2}, {0.45, 0.95, 0.1},
+                                        {0.1, 0.5, 0.1}, {0.25, 0.3, 0.1}, {0.05, 0.02, 0.6}}) {
+    CAPTURE(c[0]);  // clang 14 cannot capture a structured binding in CAPTURE's lambda
+    CHECK(std::fabs(csl::p9_breakdown(c[0], c[1], c[2]).probability - p9_grid_count(c[0], c[1], c[2], 1500)) < 2e-3);
+  }
 }
 
 TEST_CASE("Wilson intervals") {

@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <vector>
@@ -457,6 +458,98 @@ TEST_CASE("min_grid_search: a thin wall crossed at a slant, as grid after grid f
     if (r.evaluations > 20) CHECK(csl::min_grid_search(world, p, q, max_n, 10).exhausted);
   }
   CHECK(checked >= 6);
+}
+
+namespace {
+// Where the line p + t (q - p) lies in the closed disk: [t0, t1], the roots of the quadratic
+// |p + t d - c|^2 = r^2, not clipped to [0, 1] (empty: t0 > t1).
+std::array<double, 2> disk_chord(const csl::Vec2& p, const csl::Vec2& q, const csl::Disk& disk) {
+  const csl::Vec2 d = q - p, f = p - disk.center;
+  const double a = d.dot(d), b = 2 * f.dot(d), c = f.dot(f) - disk.radius * disk.radius;
+  const double disc = b * b - 4 * a * c;
+  if (disc < 0) return {1, 0};
+  const double root = std::sqrt(disc);
+  return {(-b - root) / (2 * a), (-b + root) / (2 * a)};
+}
+// The smallest N whose points t = i / (N + 1), i = 1..N (interior) or t = i / (N - 1),
+// i = 0..N-1 (with the ends), fall in a chord; nullopt past max_n, or 0 when some t up to the
+// answer lies within 1e-9 of a chord's end (too close to call in floating point).
+std::optional<int> brute_min_n(const std::vector<std::array<double, 2>>& chords, bool interior, int max_n) {
+  for (int n = interior ? 1 : 2; n <= max_n; ++n) {
+    const int first = interior ? 1 : 0, final = interior ? n : n - 1;
+    const double steps = interior ? n + 1.0 : n - 1.0;
+    bool hit = false;
+    for (int i = first; i <= final; ++i) {
+      const double t = i / steps;
+      for (const auto& [t0, t1] : chords) {
+        if (t0 > t1) continue;
+        if (std::fabs(t - t0) < 1e-9 || std::fabs(t - t1) < 1e-9) return 0;
+        hit = hit || (t > t0 && t < t1);
+      }
+    }
+    if (hit) return n;
+  }
+  return std::nullopt;
+}
+}  // namespace
+
+TEST_CASE("min_interior_grid_search: P12 with the endpoints not counted, against disk chords") {
+  // The handout's reading without p and q: t = 1/4, 2/4, 3/4 is the first to hit the disk.
+  const auto world = p12_world();
+  const auto p = config({0, 0}), q = config({1, 0});
+  CHECK(csl::min_interior_grid_search(world, p, q, 1000, 1LL << 40).n == 3);
+  CHECK(csl::min_grid_search(world, p, q, 1000, 1LL << 40).n == 5);
+  CHECK(csl::min_interior_grid_search(world, p, q, 2, 1LL << 40).n == std::nullopt);  // 1 and 2 miss it
+
+  // Random disk worlds, the point robot: the smallest N by brute force over the chords, with
+  // endpoints free and (a fifth of the time) p put inside a disk.
+  csl::Rng rng(4711);
+  int compared = 0, found = 0, none = 0, inside = 0;
+  for (int world_i = 0; world_i < 300; ++world_i) {
+    std::vector<csl::Obstacle> obstacles;
+    std::vector<csl::Disk> disks;
+    for (int k = 0; k < 4; ++k) {
+      disks.push_back(csl::Disk{{rng.uniform01(), rng.uniform01()}, rng.uniform(0.002, 0.05)});
+      obstacles.push_back(disks.back());
+    }
+    const csl::CollisionWorld disk_world(csl::PointRobot{}, obstacles, {0, 0}, {1, 1});
+    for (int edge_i = 0; edge_i < 6; ++edge_i) {
+      auto a = disk_world.space().sample(rng);
+      const auto b = disk_world.space().sample(rng);
+      if (edge_i == 0 && world_i % 5 == 0) a = config({disks[0].center.x(), disks[0].center.y()});
+      std::vector<std::array<double, 2>> chords;
+      for (const auto& d : disks) chords.push_back(disk_chord({a[0], a[1]}, {b[0], b[1]}, d));
+      const auto interior = brute_min_n(chords, true, 300), ends = brute_min_n(chords, false, 302);
+      if (interior == 0 || ends == 0) continue;  // a t on a chord's end: skipped
+      const auto r = csl::min_interior_grid_search(disk_world, a, b, 300, 1LL << 40);
+      CAPTURE(world_i);
+      CAPTURE(edge_i);
+      REQUIRE_FALSE(r.exhausted);
+      REQUIRE(r.n == interior);
+      const bool ends_free = disk_world.is_free(a) && disk_world.is_free(b);
+      inside += !ends_free;
+      // With p and q free, it is the grid's count (both ends counted) less two.
+      if (ends_free) {
+        const auto g = csl::min_grid_search(disk_world, a, b, 302, 1LL << 40);
+        REQUIRE(g.n == ends);
+        if (g.n) REQUIRE(*g.n - 2 == *r.n);
+      }
+      ++compared;
+      (r.n ? found : none) += 1;
+    }
+  }
+  CHECK(compared > 1500);
+  CHECK(found > 100);
+  CHECK(none > 100);
+  CHECK(inside > 40);
+  MESSAGE(compared << " edges, " << found << " seen by some interior grid, " << inside << " from inside a disk");
+  // A small budget is reported, not answered: p just inside the disk's rim, heading out, so only
+  // t < 1e-5 / 0.3 is in collision and the grids are tested one by one up to N of about 30000.
+  const auto rim = config({0.2, 0.15 - 1e-5});
+  const auto out = config({0.2, 0.45});
+  const auto small = csl::min_interior_grid_search(world, rim, out, 100000, 50);
+  CHECK(small.exhausted);
+  CHECK_FALSE(small.n.has_value());
 }
 
 TEST_CASE("one bisection check does bounded work: fewer evaluations where a configuration costs more") {
