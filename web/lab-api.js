@@ -68,7 +68,12 @@ class CSpaceLabApi {
   bundledScenes() { return this.call('bundled_scenes'); }
   /** The page state the app shows ({attached, minimal, previous}); pageState({...}) changes it. */
   pageState(changes = {}) { return this.call('page_state', changes); }
-  /** Canvas-relative CSS pixel positions of world points in a view ('workspace' or 'cspace'). */
+  /** The homework (P1-P13), a problem opened, an exercise made current (seed optional), an answer checked. */
+  homework() { return this.call('homework'); }
+  openProblem(id, seed) { return this.call('open_problem', { id, seed }); }
+  exercise(id, seed) { return this.call('exercise', { id, seed }); }
+  checkAnswer(answer) { return this.call('check_answer', { answer }); }
+  /** Canvas-relative CSS pixel positions of world points in a view ('workspace', 'cspace', 'circle'). */
   view(points = [], view = 'workspace') { return this.call('view', { points, view }); }
 }
 

@@ -93,6 +93,16 @@
 
   // ---- storage: one lab's keys, without the wasm (a lab that stopped still offers its work) --
 
+  // Whether this browser has seen the welcome (one flag per origin; no storage: never shown).
+  const WELCOMED = STORAGE_PREFIX + 'welcomed';
+  const welcomed = (see) => {
+    try {
+      return see ? global.localStorage.setItem(WELCOMED, '1') : global.localStorage.getItem(WELCOMED);
+    } catch {
+      return '1';
+    }
+  };
+
   class WorkStore {
     constructor(scope, id) {
       this.prefix = STORAGE_PREFIX + scope + ':' + id + ':';
@@ -303,7 +313,10 @@
         this.bundled = api.bundledScenes();
         this.installFrameHook();
         this.installInput();
-        api.pageState({ attached: true, minimal: this.options.ui === 'minimal' });
+        // A first visit without a link: the panel offers the homework map (once; "welcome-seen").
+        const welcome = this.options.ui !== 'minimal' && !U.hasState(U.parseConfig(this.options.config).values) &&
+                        welcomed() === null;
+        api.pageState({ attached: true, minimal: this.options.ui === 'minimal', welcome });
         api.module.cslPageAction = (name) => setTimeout(() => this.action(name), 0);
         notes = await this.start();
       } catch (e) {
@@ -498,6 +511,20 @@
           problems.push(what(e));
         }
       };
+      if (values.has('problem')) {
+        // A homework problem opens its lesson with its own preset; &seed= fixes its numbers.
+        const raw = values.get('problem');
+        const args = { id: raw };
+        if (values.has('seed')) {
+          const seed = values.get('seed');
+          if (/^\d{1,15}$/.test(seed)) args.seed = Number(seed);
+          else problems.push(`seed ${U.excerpt(seed)} (a whole number of at most 15 digits)`);
+        }
+        part((e) => `problem ${U.excerpt(raw)} (${e.message})`, () => api.call('open_problem', args));
+        for (const key of values.keys())
+          if (!['problem', 'seed', 'ui', 'id'].includes(key)) problems.push(`${key} (a problem link opens the problem's own setup)`);
+        return problems;
+      }
       let lesson = this.lessons[0].id;  // the app's first lesson, as on a fresh start
       if (values.has('lesson')) {
         const raw = values.get('lesson');
@@ -870,6 +897,7 @@
         const history = /^restore-history:(\d{1,2})$/.exec(name);
         if (history) return await this.restoreEntry(this.historyIds[Number(history[1])]);
         switch (name) {
+          case 'welcome-seen': return welcomed(true);
           case 'share': return await this.share();
           case 'embed': return await this.embed();
           case 'import': return this.pickFile();

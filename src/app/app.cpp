@@ -11,6 +11,7 @@
 #include "app/js_api.hpp"
 #include "app/theme.hpp"
 #include "app/ui.hpp"
+#include "app/bundled_scenes.hpp"
 #include "app/web_bridge.hpp"
 #include "core/version.hpp"
 
@@ -42,6 +43,37 @@ App::App(const Platform& platform) : platform_(platform) {
   theme::apply_style();
   register_api();
   select_lesson(lessons().front().id);
+}
+
+void App::open_problem(const HomeworkProblem& p) {
+  const LessonInfo* info = find_lesson(p.lesson);
+  if (!info) throw ApiError("the lab has no lesson \"" + p.lesson + "\" for " + p.id);
+  auto& slot = instances_[p.lesson];
+  if (!slot) slot = info->create();
+  Lesson& lesson = *slot;
+  // The lesson's own scene gives way to the problem's as one edit: Undo brings it back.
+  if (!p.scene.empty()) {
+    std::string why;
+    if (!lesson.accept_scene(bundled_scene(p.scene), why)) throw ApiError(p.id + ": " + why);
+  }
+  if (!p.params.empty()) lesson.set_params(p.params);
+  lesson.work(std::numeric_limits<double>::infinity());
+  select_lesson(p.lesson);
+}
+
+void App::show_in_lesson(const json& setup) {
+  // All checked before anything changes: the scene parsed, then tried with the parameters on a
+  // fresh lesson (as restore does), then applied to the student's (the scene as one undoable edit).
+  std::optional<Scene> scene;
+  if (setup.contains("scene")) scene = scene_from_json(setup["scene"]);
+  const json params = setup.value("params", json::object());
+  std::unique_ptr<Lesson> trial = find_lesson(lesson_id_)->create();
+  std::string why;
+  if (scene && !trial->accept_scene(*scene, why)) throw ApiError(why);
+  if (!params.empty()) trial->set_params(params);
+  if (scene && !lesson_->accept_scene(*scene, why)) throw ApiError(why);
+  if (!params.empty()) lesson_->set_params(params);
+  lesson_->work(std::numeric_limits<double>::infinity());
 }
 
 bool App::select_lesson(const std::string& id) {
@@ -194,6 +226,7 @@ void App::register_api() {
             select_lesson(id);
             return json{{"lesson", lesson_id_}, {"steps", lesson_->steps()}};
           });
+  homework_.register_api(api);
   web::register_api(api, ctx_);  // notify, page_state, bundled_scenes: the page around the app
   api.add("log", "the event log's lines", [this](const json&) {
     json out = json::array();
@@ -228,6 +261,11 @@ void App::top_bar() {
   ImGui::TextUnformatted(web::page().minimal ? current_name.c_str() : "C-Space Lab");
   ImGui::PopFont();
   ImGui::SameLine(0, 24);
+  if (!web::page().minimal) {
+    // The way in for students: the handout's problems by number, next to the title.
+    homework_.menu_button();
+    ImGui::SameLine(0, 18);
+  }
   const ImVec2 first_row = ImGui::GetCursorPos();
   if (!web::page().minimal) {
     // One button per lesson, grouped by category, in rows under each other when the window is
@@ -361,6 +399,7 @@ void App::notice() {
 }
 
 void App::frame() {
+  web::begin_controls();
   shortcuts();
   work();
   lesson_->update(ctx_);
@@ -374,6 +413,7 @@ void App::frame() {
   ImGui::Separator();
   const float panel_w = std::clamp(vp->WorkSize.x * 0.3f, 280.0f, 380.0f);
   ImGui::BeginChild("panel", ImVec2(panel_w, 0), false);
+  homework_.card(lesson_id_);
   playback_controls();
   lesson_->panel(ctx_);
   ImGui::EndChild();

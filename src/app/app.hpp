@@ -8,6 +8,7 @@
 #include <string>
 
 #include "app/context.hpp"
+#include "app/homework_panel.hpp"
 #include "app/lesson.hpp"
 #include "app/platform.hpp"
 
@@ -33,12 +34,18 @@ class App {
   void playback_controls();
   void shortcuts();
   void notice();
+  // Shows a homework problem: its lesson, with the problem's scene and parameters.
+  void open_problem(const HomeworkProblem& problem);
+  // Applies {scene?, params} (an exercise's numbers) to the lesson on screen.
+  void show_in_lesson(const nlohmann::json& setup);
 
   const Platform& platform_;
   LabContext ctx_;
   std::map<std::string, std::unique_ptr<Lesson>> instances_;
   Lesson* lesson_ = nullptr;
   std::string lesson_id_;
+  HomeworkPanel homework_{[this](const HomeworkProblem& p) { open_problem(p); },
+                          [this](const nlohmann::json& setup) { show_in_lesson(setup); }};
 };
 
 }  // namespace csl::app

@@ -135,7 +135,15 @@ std::vector<std::string> history_labels(const json& value) {
 
 const PageState& page() { return state(); }
 
+void dismiss_welcome() {
+  if (!state().welcome) return;
+  state().welcome = false;
+  page_action("welcome-seen");
+}
+
 void record_control(const char* name) { record(name); }
+
+void begin_controls() { rects().clear(); }
 
 void page_action(const char* name) {
 #ifdef __EMSCRIPTEN__
@@ -160,19 +168,19 @@ void register_api(JsApi& api, LabContext& ctx) {
     ctx.notify(t, seconds);
     return json(true);
   });
-  api.add("page_state", "the page around the app: {attached?, minimal?, previous?, history?: [{label}]}; also where its buttons are (CSS px)", [](const json& args) {
+  api.add("page_state", "the page around the app: {attached?, minimal?, welcome?, previous?, history?: [{label}]}; also where its buttons are (CSS px)", [](const json& args) {
     PageState next = state();
     for (auto it = args.begin(); it != args.end(); ++it) {
-      if (it.key() == "attached" || it.key() == "minimal") {
+      if (it.key() == "attached" || it.key() == "minimal" || it.key() == "welcome") {
         if (!it->is_boolean()) throw ApiError(it.key() + ": true or false");
-        (it.key() == "attached" ? next.attached : next.minimal) = it->get<bool>();
+        (it.key() == "attached" ? next.attached : it.key() == "minimal" ? next.minimal : next.welcome) = it->get<bool>();
       } else if (it.key() == "previous") {
         if (!it->is_string() || it->get<std::string>().size() > 200) throw ApiError("previous: a string of at most 200 characters");
         next.previous = it->get<std::string>();
       } else if (it.key() == "history") {
         next.history = history_labels(*it);
       } else {
-        throw ApiError("unknown field \"" + it.key() + "\" (attached, minimal, previous, history)");
+        throw ApiError("unknown field \"" + it.key() + "\" (attached, minimal, welcome, previous, history)");
       }
     }
     state() = next;
@@ -180,7 +188,7 @@ void register_api(JsApi& api, LabContext& ctx) {
     for (const auto& [name, r] : rects()) buttons[name] = r;
     json history = json::array();
     for (const std::string& label : next.history) history.push_back({{"label", label}});
-    return json{{"attached", next.attached}, {"minimal", next.minimal}, {"previous", next.previous},
+    return json{{"attached", next.attached}, {"minimal", next.minimal}, {"welcome", next.welcome}, {"previous", next.previous},
                 {"history", history}, {"buttons", buttons}};
   });
   api.add("bundled_scenes", "the bundled scenes by name (what ?scene=NAME loads)", [](const json&) {
@@ -208,7 +216,6 @@ float top_bar_actions_width() {
 void top_bar_actions(LabContext& ctx, const std::string& lesson_name) {
   (void)ctx;
   const PageState& s = state();
-  rects().clear();
   if (!s.attached) {
     ImGui::AlignTextToFramePadding();
     ImGui::TextDisabled("v%s", kVersion);

@@ -18,6 +18,7 @@ namespace csl::app::web {
 struct PageState {
   bool attached = false;  ///< a page shell has announced itself (page_state {attached: true})
   bool minimal = false;   ///< ui=minimal: an embed, no lesson menu
+  bool welcome = false;   ///< a first visit: the panel offers the homework map (the page remembers a dismissal)
   std::string previous;   ///< the newest previous work (shown on its button's tooltip), "" if none
   /// The page's history of previous work, newest first, one label each ("14:03 · before a link ·
   /// Step PRM"); the File menu lists them and asks for "restore-history:<i>".
@@ -28,6 +29,8 @@ struct PageState {
 constexpr std::size_t kMaxHistory = 20;
 constexpr std::size_t kMaxHistoryLabel = 200;
 const PageState& page();
+/// The student has seen the welcome: it goes, and the page remembers (page action "welcome-seen").
+void dismiss_welcome();
 
 /// Registers notify, page_state and bundled_scenes.
 void register_api(JsApi& api, LabContext& ctx);
@@ -42,6 +45,8 @@ void top_bar_actions(LabContext& ctx, const std::string& lesson_name);
 /// Records where the last item is, under `name`, for page_state's buttons (this frame only): a
 /// test, or a guided tour, presses the real control there.
 void record_control(const char* name);
+/// At the start of a frame: forget the last frame's controls (page_state reports this frame's).
+void begin_controls();
 
 /// Asks the page to do `name` (share, embed, import, export-scene, export-png, export-state,
 /// reset, restore-previous, restore-history:<i>, open-full); a no-op without a page.

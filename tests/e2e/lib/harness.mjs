@@ -62,9 +62,11 @@ export async function withBrowser(fn) {
  */
 export async function withPage(options, fn) {
   if (typeof options === 'function') [options, fn] = [{}, options];
-  const { open = '', ...pageOptions } = options;
+  const { open = '', welcome = false, ...pageOptions } = options;
   return withBrowser(async ({ browser, url }) => {
     const page = await browser.newPage({ viewport: { width: 1280, height: 800 }, ...pageOptions });
+    // The first-visit welcome moves the side panel down: only the tests about it see it.
+    if (!welcome) await page.addInitScript(() => localStorage.setItem('cspacelab:v1:welcomed', '1'));
     const errors = collectErrors(page);
     await openLab(page, url + open);
     await fn({ page, errors, browser, url });
