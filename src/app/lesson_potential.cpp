@@ -6,7 +6,9 @@
 // local minima and the random-walk escapes. Three examples: P13's rectangle among two polygons,
 // a point robot and a cup (a local minimum), and the 2-link arm with its field on the torus.
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdarg>
 #include <cstdio>
 #include <limits>
 #include <memory>
@@ -15,6 +17,7 @@
 #include "app/bundled_scenes.hpp"
 #include "app/draw.hpp"
 #include "app/field_draw.hpp"
+#include "app/fonts.hpp"
 #include "app/js_api.hpp"
 #include "app/lesson.hpp"
 #include "app/prm_text.hpp"
@@ -62,6 +65,60 @@ std::string fmt(const char* f, double a) {
   char buf[64];
   std::snprintf(buf, sizeof buf, f, a);
   return buf;
+}
+
+// The forces table's text is made of numbers formatted into fixed buffers and one printf per
+// line: no temporary strings to destroy, which keeps the wasm module small.
+
+// A number as the table shows it: 4 significant digits, plain ASCII (the tests read it back);
+// `paren`: a negative one in parentheses, as a factor of a product.
+struct Num {
+  char s[32];
+  explicit Num(double v, bool paren = false) {
+    if (v == 0.0) v = 0.0;  // -0 too: a vertex outside rho0 has no push at all
+    std::snprintf(s, sizeof s, paren && v < 0.0 ? "(%.4g)" : "%.4g", v);
+  }
+};
+
+// "(x, y)" or "(x, y, z)". A component that is rounding noise next to the largest
+// (grad rho = (1, 1e-17)) shows as 0: the vector a student computes by hand.
+struct Vec {
+  char s[112];
+  Vec(const double* x, int n) {
+    double big = 0.0;
+    for (int i = 0; i < n; ++i) big = std::max(big, std::fabs(x[i]));
+    int at = 0;
+    for (int i = 0; i < n; ++i)
+      at += std::snprintf(s + at, sizeof s - static_cast<std::size_t>(at), "%s%s", i == 0 ? "(" : ", ",
+                          Num(std::isfinite(big) && std::fabs(x[i]) <= 1e-12 * big ? 0.0 : x[i]).s);
+    std::snprintf(s + at, sizeof s - static_cast<std::size_t>(at), ")");
+  }
+  explicit Vec(const Vec2& v) : Vec(v.data(), 2) {}
+  explicit Vec(const Config& c) : Vec(c.data(), static_cast<int>(std::min<Eigen::Index>(c.size(), 3))) {}
+};
+
+// A cell at the end of a row (out of line: one call per cell, not an inlined string each).
+__attribute__((noinline)) void add(std::vector<std::string>& row, const char* text) { row.emplace_back(text); }
+
+// One line of text, printf-style.
+std::string line(const char* format, ...) __attribute__((format(printf, 1, 2)));
+std::string line(const char* format, ...) {
+  char buf[1024];
+  va_list args;
+  va_start(args, format);
+  std::vsnprintf(buf, sizeof buf, format, args);
+  va_end(args);
+  return buf;
+}
+
+// "a₀", "a₁₂": the homework's name of vertex i.
+std::string vertex_name(int i) {
+  std::string out = "a";
+  for (char d : std::to_string(i)) {
+    const char sub[4] = {'\xE2', '\x82', static_cast<char>('\x80' + (d - '0')), 0};  // U+2080 + d
+    out.append(sub);
+  }
+  return out;
 }
 
 std::string describe(const DescentEvent& e) {
@@ -148,20 +205,24 @@ class PotentialLesson : public Lesson {
     status_text();
 
     ui::section("At the robot");
-    forces_table();
+    robot_summary();
     ui::section("Obstacles");
     if (editor_.toolbar(scene_, ctx)) scene_changed();
   }
 
+  // The views on top, the forces table under them (the panel is too narrow for its vectors).
   void views(LabContext& ctx, ImVec2 size) override {
+    const float below = forces_height(size);
+    const ImVec2 top(size.x, std::max(120.0f, size.y - below - ImGui::GetStyle().ItemSpacing.y));
     if (robot_kind() == Kind::Point) {
-      workspace(ctx, size);
+      workspace(ctx, top);
     } else {
-      const float w = 0.5f * (size.x - ImGui::GetStyle().ItemSpacing.x);
-      workspace(ctx, ImVec2(w, size.y));
+      const float w = 0.5f * (top.x - ImGui::GetStyle().ItemSpacing.x);
+      workspace(ctx, ImVec2(w, top.y));
       ImGui::SameLine();
-      cspace(ctx, ImVec2(w, size.y));
+      cspace(ctx, ImVec2(w, top.y));
     }
+    forces_area(ImVec2(size.x, below));
     editor_.help_window();
   }
 
@@ -176,7 +237,6 @@ class PotentialLesson : public Lesson {
   bool redo() override { return editor_.redo(scene_) && (scene_changed(), true); }
 
   json state(const json& args) const override {
-    (void)args;
     const Config q = shown();
     json points = json::array();
     const PotentialReport r = field_->evaluate(q);
@@ -188,6 +248,11 @@ class PotentialLesson : public Lesson {
                         {"F_att", {p.attractive.F.x(), p.attractive.F.y()}},
                         {"F_rep", finite_vec(p.repulsive.F)},
                         {"U_rep", std::isfinite(p.repulsive.U) ? json(p.repulsive.U) : json(nullptr)}});
+      json& more = points.back();  // (assignments: lighter in the wasm module than the list above)
+      more["grad_rho"] = p.nearest_obstacle < 0 ? json(nullptr) : finite_vec(p.nearest.grad);
+      more["nearest_obstacle"] = p.nearest_obstacle;
+      more["within_rho0"] = !p.terms.empty();
+      more["tau"] = finite_config(p.tau);
     }
     json out{{"robot", robot_type_name(scene_.robot)},
              {"q", config_to_json(q)},
@@ -218,7 +283,38 @@ class PotentialLesson : public Lesson {
     } else {
       out["descent"] = nullptr;
     }
+    forces_state(r, args, out);
     return out;
+  }
+
+  // The sums, tau's parts and the forces table as shown (its text, for the tests to read back).
+  void forces_state(const PotentialReport& r, const json& args, json& out) const {
+    out["U_rep"] = std::isfinite(r.U_rep) ? json(r.U_rep) : json(nullptr);
+    out["F_att"] = finite_vec(r.F_att);
+    out["F_rep"] = finite_vec(r.F_rep);
+    out["tau_att"] = finite_config(r.tau_att);
+    out["tau_rep"] = finite_config(r.tau_rep);
+    const ForcesText t = forces_text(r);
+    json& table = out["forces_table"];
+    table["open"] = forces_open_;
+    json& header = table["header"] = json::array();
+    for (const char* h : t.header) header.push_back(h);
+    json& rows = table["rows"] = json::array();
+    for (const auto& row : t.rows) rows.push_back(row);
+    table["sum"] = t.sum;
+    table["tau"] = t.tau;
+    table["chosen"] = t.chosen;
+    table["equations"] = t.equations;
+    // Where the table was drawn last frame (logical pixels in the canvas): only when asked, as it
+    // depends on the window, not on the lesson.
+    if (!args.is_object() || !args.value("layout", false)) return;
+    json& layout = out["forces_layout"];
+    json& rects = layout["rows"] = json::array();
+    for (const auto& rc : layout_.rows) rects.push_back(std::vector<float>(rc.begin(), rc.end()));
+    layout["bottom"] = layout_.bottom;
+    layout["table_right"] = layout_.table_right;
+    layout["area_right"] = layout_.area_right;
+    layout["scrolls"] = layout_.scrolls;
   }
 
   void set_params(const json& j) override {
@@ -226,6 +322,7 @@ class PotentialLesson : public Lesson {
     PotentialParams f = field_params_;
     DescentParams d = descent_params_;
     std::optional<Config> from;
+    int point = chosen_;
     const auto number = [](const json& v, const std::string& k) {
       if (!v.is_number() || !std::isfinite(v.get<double>())) throw ApiError(k + ": a finite number");
       return v.get<double>();
@@ -243,6 +340,12 @@ class PotentialLesson : public Lesson {
       } else if (k == "seed") {
         if (!it->is_number_unsigned()) throw ApiError("seed: an integer >= 0");
         d.seed = it->get<std::uint64_t>();
+      } else if (k == "point") {
+        // Any index: one past the robot's control points means "the one pushed hardest" (a link
+        // may carry a point of another robot's scene).
+        if (!it->is_number_integer() || it->get<long long>() < -1 || it->get<long long>() > 100000)
+          throw ApiError("point: a control point's index (-1: the one pushed hardest)");
+        point = it->get<int>();
       } else if (k == "from") {
         if (!it->is_array() || static_cast<int>(it->size()) != robot_dof(scene_.robot)) throw ApiError("from: a configuration of " + std::to_string(robot_dof(scene_.robot)) + " numbers");
         Config q(static_cast<Eigen::Index>(it->size()));
@@ -256,6 +359,7 @@ class PotentialLesson : public Lesson {
     if (const std::string p = d.problem(); !p.empty()) throw ApiError(p);
     field_params_ = f;
     descent_params_ = d;
+    chosen_ = point;
     if (from) from_ = world_->space().wrap(*from);
     rebuild();
   }
@@ -263,7 +367,8 @@ class PotentialLesson : public Lesson {
   json params() const override {
     return {{"rho0", field_params_.rho0}, {"eta", field_params_.eta}, {"zeta", field_params_.zeta},
             {"switch", field_params_.switch_distance}, {"step", descent_params_.step},
-            {"escapes", descent_params_.escapes}, {"seed", descent_params_.seed}, {"from", config_to_json(from_)}};
+            {"escapes", descent_params_.escapes}, {"seed", descent_params_.seed}, {"from", config_to_json(from_)},
+            {"point", chosen_}};
   }
 
   bool steppable() const override { return true; }
@@ -327,6 +432,8 @@ class PotentialLesson : public Lesson {
   void load(const Scene& s) {
     scene_ = s;
     from_ = scene_.start;
+    chosen_ = -1;
+    forces_width_ = 0.0f;  // another robot, another table: measure it again
     rebuild();
   }
 
@@ -461,39 +568,232 @@ class PotentialLesson : public Lesson {
     }
   }
 
-  void forces_table() {
+  // The panel's short summary; the table of every control point is under the views.
+  void robot_summary() {
     const PotentialReport r = field_->evaluate(shown());
-    if (ImGui::BeginTable("##forces", 4, ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_RowBg)) {
-      ImGui::TableSetupColumn("point");
-      ImGui::TableSetupColumn("ρ");
-      ImGui::TableSetupColumn("|F_att|");
-      ImGui::TableSetupColumn("|F_rep|");
-      ImGui::TableHeadersRow();
-      for (std::size_t i = 0; i < r.points.size(); ++i) {
-        const ControlPointReport& p = r.points[i];
-        ImGui::TableNextRow();
-        ImGui::TableNextColumn();
-        ImGui::TextUnformatted(control_point_name(scene_.robot, static_cast<int>(i)).c_str());
-        ImGui::TableNextColumn();
-        ImGui::Text("%.3f", p.nearest.rho);
-        ImGui::TableNextColumn();
-        ImGui::TextColored(ImVec4(0.0f, 0.5f, 0.35f, 1.0f), "%.3f", length(p.attractive.F));
-        ImGui::TableNextColumn();
-        ImGui::TextColored(ImVec4(0.75f, 0.3f, 0.0f, 1.0f), "%.3g", length(p.repulsive.F));
-      }
-      ImGui::EndTable();
-    }
     if (r.contact) {
       ImGui::TextColored(ImVec4(0.75f, 0.25f, 0.0f, 1.0f), "a control point is on an obstacle: U is infinite");
       return;
     }
-    if (robot_kind() == Kind::Polygon)
-      ImGui::Text("τ = J^T F: force (%.3f, %.3f), torque %.4f", r.tau[0], r.tau[1], r.tau[2]);
-    else if (robot_kind() == Kind::Arm)
-      ImGui::Text("τ = J^T F: joint torques (%.3f, %.3f)", r.tau[0], r.tau[1]);
-    else
-      ImGui::Text("τ = F = (%.3f, %.3f)", r.tau[0], r.tau[1]);
     ImGui::Text("U = %.4g  (attractive %.4g, repulsive %.4g)", r.U, r.U_att, r.U_rep);
+    ImGui::TextWrapped("Under the views: ρ, ∇ρ and the forces at every control point, their sum τ = Σ J^T F, "
+                       "and (5.5), (5.6) worked for the row you click.");
+  }
+
+  // The control point whose equations are worked: the one chosen, or (none chosen, or the
+  // robot has fewer points now) the one pushed hardest, else the one nearest an obstacle.
+  int chosen_point(const PotentialReport& r) const {
+    const int n = static_cast<int>(r.points.size());
+    if (chosen_ >= 0 && chosen_ < n) return chosen_;
+    int best = 0;
+    for (int i = 1; i < n; ++i) {
+      const ControlPointReport &a = r.points[static_cast<std::size_t>(i)], &b = r.points[static_cast<std::size_t>(best)];
+      const double fa = length(a.repulsive.F), fb = length(b.repulsive.F);
+      if (fa > fb || (fa == fb && a.nearest.rho < b.nearest.rho)) best = i;
+    }
+    return best;
+  }
+
+  std::string point_label(int i) const {
+    return robot_kind() == Kind::Polygon ? vertex_name(i) : control_point_name(scene_.robot, i);
+  }
+
+  // What the forces table and the worked equations show, as text: drawn by forces_area() and
+  // reported by state() (the tests read the numbers back), from one evaluation of the field.
+  struct ForcesText {
+    std::array<const char*, 6> header;
+    std::vector<std::vector<std::string>> rows;  // one per control point
+    std::vector<bool> outside;                   // beyond rho0 of every obstacle: no push
+    std::vector<std::string> sum;                // the sums over the control points
+    std::vector<std::string> tau;                // tau = tau_rep + tau_att
+    int chosen = 0;                              // the point whose equations are worked
+    std::vector<std::string> equations;
+  };
+
+  ForcesText forces_text(const PotentialReport& r) const {
+    ForcesText t;
+    const Kind kind = robot_kind();
+    // Short headers: a 900 px embed leaves the table under 600 px.
+    t.header = {kind == Kind::Polygon ? "a_i" : "point", "ρ", "∇ρ", "F_rep,i", "F_att,i", kind == Kind::Point ? "J^T F = F" : "J_i^T F_i"};
+    for (std::size_t i = 0; i < r.points.size(); ++i) {
+      const ControlPointReport& p = r.points[i];
+      const bool outside = p.terms.empty(), none = p.nearest_obstacle < 0;
+      t.outside.push_back(outside);
+      auto& row = t.rows.emplace_back();
+      add(row, point_label(static_cast<int>(i)).c_str());
+      add(row, none ? "-" : Num(p.nearest.rho).s);
+      add(row, none ? "-" : Vec(p.nearest.grad).s);
+      add(row, outside ? "(0, 0) outside ρ₀" : Vec(p.repulsive.F).s);
+      add(row, Vec(p.attractive.F).s);
+      add(row, Vec(p.tau).s);
+    }
+    for (const char* cell : {"Σ", "", ""}) add(t.sum, cell);
+    add(t.sum, Vec(r.F_rep).s);
+    add(t.sum, Vec(r.F_att).s);
+    add(t.sum, Vec(r.tau).s);
+    t.tau.push_back(line("τ = Σ J_i^T F_i = τ_rep + τ_att = %s + %s = %s%s", Vec(r.tau_rep).s, Vec(r.tau_att).s,
+                         Vec(r.tau).s, kind == Kind::Polygon ? "  (F_x, F_y, torque)" : kind == Kind::Arm ? "  (joint torques)" : ""));
+    if (r.points.empty()) return t;
+    t.chosen = chosen_point(r);
+    worked_equations(r, t.chosen, t.equations);
+    return t;
+  }
+
+  // (5.5) and (5.6) with the numbers put in for control point k, then its J^T F.
+  void worked_equations(const PotentialReport& r, int k, std::vector<std::string>& out) const {
+    const ControlPointReport& p = r.points[static_cast<std::size_t>(k)];
+    const std::string name = point_label(k);
+    const char* a = name.c_str();
+    const Num rho0(field_params_.rho0), eta(field_params_.eta);
+    if (p.nearest_obstacle < 0) {
+      out.push_back(line("%s = %s: no obstacles, so no repulsion", a, Vec(p.position).s));
+    } else {
+      out.push_back(line("%s = %s: nearest obstacle %d, ρ = %s, ∇ρ = %s; ρ₀ = %s, η = %s", a, Vec(p.position).s,
+                         p.nearest_obstacle, Num(p.nearest.rho).s, Vec(p.nearest.grad).s, rho0.s, eta.s));
+      if (p.terms.empty())
+        out.push_back(line("ρ = %s > ρ₀ = %s: outside ρ₀, so (5.5) U_rep = 0 and (5.6) F_rep = (0, 0)",
+                           Num(p.nearest.rho).s, rho0.s));
+    }
+    for (const RepulsiveTerm& term : p.terms) {
+      char which[32] = "";
+      if (p.terms.size() > 1) std::snprintf(which, sizeof which, "obstacle %d: ", term.obstacle);
+      const double rho = term.distance.rho;
+      if (rho == 0.0) {
+        out.push_back(line("%sρ = 0: on the obstacle, U_rep and F_rep are infinite", which));
+        continue;
+      }
+      const Num n_rho(rho), d(1.0 / rho - 1.0 / field_params_.rho0, true);
+      const Vec grad(term.distance.grad);
+      out.push_back(line("%s(5.5) U_rep = ½ η (1/ρ − 1/ρ₀)² = ½ · %s · (1/%s − 1/%s)² = ½ · %s · %s² = %s", which,
+                         eta.s, n_rho.s, rho0.s, eta.s, d.s, Num(term.field.U).s));
+      out.push_back(line("%s(5.6) F_rep = η (1/ρ − 1/ρ₀) (1/ρ²) ∇ρ = %s · (1/%s − 1/%s) · (1/%s²) · %s = %s · %s · %s · %s = %s",
+                         which, eta.s, n_rho.s, rho0.s, n_rho.s, grad.s, eta.s, d.s, Num(1.0 / (rho * rho)).s, grad.s,
+                         Vec(term.field.F).s));
+    }
+    if (p.terms.size() > 1) out.push_back(line("F_rep = the sum of those terms = %s", Vec(p.repulsive.F).s));
+    const Vec2 F = p.attractive.F + p.repulsive.F;
+    const std::string sum = line("F = F_att + F_rep = %s + %s = %s", Vec(p.attractive.F).s, Vec(p.repulsive.F).s, Vec(F).s);
+    const PointJacobian& J = p.jacobian;
+    switch (robot_kind()) {
+      case Kind::Polygon: {
+        // J = [[1, 0, -(Rv)_y], [0, 1, (Rv)_x]]: the lever arm is read off the Jacobian.
+        const double rx = J(1, 2), ry = -J(0, 2);
+        out.push_back(line("R v = %s − (x, y) = %s;  %s", a, Vec(Vec2(rx, ry)).s, sum.c_str()));
+        out.push_back(line("%s: J^T F = (F_x, F_y, (R v)_x F_y − (R v)_y F_x) = (%s, %s, %s · %s − %s · %s) = %s", a,
+                           Num(F.x()).s, Num(F.y()).s, Num(rx, true).s, Num(F.y(), true).s, Num(ry, true).s,
+                           Num(F.x(), true).s, Vec(p.tau).s));
+        break;
+      }
+      case Kind::Arm:
+        out.push_back(line("J = [[%s, %s], [%s, %s]];  %s", Num(J(0, 0)).s, Num(J(0, 1)).s, Num(J(1, 0)).s,
+                           Num(J(1, 1)).s, sum.c_str()));
+        out.push_back(line("%s: J^T F = (J₁₁ F_x + J₂₁ F_y, J₁₂ F_x + J₂₂ F_y) = %s", a, Vec(p.tau).s));
+        break;
+      case Kind::Point: out.push_back("J = I, so J^T F = " + sum); break;
+    }
+  }
+
+  // Under the views: the table of every control point (click a row to work its equations),
+  // the sums, tau, and (5.5), (5.6) with the numbers put in. Collapsible, open at first.
+  void forces_area(ImVec2 size) {
+    ImGui::PushFont(fonts().small);  // compact: the views above need the height
+    ImGui::SetNextItemOpen(forces_open_);
+    forces_open_ = ImGui::CollapsingHeader("Forces at the control points: ρ, ∇ρ, (5.5), (5.6), τ = Σ J^T F");
+    layout_.rows.clear();
+    layout_.scrolls = false;
+    if (!forces_open_) {
+      ImGui::PopFont();
+      return;
+    }
+    const PotentialReport r = field_->evaluate(shown());
+    const ForcesText t = forces_text(r);
+    const float avail = std::max(40.0f, size.y - ImGui::GetFrameHeightWithSpacing());
+    ImGui::BeginChild("##forces", ImVec2(size.x, avail), false);
+    ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(ImGui::GetStyle().ItemSpacing.x, 2.0f));
+    ImGui::PushStyleVar(ImGuiStyleVar_CellPadding, ImVec2(2.0f, 1.0f));
+    const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerV |
+                                  ImGuiTableFlags_NoHostExtendX;
+    if (ImGui::BeginTable("##vertex-forces", 6, flags)) {
+      for (const char* h : t.header) ImGui::TableSetupColumn(h);
+      ImGui::TableHeadersRow();
+      for (std::size_t i = 0; i < t.rows.size(); ++i) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        const bool chosen = static_cast<int>(i) == t.chosen;
+        if (ImGui::Selectable(t.rows[i][0].c_str(), chosen, ImGuiSelectableFlags_SpanAllColumns)) chosen_ = static_cast<int>(i);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("work (5.5) and (5.6) for %s", t.rows[i][0].c_str());
+        const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+        layout_.rows.push_back({lo.x, lo.y, hi.x, hi.y});
+        for (int c = 1; c < 6; ++c) {
+          ImGui::TableNextColumn();
+          const ImVec4 colour = c == 3 ? (t.outside[i] ? ImVec4(0.45f, 0.45f, 0.45f, 1.0f) : ImVec4(0.75f, 0.3f, 0.0f, 1.0f))
+                                : c == 4 ? ImVec4(0.0f, 0.5f, 0.35f, 1.0f) : ImGui::GetStyleColorVec4(ImGuiCol_Text);
+          ImGui::TextColored(colour, "%s", t.rows[i][static_cast<std::size_t>(c)].c_str());
+        }
+      }
+      ImGui::TableNextRow();
+      for (const std::string& cell : t.sum) {
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(cell.c_str());
+      }
+      ImGui::EndTable();
+      layout_.table_right = ImGui::GetItemRectMax().x;
+    }
+    layout_.area_right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+    // Room for the longest case under the table (tau, and (5.5), (5.6) with one of them wrapped:
+    // 8 lines), so that choosing another row or moving the robot does not move the table.
+    const float reserved = ImGui::GetCursorPosY() + 8.0f * ImGui::GetTextLineHeightWithSpacing() + ImGui::GetStyle().ItemSpacing.y;
+    if (r.contact) ImGui::TextColored(ImVec4(0.75f, 0.25f, 0.0f, 1.0f), "a control point is on an obstacle: U is infinite");
+    for (const std::string& line : t.tau) wrapped(line);
+    ImGui::Spacing();
+    for (const std::string& line : t.equations) wrapped(line);
+    // The views above must not move under the mouse: the area keeps its height during a drag,
+    // and otherwise only grows (a number one digit longer wraps a line) until the width changes.
+    const float measured = std::max(reserved, ImGui::GetCursorPosY());
+    if (size.x != forces_width_) forces_content_h_ = measured;
+    else if (drag_ == 0 && !placing_) forces_content_h_ = std::max(forces_content_h_, measured);
+    forces_width_ = size.x;
+    layout_.bottom = ImGui::GetItemRectMax().y;
+    layout_.scrolls = ImGui::GetScrollMaxY() > 0.0f;
+    ImGui::PopStyleVar(2);
+    ImGui::EndChild();
+    ImGui::PopFont();
+  }
+
+  // A line wrapped at its spaces only (ImGui's wrapping also breaks after '.' and ',', inside
+  // numbers); the continuation indented.
+  static void wrapped(const std::string& text) {
+    const float width = ImGui::GetContentRegionAvail().x, indent = 16.0f;
+    std::size_t begin = 0;
+    bool first = true;
+    while (begin < text.size()) {
+      const float room = first ? width : width - indent;
+      std::size_t end = text.size(), last_space = std::string::npos;
+      for (std::size_t i = begin; i < text.size(); ++i) {
+        if (text[i] != ' ') continue;
+        if (ImGui::CalcTextSize(text.data() + begin, text.data() + i).x > room) {
+          end = last_space == std::string::npos ? i : last_space;
+          break;
+        }
+        last_space = i;
+      }
+      if (end == text.size() && ImGui::CalcTextSize(text.data() + begin, text.data() + end).x > room && last_space != std::string::npos)
+        end = last_space;  // the last word does not fit either
+      if (!first) ImGui::SetCursorPosX(ImGui::GetCursorPosX() + indent);
+      ImGui::TextUnformatted(text.data() + begin, text.data() + end);
+      begin = end < text.size() ? end + 1 : end;
+      first = false;
+    }
+  }
+
+  // How tall the area under the views is: what its content took last frame, at most half of
+  // the main area (a small window scrolls it rather than squeeze the views to nothing).
+  float forces_height(ImVec2 size) const {
+    ImGui::PushFont(fonts().small);
+    const float header = ImGui::GetFrameHeightWithSpacing();
+    ImGui::PopFont();
+    if (!forces_open_) return header;
+    return std::min(header + forces_content_h_, 0.5f * size.y);
   }
 
   // --- the workspace: field, rings, obstacles, robot with its forces; drag the robot.
@@ -554,7 +854,7 @@ class PotentialLesson : public Lesson {
       draw_force(view_, p.position, p.attractive.F + p.repulsive.F, kTotal, kForcePixels, 110.0f, 1.5f);
       view_.draw_list()->AddCircleFilled(view_.to_screen(p.position), 3.5f, kTotal, 12);
     }
-    if (robot_kind() != Kind::Polygon || r.contact) return;
+    if (robot_kind() != Kind::Polygon || r.contact) return point_labels(q, r);
     const Vec2 c(q[0], q[1]);
     draw_force(view_, c, Vec2(r.tau[0], r.tau[1]), theme::kBlue, kForcePixels, 110.0f, 3.5f);
     // The torque: an arc around the reference point, its sweep growing with |torque|.
@@ -571,6 +871,33 @@ class PotentialLesson : public Lesson {
       const ImVec2 tip(s.x + radius * std::cos(end), s.y + radius * std::sin(end));
       dl->AddCircleFilled(tip, 4.0f, theme::kBlue, 10);
     }
+    point_labels(q, r);  // over the arrows
+  }
+
+  // The table's names at the control points (a₀..a₃ at the polygon's vertices, outward from
+  // its centre), and a ring around the one whose equations are worked.
+  void point_labels(const Config& q, const PotentialReport& r) {
+    if (r.points.empty()) return;
+    ImDrawList* dl = view_.draw_list();
+    const int chosen = chosen_point(r);
+    // Outward from the polygon's reference point, or from the arm's base.
+    const ImVec2 centre = view_.to_screen(robot_kind() == Kind::Arm ? std::get<ArmRobot>(scene_.robot).base : Vec2(q[0], q[1]));
+    ImGui::PushFont(fonts().small);
+    for (std::size_t i = 0; i < r.points.size(); ++i) {
+      const ImVec2 at = view_.to_screen(r.points[i].position);
+      if (static_cast<int>(i) == chosen) dl->AddCircle(at, 7.5f, theme::kBlue, 16, 2.0f);
+      if (robot_kind() == Kind::Point) continue;  // one point: nothing to tell apart
+      ImVec2 d(at.x - centre.x, at.y - centre.y);
+      const float len = std::sqrt(d.x * d.x + d.y * d.y);
+      d = len > 1e-3f ? ImVec2(d.x / len, d.y / len) : ImVec2(0.0f, -1.0f);
+      const std::string name = point_label(static_cast<int>(i));
+      const ImVec2 ts = ImGui::CalcTextSize(name.c_str());
+      const ImVec2 c(at.x + d.x * (10.0f + 0.5f * ts.x), at.y + d.y * (8.0f + 0.5f * ts.y));
+      const ImVec2 lo(c.x - 0.5f * ts.x, c.y - 0.5f * ts.y);
+      dl->AddRectFilled(ImVec2(lo.x - 2, lo.y), ImVec2(lo.x + ts.x + 2, lo.y + ts.y), theme::rgba(255, 255, 255, 190), 3.0f);
+      dl->AddText(lo, theme::kLabel, name.c_str());
+    }
+    ImGui::PopFont();
   }
 
   // Press on the robot and drag: it moves (the point and the polygon translate; the arm's links
@@ -673,6 +1000,17 @@ class PotentialLesson : public Lesson {
   std::vector<LevelSegment> ws_rings_;
   double cspace_key_ = std::numeric_limits<double>::quiet_NaN();
   long logged_ = -1;
+  int chosen_ = -1;  // the control point whose equations are worked; -1: the one pushed hardest
+  bool forces_open_ = true;
+  float forces_content_h_ = 200.0f;  // the forces area's content, measured each frame...
+  float forces_width_ = 0.0f;        // ...at this width
+  struct Layout {                    // where the forces area drew, for the tests (state {layout: true})
+    std::vector<std::array<float, 4>> rows;  // each row's first cell: x0, y0, x1, y1
+    float bottom = 0.0f;                     // the last line's bottom
+    float table_right = 0.0f;                // the table's right edge...
+    float area_right = 0.0f;                 // ...and the visible area's (without a scrollbar)
+    bool scrolls = false;                    // its content did not fit
+  } layout_;
   int drag_ = 0;
   Vec2 grab_offset_{0, 0};
   bool placing_ = false;
