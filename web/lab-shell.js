@@ -386,6 +386,14 @@
           const lesson = this.api.status().lesson;
           if (restored && before.lessons[lesson] && !sameJson(before.lessons[lesson], this.api.snapshot(lesson)))
             opened = this.pushHistory(before, 'link').ok ? 'kept' : 'lost';
+        } else if (parsed.values.has('problem')) {
+          // A problem link seen before: the saved work stands, the problem's card comes back.
+          const seed = parsed.values.get('seed') || '';
+          try {
+            this.api.call('open_problem', { id: parsed.values.get('problem'), seed: /^\d{1,15}$/.test(seed) ? Number(seed) : undefined, preset: false });
+          } catch {
+            // named in the notice when the link was first opened
+          }
         }
         this.config = configKey;
       }

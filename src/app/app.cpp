@@ -45,35 +45,39 @@ App::App(const Platform& platform) : platform_(platform) {
   select_lesson(lessons().front().id);
 }
 
-void App::open_problem(const HomeworkProblem& p) {
-  const LessonInfo* info = find_lesson(p.lesson);
-  if (!info) throw ApiError("the lab has no lesson \"" + p.lesson + "\" for " + p.id);
-  auto& slot = instances_[p.lesson];
-  if (!slot) slot = info->create();
-  Lesson& lesson = *slot;
-  // The lesson's own scene gives way to the problem's as one edit: Undo brings it back.
-  if (!p.scene.empty()) {
-    std::string why;
-    if (!lesson.accept_scene(bundled_scene(p.scene), why)) throw ApiError(p.id + ": " + why);
+void App::open_problem(const HomeworkProblem& p, bool preset) {
+  if (!find_lesson(p.lesson)) throw ApiError("the lab has no lesson \"" + p.lesson + "\" for " + p.id);
+  if (preset) {
+    json setup{{"params", p.params}};
+    if (!p.scene.empty()) setup["scene"] = scene_to_json(bundled_scene(p.scene));
+    show_in_lesson(p.lesson, setup);
   }
-  if (!p.params.empty()) lesson.set_params(p.params);
-  lesson.work(std::numeric_limits<double>::infinity());
   select_lesson(p.lesson);
 }
 
-void App::show_in_lesson(const json& setup) {
-  // All checked before anything changes: the scene parsed, then tried with the parameters on a
-  // fresh lesson (as restore does), then applied to the student's (the scene as one undoable edit).
+void App::show_in_lesson(const std::string& id, const json& setup) {
+  const LessonInfo* info = find_lesson(id);
+  if (!info) throw ApiError("no lesson \"" + id + "\"");
   std::optional<Scene> scene;
-  if (setup.contains("scene")) scene = scene_from_json(setup["scene"]);
+  if (setup.contains("scene")) scene = scene_from_json(setup["scene"]);  // throws before anything changes
   const json params = setup.value("params", json::object());
-  std::unique_ptr<Lesson> trial = find_lesson(lesson_id_)->create();
+  auto& slot = instances_[id];
+  if (!slot) slot = info->create();
+  Lesson& lesson = *slot;
+  // The scene as one edit (Undo brings the student's back); parameters the lesson refuses
+  // (set_params changes nothing then) take the scene back with them.
   std::string why;
-  if (scene && !trial->accept_scene(*scene, why)) throw ApiError(why);
-  if (!params.empty()) trial->set_params(params);
-  if (scene && !lesson_->accept_scene(*scene, why)) throw ApiError(why);
-  if (!params.empty()) lesson_->set_params(params);
-  lesson_->work(std::numeric_limits<double>::infinity());
+  if (scene && !lesson.accept_scene(*scene, why)) throw ApiError(why);
+  if (!params.empty()) {
+    try {
+      lesson.set_params(params);
+    } catch (...) {
+      if (scene) lesson.undo();
+      throw;
+    }
+  }
+  lesson.work(std::numeric_limits<double>::infinity());
+  select_lesson(id);
 }
 
 bool App::select_lesson(const std::string& id) {

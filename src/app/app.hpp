@@ -35,17 +35,17 @@ class App {
   void shortcuts();
   void notice();
   // Shows a homework problem: its lesson, with the problem's scene and parameters.
-  void open_problem(const HomeworkProblem& problem);
-  // Applies {scene?, params} (an exercise's numbers) to the lesson on screen.
-  void show_in_lesson(const nlohmann::json& setup);
+  void open_problem(const HomeworkProblem& problem, bool preset);
+  // Shows `lesson` with {scene?, params} (an exercise's numbers) applied to it.
+  void show_in_lesson(const std::string& lesson, const nlohmann::json& setup);
 
   const Platform& platform_;
   LabContext ctx_;
   std::map<std::string, std::unique_ptr<Lesson>> instances_;
   Lesson* lesson_ = nullptr;
   std::string lesson_id_;
-  HomeworkPanel homework_{[this](const HomeworkProblem& p) { open_problem(p); },
-                          [this](const nlohmann::json& setup) { show_in_lesson(setup); }};
+  HomeworkPanel homework_{[this](const HomeworkProblem& p, bool preset) { open_problem(p, preset); },
+                          [this](const std::string& lesson, const nlohmann::json& setup) { show_in_lesson(lesson, setup); }};
 };
 
 }  // namespace csl::app

@@ -66,7 +66,8 @@ const HomeworkProblem& problem_arg(const json& args) {
 
 }  // namespace
 
-HomeworkPanel::HomeworkPanel(std::function<void(const HomeworkProblem&)> open, std::function<void(const json&)> show)
+HomeworkPanel::HomeworkPanel(std::function<void(const HomeworkProblem&, bool)> open,
+                             std::function<void(const std::string&, const json&)> show)
     : open_(std::move(open)), show_(std::move(show)) {}
 
 std::uint64_t HomeworkPanel::fresh_seed() {
@@ -92,10 +93,11 @@ void HomeworkPanel::set_exercise(const std::string& id, std::uint64_t seed) {
   focus_answer_ = true;
 }
 
-void HomeworkPanel::open(const std::string& id, std::optional<std::uint64_t> seed) {
+void HomeworkPanel::open(const std::string& id, std::optional<std::uint64_t> seed, bool preset) {
   const HomeworkProblem* p = find_homework_problem(id);
   if (!p) throw ApiError("id: a problem of the homework, \"P1\" to \"P13\"");
-  open_(*p);  // may throw: nothing of ours has changed yet
+  if (seed && *seed > kMaxExerciseSeed) throw ApiError("seed: an integer in [0, 2^53 - 1]");
+  open_(*p, preset);  // may throw: the panel has not changed yet
   problem_ = p->id;
   set_exercise(p->id, seed ? *seed : fresh_seed());
   web::dismiss_welcome();
@@ -105,9 +107,10 @@ json HomeworkPanel::check(const std::string& answer) {
   if (!exercise_) throw ApiError("no exercise is open (open_problem or exercise first)");
   checked_ = check_exercise(*exercise_, answer);
   checked_answer_ = answer;
+  // The score counts answers the lab could read, and each exercise answered right once.
   Score& s = scores_[exercise_->id];
-  ++s.tried;
-  if (checked_->correct) ++s.right;
+  if (checked_->readable) ++s.tried;
+  if (checked_->correct && solved_.insert({exercise_->id, exercise_->seed}).second) ++s.right;
   return exercise_check_to_json(*checked_);
 }
 
@@ -131,15 +134,19 @@ void HomeworkPanel::register_api(JsApi& api) {
       out.push_back({{"id", p.id}, {"title", p.title}, {"lesson", p.lesson}, {"task", p.task}});
     return out;
   });
-  api.add("open_problem", "open a problem's lesson and exercise: {id: 'P10', seed?}", [this](const json& args) {
+  api.add("open_problem", "open a problem's lesson and exercise: {id: 'P10', seed?, preset?: false keeps the lesson's scene}", [this](const json& args) {
     const HomeworkProblem& p = problem_arg(args);
-    open(p.id, args.contains("seed") ? std::optional<std::uint64_t>(seed_arg(args)) : std::nullopt);
+    const json& preset = args.contains("preset") ? args["preset"] : json(true);
+    if (!preset.is_boolean()) throw ApiError("preset: true or false");
+    const bool has_seed = args.contains("seed") && !args["seed"].is_null();
+    open(p.id, has_seed ? std::optional<std::uint64_t>(seed_arg(args)) : std::nullopt, preset.get<bool>());
     return state_json();
   });
   api.add("exercise", "a problem's exercise {id, seed?}, made the current one: {id, seed, prompt, given, answer_format, format_hint}",
           [this](const json& args) {
             const HomeworkProblem& p = problem_arg(args);
             set_exercise(p.id, args.contains("seed") ? seed_arg(args) : fresh_seed());
+            problem_ = p.id;  // the card shows it when its lesson is on screen
             return exercise_to_json(*exercise_);
           });
   api.add("check_answer", "check an answer to the current exercise: {answer} -> {correct, expected, explanation}",
@@ -155,7 +162,7 @@ void HomeworkPanel::register_api(JsApi& api) {
     if (!exercise_ || !checked_) throw ApiError("answer the exercise first: its numbers are shown once it was checked");
     const json setup = exercise_tool_setup(*exercise_);
     if (setup.is_null()) throw ApiError(exercise_->id + "'s numbers do not go into a tool");
-    show_(setup);
+    show_(find_homework_problem(exercise_->id)->lesson, setup);
     return setup;
   });
   api.add("homework_state", "the open problem, its exercise, the last check and the visit's scores",
@@ -215,11 +222,13 @@ void HomeworkPanel::card(const std::string& lesson_id) {
     ImGui::TextWrapped("%s", error_.c_str());
     ImGui::PopStyleColor();
   }
-  if (problem_.empty() || !exercise_) return;
+  if (problem_.empty() || !exercise_ || exercise_->id != problem_) return;
   const HomeworkProblem* p = find_homework_problem(problem_);
   if (!p || p->lesson != lesson_id) return;
 
+  ImGui::PushID("homework");  // its Check and answer field apart from a lesson's own
   boxed(theme::rgba(248, 245, 234), [&] { problem_body(*p); });
+  ImGui::PopID();
   ImGui::Spacing();
 }
 
@@ -264,7 +273,7 @@ void HomeworkPanel::problem_body(const HomeworkProblem& problem) {
     if (!setup.is_null()) {
       if (ImGui::SmallButton("Show these numbers in the tool")) {
         try {
-          show_(setup);
+          show_(find_homework_problem(e.id)->lesson, setup);
           error_.clear();
         } catch (const std::exception& x) {
           error_ = std::string("The lesson did not take these numbers: ") + x.what();  // nothing changed

@@ -9,6 +9,8 @@
 #include <functional>
 #include <map>
 #include <optional>
+#include <set>
+#include <utility>
 #include <string>
 
 #include "app/js_api.hpp"
@@ -18,11 +20,12 @@ namespace csl::app {
 
 class HomeworkPanel {
  public:
-  /// `open` shows a problem's lesson with its preset (the app switches lessons); it throws
-  /// ApiError if the lesson refuses the preset.
+  /// `open` shows a problem's lesson, with its preset if asked (the app switches lessons); it
+  /// throws ApiError if the lesson refuses the preset.
   /// `show` puts an exercise's own numbers into its lesson (exercise_tool_setup()); it throws
   /// ApiError if the lesson refuses them.
-  HomeworkPanel(std::function<void(const HomeworkProblem&)> open, std::function<void(const nlohmann::json&)> show);
+  HomeworkPanel(std::function<void(const HomeworkProblem&, bool preset)> open,
+                std::function<void(const std::string& lesson, const nlohmann::json&)> show);
 
   /// homework, open_problem, exercise, check_answer, homework_state.
   void register_api(JsApi& api);
@@ -32,12 +35,13 @@ class HomeworkPanel {
   /// its lesson is on screen.
   void card(const std::string& lesson_id);
 
-  /// Opens problem `id` with an exercise of `seed` (none: a new seed). Throws ApiError.
-  void open(const std::string& id, std::optional<std::uint64_t> seed);
+  /// Opens problem `id` with an exercise of `seed` (none: a new seed); `preset`: the lesson gets
+  /// the problem's scene and parameters (not when a reload brings back saved work). Throws ApiError.
+  void open(const std::string& id, std::optional<std::uint64_t> seed, bool preset = true);
 
  private:
   struct Score {
-    int tried = 0, right = 0;
+    int tried = 0, right = 0;  // readable answers checked; exercises (seeds) answered right
   };
   void problem_body(const HomeworkProblem& problem);
   void set_exercise(const std::string& id, std::uint64_t seed);
@@ -45,8 +49,9 @@ class HomeworkPanel {
   nlohmann::json state_json() const;
   static std::uint64_t fresh_seed();
 
-  std::function<void(const HomeworkProblem&)> open_;
-  std::function<void(const nlohmann::json&)> show_;
+  std::function<void(const HomeworkProblem&, bool)> open_;
+  std::function<void(const std::string&, const nlohmann::json&)> show_;
+  std::set<std::pair<std::string, std::uint64_t>> solved_;  // (problem, seed) answered right
   std::string problem_;  // the open problem's id, "" for none
   std::optional<Exercise> exercise_;
   std::optional<ExerciseCheck> checked_;

@@ -134,6 +134,7 @@ ExerciseCheck check_exercise(const Exercise& e, const std::string& answer) {
     const RobotDescription robot = parse_robot_description(e.robot);
     const AnswerCheck a = check_answer(answer.substr(0, kMaxNotationText), robot);
     c.correct = a.correct;
+    c.readable = a.correct || a.explanation.rfind("could not read", 0) != 0;
     c.expected = configuration_space(robot).notation;
     c.explanation = a.explanation + (e.worked.empty() ? "" : "\n" + e.worked);
     return c;
@@ -142,6 +143,7 @@ ExerciseCheck check_exercise(const Exercise& e, const std::string& answer) {
   c.expected = integer ? json(static_cast<long long>(std::llround(e.answer))) : json(e.answer);
   const std::optional<double> v = parse_answer_number(answer);
   if (!v) {
+    c.readable = false;
     c.explanation = (trim(answer).empty() ? std::string("Type an answer first: ")
                                           : "\"" + printable(trim(answer), 40) + "\" is not a number the lab can read: ") +
                     e.format_hint + ".";

@@ -72,6 +72,7 @@ nlohmann::json exercise_to_json(const Exercise& exercise);
 
 struct ExerciseCheck {
   bool correct = false;
+  bool readable = true;     ///< false: the answer was empty or could not be read (no attempt)
   nlohmann::json expected;  ///< the answer: a number, an integer, or Q in canonical notation
   std::string explanation;  ///< why it is right, or what went wrong, and the worked solution
 };

@@ -40,7 +40,7 @@ std::string num(double v, int decimals = 2) {
 }
 std::string sig(double v) {
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%.4g", v);
+  std::snprintf(buf, sizeof buf, "%.4g", std::fabs(v) < 1e-12 ? 0.0 : v);  // no 2.776e-15 for a zero
   return buf;
 }
 // p and eta as written: 0.001, not 1e-03.
@@ -150,7 +150,7 @@ Exercise p8(Rng& rng) {
              sig(sigma) + ", sigma r^d = " + sig(rate) + ". m e^(-sigma r^d n) <= p gives n >= ln(m/p) / (sigma r^d) = " +
              num(std::log(m / p) / rate, 2) + ", so n = " + num(n, 0) +
              ". A path of length L needs only ceil(L/(r/2)) balls: tiling everything multiplies the count by about "
-             "(1/r)^(d-1), and n grows with its logarithm.";
+             "(2/r)^(d-1) / L, and n grows with its logarithm.";
   const double one_ball = std::ceil(std::log(1.0 / p) / rate);
   const double refined = std::ceil(whole_space_tiling_bound(r, d, 0).samples_for(p));
   e.traps = {{one_ball, "That is the n for a single ball (m = 1): the bound multiplies by the number of balls m."},
@@ -241,12 +241,13 @@ Exercise p11(Rng& rng) {
   e.tolerance = 0.005;
   const double t = std::clamp(t_raw, 0.0, 1.0);
   const Vec2 c = p1 + t * (p2 - p1);
-  std::string how = want == 3 ? "p1 = p2: the segment is a point, and the distance is |q - p1| - r"
+  std::string how = want == 3 ? "p1 = p2: the segment is a single point, no projection: the closest point is p1"
                               : "t* = (q - p1).(p2 - p1) / |p2 - p1|^2 = " + num(t_raw, 4) +
                                     (t_raw <= 0   ? ", before p1: clamped to 0, the closest point is p1"
                                      : t_raw >= 1 ? ", past p2: clamped to 1, the closest point is p2"
                                                   : ", inside [0, 1]: the closest point is p1 + t*(p2 - p1)");
-  e.worked = how + " = " + point_text(c) + ". |q - closest| = " + num(centre, 4) + ", minus r: " + num(centre - r, 4) +
+  e.worked = how + " = (" + num(c.x(), 4) + ", " + num(c.y(), 4) + "). |q - closest| = " + num(centre, 4) +
+             ", minus r: " + num(centre - r, 4) +
              (centre <= r ? " <= 0: the segment meets the disk, distance 0." : ".") +
              " (The lab's collision checker keeps the sign, |q - closest| - r, as the clearance eta: negative means how deep.)";
   if (std::fabs(centre - dist) > 0.01) e.traps.push_back({centre, "That is the distance to the disk's centre q: subtract the radius r."});
@@ -277,7 +278,9 @@ Exercise p12(Rng& rng) {
     radius = draw2(rng, 0.03, 0.15);
     const double cx = draw2(rng, 0.1, 0.9);
     centre = Vec2(cx, round2(rng.uniform(-0.8, 0.8) * radius));
-    if (!grazes(centre, radius, 64)) break;
+    // p and q free, with room (the handout's edge joins two free configurations).
+    const bool ends_free = length(centre) > radius + 0.02 && length(centre - Vec2(1.0, 0.0)) > radius + 0.02;
+    if (ends_free && !grazes(centre, radius, 64)) break;
   }
   const Vec2 p(0.0, 0.0), q(1.0, 0.0);
   Scene scene;
@@ -341,19 +344,29 @@ Exercise p13(Rng& rng) {
   }
 
   static const char* const kQuantities[] = {"rho", "force", "fx", "fy", "torque"};
-  const std::string quantity = pick(rng, kQuantities);
   // The vertex asked about: one within rho0 for the force, any for rho.
   int vertex = static_cast<int>(rng.below(4));
-  if (quantity == "force")
-    for (int k = 0; k < 4 && report.points[static_cast<std::size_t>(vertex)].nearest.rho > rho0; ++k) vertex = (vertex + 1) % 4;
-  const ControlPointReport& v = report.points[static_cast<std::size_t>(vertex)];
+  const std::size_t first = static_cast<std::size_t>(rng.below(5));
+  double total = 0;  // sum of |F_rep| over the vertices: the scale of a net force
+  for (const ControlPointReport& p : report.points) total += length(p.repulsive.F);
+  std::string quantity, what;
   double answer = 0;
-  std::string what;
-  if (quantity == "rho") answer = v.nearest.rho, what = "rho(a" + std::to_string(vertex + 1) + "), its distance to the obstacle";
-  if (quantity == "force") answer = length(v.repulsive.F), what = "|F_rep(a" + std::to_string(vertex + 1) + ")|, the length of the repulsive force at that vertex";
-  if (quantity == "fx") answer = report.F_rep.x(), what = "the x component of the net repulsive workspace force (the sum over the four vertices)";
-  if (quantity == "fy") answer = report.F_rep.y(), what = "the y component of the net repulsive workspace force (the sum over the four vertices)";
-  if (quantity == "torque") answer = report.tau_rep[2], what = "the torque of the repulsive forces about the robot's centre (sum of (a_i - centre) x F_rep(a_i))";
+  // A net force or torque that cancels by symmetry (0 up to rounding) is a guess, not an
+  // exercise: the next quantity is asked instead.
+  for (std::size_t k = 0; k < 5; ++k) {
+    quantity = kQuantities[(first + k) % 5];
+    if (quantity == "force")
+      for (int j = 0; j < 4 && report.points[static_cast<std::size_t>(vertex)].nearest.rho > rho0; ++j) vertex = (vertex + 1) % 4;
+    const ControlPointReport& v = report.points[static_cast<std::size_t>(vertex)];
+    const std::string at = "a" + std::to_string(vertex + 1);
+    if (quantity == "rho") answer = v.nearest.rho, what = "rho(" + at + "), its distance to the obstacle";
+    if (quantity == "force") answer = length(v.repulsive.F), what = "|F_rep(" + at + ")|, the length of the repulsive force at that vertex";
+    if (quantity == "fx") answer = report.F_rep.x(), what = "the x component of the net repulsive workspace force (the sum over the four vertices)";
+    if (quantity == "fy") answer = report.F_rep.y(), what = "the y component of the net repulsive workspace force (the sum over the four vertices)";
+    if (quantity == "torque") answer = report.tau_rep[2], what = "the torque of the repulsive forces about the robot's centre (sum of (a_i - centre) x F_rep(a_i))";
+    const double scale = quantity == "torque" ? total * b : total;
+    if (quantity == "rho" || quantity == "force" || std::fabs(answer) >= 0.05 * scale) break;
+  }
 
   json vertices = json::array(), obstacle = json::array();
   for (const ControlPointReport& p : report.points) vertices.push_back(point_json(p.position));
@@ -385,7 +398,7 @@ Exercise p13(Rng& rng) {
   worked += "Sum F_rep = (" + sig(report.F_rep.x()) + ", " + sig(report.F_rep.y()) + "); torque about the centre = " +
             sig(report.tau_rep[2]) + " (J_i^T F_i summed: for a vertex at offset (dx, dy), dx F_y - dy F_x).";
   e.worked = worked;
-  if (std::fabs(answer) > 1e-12) e.traps.push_back({-answer, "The sign is wrong: grad rho points from the obstacle to the vertex, and the repulsion pushes away from the obstacle."});
+  if (quantity == "fx" || quantity == "fy" || quantity == "torque") e.traps.push_back({-answer, "The sign is wrong: grad rho points from the obstacle to the vertex, and the repulsion pushes away from the obstacle."});
   return e;
 }
 

@@ -141,6 +141,20 @@ test('exercises answered by typing: right and wrong, checked against numbers com
   c = await answer(page, 'R^2 x S^1');
   assert.equal(c.correct, true, c.explanation);
   assert.equal(c.expected, 'SE(2)');
+  await answer(page, 'R^2 x S^1');
+  await answer(page, '');
+  // Four readable answers (R^2, R² × S¹, and R^2 x S^1 twice), one exercise right.
+  assert.deepEqual((await api(page, 'homework_state')).scores.P1, { tried: 4, right: 1 },
+                   'a right answer counts once, an empty one not at all');
+
+  // A reload of the problem link: the saved work stands and the problem's card comes back.
+  await page.evaluate(() => window.cspacelab.shell.saveNow && window.cspacelab.shell.saveNow());
+  await page.reload();
+  await page.waitForFunction(() => window.cspacelab && window.cspacelab.status().frames >= 2);
+  hw = await api(page, 'homework_state');
+  assert.equal(hw.problem, 'P10');
+  assert.equal(hw.exercise.seed, 7);
+  assert.equal((await api(page, 'status')).lesson, 'distances');
 }));
 
 test('problem links: bad ones are named and change nothing; a problem in a 900 px embed',
