@@ -68,7 +68,7 @@ class CSpaceLabApi {
   bundledScenes() { return this.call('bundled_scenes'); }
   /** The page state the app shows ({attached, minimal, previous}); pageState({...}) changes it. */
   pageState(changes = {}) { return this.call('page_state', changes); }
-  /** The homework (P1-P13), a problem opened, an exercise made current (seed optional), an answer checked. */
+  /** Homework P1-P13: the list, a problem opened, an exercise (seed optional), an answer checked. */
   homework() { return this.call('homework'); }
   openProblem(id, seed) { return this.call('open_problem', { id, seed }); }
   exercise(id, seed) { return this.call('exercise', { id, seed }); }

@@ -93,7 +93,7 @@
 
   // ---- storage: one lab's keys, without the wasm (a lab that stopped still offers its work) --
 
-  // Whether this browser has seen the welcome (one flag per origin; no storage: never shown).
+  // Whether this browser saw the welcome (one flag per origin; no storage: never shown).
   const WELCOMED = STORAGE_PREFIX + 'welcomed';
   const welcomed = (see) => {
     try {
@@ -387,12 +387,12 @@
           if (restored && before.lessons[lesson] && !sameJson(before.lessons[lesson], this.api.snapshot(lesson)))
             opened = this.pushHistory(before, 'link').ok ? 'kept' : 'lost';
         } else if (parsed.values.has('problem')) {
-          // A problem link seen before: the saved work stands, the problem's card comes back.
+          // A problem link seen before: the saved work stands, the card comes back.
           const seed = parsed.values.get('seed') || '';
           try {
             this.api.call('open_problem', { id: parsed.values.get('problem'), seed: /^\d{1,15}$/.test(seed) ? Number(seed) : undefined, preset: false });
           } catch {
-            // named in the notice when the link was first opened
+            // named when the link was first opened
           }
         }
         this.config = configKey;
@@ -520,7 +520,7 @@
         }
       };
       if (values.has('problem')) {
-        // A homework problem opens its lesson with its own preset; &seed= fixes its numbers.
+        // A homework problem: its lesson and preset; &seed= fixes its numbers.
         const raw = values.get('problem');
         const args = { id: raw };
         if (values.has('seed')) {
@@ -530,7 +530,7 @@
         }
         part((e) => `problem ${U.excerpt(raw)} (${e.message})`, () => api.call('open_problem', args));
         for (const key of values.keys())
-          if (!['problem', 'seed', 'ui', 'id'].includes(key)) problems.push(`${key} (a problem link opens the problem's own setup)`);
+          if (!['problem', 'seed', 'ui', 'id'].includes(key)) problems.push(`${key} (a problem link sets up its own)`);
         return problems;
       }
       let lesson = this.lessons[0].id;  // the app's first lesson, as on a fresh start

@@ -3,7 +3,7 @@
 //   ?lesson=step-prm&scene=p12&samples=120&neighbors=k:8&checker=bisection&seed=7&steps=50&ui=minimal
 //
 // The same syntax configures an instance on a page: <div data-lab="lesson=collision&amp;scene=p12">.
-// ?problem=P10[&seed=S] opens a homework problem instead (its lesson, preset and exercise).
+// ?problem=P10[&seed=S] opens a homework problem instead.
 // Keys: lesson, scene, steps, ui, id, and the lesson's own parameters (whatever its params()
 // reports: samples, neighbors, checker, seed for Step PRM; grid_n, p, q for Collision checking).
 // Values are never evaluated: numbers must match a number's syntax, lists are comma-separated
