@@ -590,14 +590,6 @@ class AnalysisLesson : public Lesson {
     if (!line.empty()) ImGui::TextWrapped("%s", line.c_str());
     if (colour) ImGui::PopStyleColor();
   }
-  static std::string format(const char* pattern, ...) IM_FMTARGS(1) {
-    char text[256];
-    va_list args;
-    va_start(args, pattern);
-    std::vsnprintf(text, sizeof text, pattern, args);
-    va_end(args);
-    return text;
-  }
 
   // P8, the handout's way first (its m, sigma, the bound with the numbers in, the n it needs for
   // the student's p), then the refined bound and the path bound beside it.
@@ -622,19 +614,19 @@ class AnalysisLesson : public Lesson {
     const FailureBound path = bound(0);
     // The headline, in view also in a small embed: the handout's n first.
     const std::string path_n = path.rate > 0 ? count_text(std::ceil(path.samples_for(target_))) : "?";
-    formula(format("n for p = %s: %s as in the handout, %s refined, %s for one path (2.1)", target_text().c_str(),
+    formula(ui::format("n for p = %s: %s as in the handout, %s refined, %s for one path (2.1)", target_text().c_str(),
                    count_text(std::ceil(n_handout)).c_str(), count_text(std::ceil(n_refined)).c_str(), path_n.c_str()),
             &key);
 
     ImGui::TextColored(key, "The handout's bound");
     dim_text_wrapped("A grid of N balls per axis, 1/N apart: neighbours at most r/2 apart needs N ≥ 2/r, and "
                      "covering every point (half a cell's diagonal, √d/(2N), at most r/2) needs N ≥ √d/r.");
-    formula(format("N = ⌈max(2, √d)/r⌉ = ⌈%.4g/%.4g⌉ = %s", lead, clearance_, per_axis.c_str()));
-    formula(format("m = N^d = %s^%d = %s", per_axis.c_str(), dim_, m.c_str()));
-    formula(format("σ = μ(B₁)/2^d = %.4g/%s = %.4g", unit_ball_volume(dim_), count_text(std::ldexp(1.0, dim_)).c_str(),
+    formula(ui::format("N = ⌈max(2, √d)/r⌉ = ⌈%.4g/%.4g⌉ = %s", lead, clearance_, per_axis.c_str()));
+    formula(ui::format("m = N^d = %s^%d = %s", per_axis.c_str(), dim_, m.c_str()));
+    formula(ui::format("σ = μ(B₁)/2^d = %.4g/%s = %.4g", unit_ball_volume(dim_), count_text(std::ldexp(1.0, dim_)).c_str(),
                    t->sigma));
-    formula(format("P(fail) ≤ m e^(−σ r^d n) = %s e^(−%.4g n)", m.c_str(), t->rate));
-    formula(format("n = ln(m/p)/(σ r^d) = ln(%s/%s)/%.4g = %s", m.c_str(), target_text().c_str(), t->rate,
+    formula(ui::format("P(fail) ≤ m e^(−σ r^d n) = %s e^(−%.4g n)", m.c_str(), t->rate));
+    formula(ui::format("n = ln(m/p)/(σ r^d) = ln(%s/%s)/%.4g = %s", m.c_str(), target_text().c_str(), t->rate,
                    count_text(std::ceil(n_handout)).c_str()),
             &key);
 
@@ -643,15 +635,15 @@ class AnalysisLesson : public Lesson {
                        "says: there the handout's formula is not quite a bound. Counting a ball that sticks out "
                        "along j axes at rate σ r^d/2^j:",
                        count_text(t->boundary_balls).c_str(), m.c_str());
-    formula(format("n = %s for p = %s", count_text(std::ceil(n_refined)).c_str(), target_text().c_str()), &key);
+    formula(ui::format("n = %s for p = %s", count_text(std::ceil(n_refined)).c_str(), target_text().c_str()), &key);
 
     ui::section("Against the path bound (2.1)");
     if (path.rate > 0)
-      formula(format("path: m = ⌈L/(r/2)⌉ = %s, n = %s", count_text(path.balls).c_str(),
+      formula(ui::format("path: m = ⌈L/(r/2)⌉ = %s, n = %s", count_text(path.balls).c_str(),
                      count_text(std::ceil(path.samples_for(target_))).c_str()));
     else
       ImGui::TextWrapped("path: enter L, r and μ(F) in tab Bound");
-    formula(format("cube: m = %s, n = %s (refined %s)", m.c_str(), count_text(std::ceil(n_handout)).c_str(),
+    formula(ui::format("cube: m = %s, n = %s (refined %s)", m.c_str(), count_text(std::ceil(n_handout)).c_str(),
                    count_text(std::ceil(n_refined)).c_str()));
     dim_text_wrapped("Much worse: the cube's m grows like (1/r)^d, the path's like L/r, and n with ln m. The cube "
                      "pays for every corner of the space, not one corridor, the more so as d grows.");
@@ -664,13 +656,13 @@ class AnalysisLesson : public Lesson {
     const char* exit = r.exit == P9Ray::Exit::Top      ? " > 1: top"
                        : r.exit == P9Ray::Exit::Bottom ? " < 0: bottom"
                                                        : ": right edge";
-    formula(format("%s: a = %.3f, s = %.4g, a + s/2 = %.4g%s", name, r.start, r.slope, end, exit));
+    formula(ui::format("%s: a = %.3f, s = %.4g, a + s/2 = %.4g%s", name, r.start, r.slope, end, exit));
     if (r.exit == P9Ray::Exit::Top)
-      formula(format("  %s = ½ − (1 − a)²/(2s) = ½ − %.3f²/(2·%.4g) = %.5f", area, 1.0 - r.start, r.slope, r.area_under));
+      formula(ui::format("  %s = ½ − (1 − a)²/(2s) = ½ − %.3f²/(2·%.4g) = %.5f", area, 1.0 - r.start, r.slope, r.area_under));
     else if (r.exit == P9Ray::Exit::Bottom)
-      formula(format("  %s = a²/(2|s|) = %.3f²/(2·%.4g) = %.5f", area, r.start, -r.slope, r.area_under));
+      formula(ui::format("  %s = a²/(2|s|) = %.3f²/(2·%.4g) = %.5f", area, r.start, -r.slope, r.area_under));
     else
-      formula(format("  %s = (a + e)/4 = (%.3f + %.4f)/4 = %.5f", area, r.start, r.exit_y, r.area_under));
+      formula(ui::format("  %s = (a + e)/4 = (%.3f + %.4f)/4 = %.5f", area, r.start, r.exit_y, r.area_under));
   }
 
   void visibility_panel() {
@@ -692,7 +684,7 @@ class AnalysisLesson : public Lesson {
     const P9Breakdown b = p9_breakdown(p9_x_, p9_y_, p9_gap_);
     ImGui::Text("(x1, y1) = (%.3f, %.3f), d = %.3f", p9_x_, p9_y_, p9_gap_);
     const ImVec4 key = key_colour();
-    formula(format("p = %.5f exact, %.5f by Monte Carlo", b.probability, mc_.estimate), &key);
+    formula(ui::format("p = %.5f exact, %.5f by Monte Carlo", b.probability, mc_.estimate), &key);
 
     ui::section("Exact, by cases");
     dim_text_wrapped("All of the left half is in sight, and of the right half the cone between the rays through "
@@ -701,13 +693,13 @@ class AnalysisLesson : public Lesson {
     ImGui::TextWrapped("Case: upper ray → %s, lower ray → %s", p9_exit_name(b.upper.exit), p9_exit_name(b.lower.exit));
     ray_lines("upper", "A_up", b.upper);
     ray_lines("lower", "A_lo", b.lower);
-    formula(format("p = ½ + A_up − A_lo = 0.5 + %.5f − %.5f = %.5f", b.upper.area_under, b.lower.area_under,
+    formula(ui::format("p = ½ + A_up − A_lo = 0.5 + %.5f − %.5f = %.5f", b.upper.area_under, b.lower.area_under,
                    b.probability),
             &key);
 
     ui::section("Monte Carlo");
-    formula(format("%lld samples: estimate %.5f", mc_.trials, mc_.estimate));
-    formula(format("95%% interval [%.5f, %.5f]", mc_.low, mc_.high));
+    formula(ui::format("%lld samples: estimate %.5f", mc_.trials, mc_.estimate));
+    formula(ui::format("95%% interval [%.5f, %.5f]", mc_.low, mc_.high));
     if (exact_in_interval())
       ImGui::TextColored(ImVec4(0.0f, 0.45f, 0.3f, 1.0f), "the exact p is inside it");
     else

@@ -49,22 +49,11 @@ const char* const kS1Hint =
     "or type radians in the panel.";
 const char* const kSegmentHint = "Drag p₁, p₂, the centre q or the disk's rim, or type them in the panel.";
 
-std::string fmt(const char* f, ...) {
-  va_list args, again;
-  va_start(args, f);
-  va_copy(again, args);
-  const int n = std::vsnprintf(nullptr, 0, f, args);
-  va_end(args);
-  std::string out(static_cast<std::size_t>(std::max(n, 0)), '\0');
-  std::vsnprintf(out.data(), out.size() + 1, f, again);
-  va_end(again);
-  return out;
-}
 
 // A number as the panel prints it: 4 decimals, no "-0.0000".
 std::string num(double v) {
   if (std::isnan(v)) return "undefined";
-  std::string s = fmt("%.4f", v);
+  std::string s = ui::format("%.4f", v);
   return s == "-0.0000" ? "0.0000" : s;
 }
 // A negative number in parentheses, for products written out.
@@ -305,7 +294,7 @@ class DistancesLesson : public Lesson {
     const auto outside = [](double q) { return q < 0.0 || q >= kTwoPi; };
     if (outside(a.q1) || outside(a.q2))
       text_flow(
-          fmt("outside [0, 2π): the same directions as %s and %s", num(a.wrapped1).c_str(), num(a.wrapped2).c_str()));
+          ui::format("outside [0, 2π): the same directions as %s and %s", num(a.wrapped1).c_str(), num(a.wrapped2).c_str()));
     if (ImGui::Button("q₂ = q₁")) set_q2(q1_);
     web::record_control("distances-equal");
     ui::flow(ui::button_width("q₂ = q₁ + π"));
@@ -316,29 +305,29 @@ class DistancesLesson : public Lesson {
     ImGui::PushFont(fonts().title);
     ImGui::TextColored(ImVec4(0.55f, 0.36f, 0.0f, 1.0f), "d(q₁, q₂) = %s rad", num(a.distance).c_str());
     ImGui::PopFont();
-    text_flow(fmt("= %.2f°: %s", degrees(a.distance), case_line().c_str()));
+    text_flow(ui::format("= %.2f°: %s", degrees(a.distance), case_line().c_str()));
 
     ui::section("(a) by the modulus");
     text_flow(
-        fmt("|q₁ − q₂| = |%s − %s| = %s", num(a.q1).c_str(), factor(a.q2).c_str(), num(a.raw_difference).c_str()));
-    text_flow(fmt("%s mod 2π = %s", num(a.raw_difference).c_str(), num(a.modulus).c_str()));
-    text_flow(fmt("d = min(%s, 2π − %s) = min(%s, %s) = %s", num(a.modulus).c_str(), num(a.modulus).c_str(),
+        ui::format("|q₁ − q₂| = |%s − %s| = %s", num(a.q1).c_str(), factor(a.q2).c_str(), num(a.raw_difference).c_str()));
+    text_flow(ui::format("%s mod 2π = %s", num(a.raw_difference).c_str(), num(a.modulus).c_str()));
+    text_flow(ui::format("d = min(%s, 2π − %s) = min(%s, %s) = %s", num(a.modulus).c_str(), num(a.modulus).c_str(),
                   num(a.modulus).c_str(), num(a.other_way).c_str(), num(a.modular_distance).c_str()));
 
     ui::section("(b) by rotation matrices");
     text_flow("trace(R₁^T R₂)/2 = cos q₁ cos q₂ + sin q₁ sin q₂");
-    text_flow(fmt("= %s·%s + %s·%s = %s", factor(a.cos1).c_str(), factor(a.cos2).c_str(), factor(a.sin1).c_str(),
+    text_flow(ui::format("= %s·%s + %s·%s = %s", factor(a.cos1).c_str(), factor(a.cos2).c_str(), factor(a.sin1).c_str(),
                   factor(a.sin2).c_str(), num(a.dot).c_str()));
-    text_flow(fmt("d = arccos(%s) = %s", num(a.dot).c_str(), num(a.arccos_distance).c_str()));
+    text_flow(ui::format("d = arccos(%s) = %s", num(a.dot).c_str(), num(a.arccos_distance).c_str()));
 
     ui::section("this case");
     text_flow(case_text());
     ImGui::TextDisabled("Why the lab computes (b) with atan2");
     text_flow(
-        fmt("arccos is steep next to 1 and −1: a rounding of 1e-16 in the dot product moves arccos "
+        ui::format("arccos is steep next to 1 and −1: a rounding of 1e-16 in the dot product moves arccos "
             "near 0 by 1e-8. The lab takes atan2(|sin d|, cos d) with sin d = cos q₁ sin q₂ − sin q₁ cos q₂ "
             "instead, accurate everywhere: %s.",
-            fmt("%.10f", a.rotation_distance).c_str()));
+            ui::format("%.10f", a.rotation_distance).c_str()));
 
     ui::section("in the lab's PRM");
     text_flow(
@@ -586,28 +575,28 @@ class DistancesLesson : public Lesson {
     ui::section("project q onto the line p₁p₂");
     if (s.where == SegmentDiskCase::Degenerate) {
       text_flow(
-          fmt("p₂ − p₁ = (0, 0): there is no line. t* = 0/0 is undefined, and every point of the "
+          ui::format("p₂ − p₁ = (0, 0): there is no line. t* = 0/0 is undefined, and every point of the "
               "\"segment\" is p₁: c = p₁ = %s",
               point(s.closest).c_str()));
     } else {
-      text_flow(fmt("p₂ − p₁ = %s, |p₂ − p₁|² = %s", point(s.direction).c_str(), num(s.length_squared).c_str()));
-      text_flow(fmt("(q − p₁)·(p₂ − p₁) = %s", num(s.dot).c_str()));
-      text_flow(fmt("t* = %s / %s = %s", num(s.dot).c_str(), num(s.length_squared).c_str(), num(s.t_raw).c_str()));
-      text_flow(fmt("t = clamp(t*, 0, 1) = %s", num(s.t).c_str()));
-      text_flow(fmt("c = p₁ + t (p₂ − p₁) = %s", point(s.closest).c_str()));
+      text_flow(ui::format("p₂ − p₁ = %s, |p₂ − p₁|² = %s", point(s.direction).c_str(), num(s.length_squared).c_str()));
+      text_flow(ui::format("(q − p₁)·(p₂ − p₁) = %s", num(s.dot).c_str()));
+      text_flow(ui::format("t* = %s / %s = %s", num(s.dot).c_str(), num(s.length_squared).c_str(), num(s.t_raw).c_str()));
+      text_flow(ui::format("t = clamp(t*, 0, 1) = %s", num(s.t).c_str()));
+      text_flow(ui::format("c = p₁ + t (p₂ − p₁) = %s", point(s.closest).c_str()));
     }
-    text_flow(fmt("|q − c| = %s", num(s.centre_distance).c_str()));
+    text_flow(ui::format("|q − c| = %s", num(s.centre_distance).c_str()));
 
     ImGui::Separator();
     ImGui::PushFont(fonts().title);
     ImGui::TextColored(ImVec4(0.55f, 0.36f, 0.0f, 1.0f), "d = %s", num(s.distance).c_str());
     ImGui::PopFont();
-    text_flow(fmt("= max(0, |q − c| − r) = max(0, %s − %s)", num(s.centre_distance).c_str(), num(s.r).c_str()));
+    text_flow(ui::format("= max(0, |q − c| − r) = max(0, %s − %s)", num(s.centre_distance).c_str(), num(s.r).c_str()));
     text_flow(segment_case_text());
     if (s.meets) ImGui::TextColored(ImVec4(0.7f, 0.25f, 0.0f, 1.0f), "|q − c| ≤ r: they meet, so d = 0.");
 
     ui::section("the lab's clearance η keeps the sign");
-    text_flow(fmt("η = |q − c| − r = %s", num(s.lab_clearance).c_str()));
+    text_flow(ui::format("η = |q − c| − r = %s", num(s.lab_clearance).c_str()));
     text_flow(
         "The collision checker computes this signed value for each arm link against each disk "
         "(segment_disk_signed_distance): positive is the gap, 0 touching, negative how far the disk "

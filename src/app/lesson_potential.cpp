@@ -100,16 +100,6 @@ struct Vec {
 // A cell at the end of a row (out of line: one call per cell, not an inlined string each).
 __attribute__((noinline)) void add(std::vector<std::string>& row, const char* text) { row.emplace_back(text); }
 
-// One line of text, printf-style.
-std::string line(const char* format, ...) __attribute__((format(printf, 1, 2)));
-std::string line(const char* format, ...) {
-  char buf[1024];
-  va_list args;
-  va_start(args, format);
-  std::vsnprintf(buf, sizeof buf, format, args);
-  va_end(args);
-  return buf;
-}
 
 // "a₀", "a₁₂": the homework's name of vertex i.
 std::string vertex_name(int i) {
@@ -631,7 +621,7 @@ class PotentialLesson : public Lesson {
     add(t.sum, Vec(r.F_rep).s);
     add(t.sum, Vec(r.F_att).s);
     add(t.sum, Vec(r.tau).s);
-    t.tau.push_back(line("τ = Σ J_i^T F_i = τ_rep + τ_att = %s + %s = %s%s", Vec(r.tau_rep).s, Vec(r.tau_att).s,
+    t.tau.push_back(ui::format("τ = Σ J_i^T F_i = τ_rep + τ_att = %s + %s = %s%s", Vec(r.tau_rep).s, Vec(r.tau_att).s,
                          Vec(r.tau).s, kind == Kind::Polygon ? "  (F_x, F_y, torque)" : kind == Kind::Arm ? "  (joint torques)" : ""));
     if (r.points.empty()) return t;
     t.chosen = chosen_point(r);
@@ -646,12 +636,12 @@ class PotentialLesson : public Lesson {
     const char* a = name.c_str();
     const Num rho0(field_params_.rho0), eta(field_params_.eta);
     if (p.nearest_obstacle < 0) {
-      out.push_back(line("%s = %s: no obstacles, so no repulsion", a, Vec(p.position).s));
+      out.push_back(ui::format("%s = %s: no obstacles, so no repulsion", a, Vec(p.position).s));
     } else {
-      out.push_back(line("%s = %s: nearest obstacle %d, ρ = %s, ∇ρ = %s; ρ₀ = %s, η = %s", a, Vec(p.position).s,
+      out.push_back(ui::format("%s = %s: nearest obstacle %d, ρ = %s, ∇ρ = %s; ρ₀ = %s, η = %s", a, Vec(p.position).s,
                          p.nearest_obstacle, Num(p.nearest.rho).s, Vec(p.nearest.grad).s, rho0.s, eta.s));
       if (p.terms.empty())
-        out.push_back(line("ρ = %s > ρ₀ = %s: outside ρ₀, so (5.5) U_rep = 0 and (5.6) F_rep = (0, 0)",
+        out.push_back(ui::format("ρ = %s > ρ₀ = %s: outside ρ₀, so (5.5) U_rep = 0 and (5.6) F_rep = (0, 0)",
                            Num(p.nearest.rho).s, rho0.s));
     }
     for (const RepulsiveTerm& term : p.terms) {
@@ -659,35 +649,35 @@ class PotentialLesson : public Lesson {
       if (p.terms.size() > 1) std::snprintf(which, sizeof which, "obstacle %d: ", term.obstacle);
       const double rho = term.distance.rho;
       if (rho == 0.0) {
-        out.push_back(line("%sρ = 0: on the obstacle, U_rep and F_rep are infinite", which));
+        out.push_back(ui::format("%sρ = 0: on the obstacle, U_rep and F_rep are infinite", which));
         continue;
       }
       const Num n_rho(rho), d(1.0 / rho - 1.0 / field_params_.rho0, true);
       const Vec grad(term.distance.grad);
-      out.push_back(line("%s(5.5) U_rep = ½ η (1/ρ − 1/ρ₀)² = ½ · %s · (1/%s − 1/%s)² = ½ · %s · %s² = %s", which,
+      out.push_back(ui::format("%s(5.5) U_rep = ½ η (1/ρ − 1/ρ₀)² = ½ · %s · (1/%s − 1/%s)² = ½ · %s · %s² = %s", which,
                          eta.s, n_rho.s, rho0.s, eta.s, d.s, Num(term.field.U).s));
-      out.push_back(line("%s(5.6) F_rep = η (1/ρ − 1/ρ₀) (1/ρ²) ∇ρ = %s · (1/%s − 1/%s) · (1/%s²) · %s = %s · %s · %s · %s = %s",
+      out.push_back(ui::format("%s(5.6) F_rep = η (1/ρ − 1/ρ₀) (1/ρ²) ∇ρ = %s · (1/%s − 1/%s) · (1/%s²) · %s = %s · %s · %s · %s = %s",
                          which, eta.s, n_rho.s, rho0.s, n_rho.s, grad.s, eta.s, d.s, Num(1.0 / (rho * rho)).s, grad.s,
                          Vec(term.field.F).s));
     }
-    if (p.terms.size() > 1) out.push_back(line("F_rep = the sum of those terms = %s", Vec(p.repulsive.F).s));
+    if (p.terms.size() > 1) out.push_back(ui::format("F_rep = the sum of those terms = %s", Vec(p.repulsive.F).s));
     const Vec2 F = p.attractive.F + p.repulsive.F;
-    const std::string sum = line("F = F_att + F_rep = %s + %s = %s", Vec(p.attractive.F).s, Vec(p.repulsive.F).s, Vec(F).s);
+    const std::string sum = ui::format("F = F_att + F_rep = %s + %s = %s", Vec(p.attractive.F).s, Vec(p.repulsive.F).s, Vec(F).s);
     const PointJacobian& J = p.jacobian;
     switch (robot_kind()) {
       case Kind::Polygon: {
         // J = [[1, 0, -(Rv)_y], [0, 1, (Rv)_x]]: the lever arm is read off the Jacobian.
         const double rx = J(1, 2), ry = -J(0, 2);
-        out.push_back(line("R v = %s − (x, y) = %s;  %s", a, Vec(Vec2(rx, ry)).s, sum.c_str()));
-        out.push_back(line("%s: J^T F = (F_x, F_y, (R v)_x F_y − (R v)_y F_x) = (%s, %s, %s · %s − %s · %s) = %s", a,
+        out.push_back(ui::format("R v = %s − (x, y) = %s;  %s", a, Vec(Vec2(rx, ry)).s, sum.c_str()));
+        out.push_back(ui::format("%s: J^T F = (F_x, F_y, (R v)_x F_y − (R v)_y F_x) = (%s, %s, %s · %s − %s · %s) = %s", a,
                            Num(F.x()).s, Num(F.y()).s, Num(rx, true).s, Num(F.y(), true).s, Num(ry, true).s,
                            Num(F.x(), true).s, Vec(p.tau).s));
         break;
       }
       case Kind::Arm:
-        out.push_back(line("J = [[%s, %s], [%s, %s]];  %s", Num(J(0, 0)).s, Num(J(0, 1)).s, Num(J(1, 0)).s,
+        out.push_back(ui::format("J = [[%s, %s], [%s, %s]];  %s", Num(J(0, 0)).s, Num(J(0, 1)).s, Num(J(1, 0)).s,
                            Num(J(1, 1)).s, sum.c_str()));
-        out.push_back(line("%s: J^T F = (J₁₁ F_x + J₂₁ F_y, J₁₂ F_x + J₂₂ F_y) = %s", a, Vec(p.tau).s));
+        out.push_back(ui::format("%s: J^T F = (J₁₁ F_x + J₂₁ F_y, J₁₂ F_x + J₂₂ F_y) = %s", a, Vec(p.tau).s));
         break;
       case Kind::Point: out.push_back("J = I, so J^T F = " + sum); break;
     }

@@ -1,5 +1,7 @@
 #pragma once
 // Small widgets the panels share.
+#include <cstdarg>
+#include <cstdio>
 #include <string>
 
 #include "imgui.h"
@@ -28,6 +30,20 @@ inline void section(const char* title) {
   ImGui::Spacing();
   ImGui::TextDisabled("%s", title);
   ImGui::Separator();
+}
+
+/// printf into a string, of any length (the lessons' formulas with their numbers put in).
+inline std::string format(const char* pattern, ...) IM_FMTARGS(1);
+inline std::string format(const char* pattern, ...) {
+  va_list args, again;
+  va_start(args, pattern);
+  va_copy(again, args);
+  const int n = std::vsnprintf(nullptr, 0, pattern, args);
+  va_end(args);
+  std::string out(static_cast<std::size_t>(n > 0 ? n : 0), '\0');
+  std::vsnprintf(out.data(), out.size() + 1, pattern, again);
+  va_end(again);
+  return out;
 }
 
 /// Wrapped text that breaks only at spaces: ImGui's own wrapping also breaks after '.', which

@@ -2,6 +2,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { json, fails, run, scene, tempScene } from './lib/cli.mjs';
+import { p9RightArea } from '../lib/p9.mjs';
 
 const GAP = scene('wall-gap.json');
 
@@ -191,26 +192,10 @@ test('bound --tiling: the handout\'s rate and samples for the target', () => {
   }
 });
 
-// P9 by cases: the rays' exits, their areas and the probability, against a polygon clipped here.
+// P9 by cases: the rays' exits, their areas and the probability, against a polygon clipped apart
+// from the lab (tests/lib/p9.mjs).
 test('visibility: the breakdown by cases', () => {
-  const clipArea = (x1, y1, gap) => {
-    let poly = [[0.5, 0], [1, 0], [1, 1], [0.5, 1]];
-    const clip = (through, sign) => {
-      const side = ([x, y]) => sign * ((through[0] - x1) * (y - y1) - (through[1] - y1) * (x - x1));
-      const out = [];
-      poly.forEach((a, i) => {
-        const b = poly[(i + 1) % poly.length], sa = side(a), sb = side(b);
-        if (sa >= 0) out.push(a);
-        if (sa * sb < 0) out.push([a[0] + sa / (sa - sb) * (b[0] - a[0]), a[1] + sa / (sa - sb) * (b[1] - a[1])]);
-      });
-      poly = out;
-    };
-    clip([0.5, 0.5 + gap / 2], -1);
-    clip([0.5, 0.5 - gap / 2], 1);
-    let twice = 0;
-    poly.forEach((a, i) => { const b = poly[(i + 1) % poly.length]; twice += a[0] * b[1] - b[0] * a[1]; });
-    return Math.abs(twice) / 2;
-  };
+  const clipArea = p9RightArea;
   const cases = [[0.3, 0.2, 0.2, 'top/right edge'], [0.45, 0.5, 0.2, 'top/bottom'], [0.45, 0.95, 0.1, 'bottom/bottom'],
                  [0.1, 0.5, 0.1, 'right edge/right edge'], [0.4, 0.1, 0.2, 'top/top'], [0.2, 0.9, 0.4, 'right edge/bottom']];
   for (const [x, y, gap, name] of cases) {

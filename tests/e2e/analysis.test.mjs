@@ -4,6 +4,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { withPage, chord, worldToPage, click, waitFrames, screenshot, inspectPng, api, cli, refusal } from './lib/harness.mjs';
+import { p9RightArea } from '../lib/p9.mjs';
 
 test('PRM analysis: an experiment, and P9 by clicking', () => withPage(async ({ page, browser }) => {
   await api(page, 'select_lesson', { id: 'analysis' });
@@ -161,26 +162,9 @@ test('PRM analysis: P8 as the handout has it, then refined, against the path bou
   assert.equal((await api(page, 'state')).target, 0.001, 'refused: unchanged');
 }));
 
-// P9's exact value by polygon clipping here: the right half cut to the wedge between the two
-// lines from (x1, y1) through the opening's ends.
-function p9Exact(x1, y1, gap) {
-  let poly = [[0.5, 0], [1, 0], [1, 1], [0.5, 1]];
-  const clip = (through, sign) => {
-    const side = ([x, y]) => sign * ((through[0] - x1) * (y - y1) - (through[1] - y1) * (x - x1));
-    const out = [];
-    poly.forEach((a, i) => {
-      const b = poly[(i + 1) % poly.length], sa = side(a), sb = side(b);
-      if (sa >= 0) out.push(a);
-      if (sa * sb < 0) out.push([a[0] + sa / (sa - sb) * (b[0] - a[0]), a[1] + sa / (sa - sb) * (b[1] - a[1])]);
-    });
-    poly = out;
-  };
-  clip([0.5, 0.5 + gap / 2], -1);
-  clip([0.5, 0.5 - gap / 2], 1);
-  let twice = 0;
-  poly.forEach((a, i) => { const b = poly[(i + 1) % poly.length]; twice += a[0] * b[1] - b[0] * a[1]; });
-  return 0.5 + Math.abs(twice) / 2;
-}
+// P9's exact value: the left half and the right half's part seen through the gap, by polygon
+// clipping apart from the lab (tests/lib/p9.mjs).
+const p9Exact = (x1, y1, gap) => 0.5 + p9RightArea(x1, y1, gap);
 
 test('PRM analysis: P9 by cases, and the default draw holds the exact value', () => withPage(async ({ page, browser }) => {
   await api(page, 'select_lesson', { id: 'analysis' });
