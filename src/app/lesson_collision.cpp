@@ -17,6 +17,7 @@
 #include "app/scene_editor.hpp"
 #include "app/theme.hpp"
 #include "app/ui.hpp"
+#include "core/angles.hpp"
 #include "core/edge_check_json.hpp"
 #include "core/work.hpp"
 
@@ -82,7 +83,10 @@ class CollisionLesson : public Lesson {
         if (axis == 1) ImGui::SameLine();
         ImGui::PushID(axis);
         if (ImGui::SliderFloat(axis == 1 ? (which == 0 ? "p" : "q") : "##x", &v, lo, hi, "%.3f")) {
-          c[axis] = std::clamp(static_cast<double>(v), static_cast<double>(lo), static_cast<double>(hi));
+          // Clamped in double to the scene's own bounds: float(-0.1) is below -0.1, and a point at
+          // the slider's end was outside the workspace (a scene set_scene then refused).
+          c[axis] = arm_ ? wrap_angle(static_cast<double>(v))
+                         : std::clamp(static_cast<double>(v), scene_.workspace_min[axis], scene_.workspace_max[axis]);
           changed = true;
         }
         ImGui::PopID();
