@@ -366,6 +366,14 @@ void Prm::find_candidates() {
     event_.vertex = p_;
     event_.q = q;
     event_.candidates = static_cast<int>(candidates_.size());
+    if (params_.neighbors.kind == NeighborRule::Kind::Radius) {
+      event_.seen = static_cast<int>(scratch_.size() - candidates_.size());
+    } else {
+      const std::size_t row = static_cast<std::size_t>(p_) * static_cast<std::size_t>(k_);
+      int close = 0;
+      for (int i = 0; i < k_ && knn_[row + static_cast<std::size_t>(i)].index >= 0; ++i) ++close;
+      event_.seen = close - event_.candidates;
+    }
   }
 }
 

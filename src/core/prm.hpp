@@ -94,6 +94,7 @@ struct PrmEvent {
   Config q;           ///< the sample or endpoint
   int obstacle = -1;  ///< the obstacle hit (rejected sample, endpoint in collision)
   int candidates = 0;
+  int seen = 0;         ///< Neighbors: close pairs left out, checked already from the other vertex
   int evaluations = 0;  ///< configurations the edge check (or the connector) evaluated
   int skipped = 0;      ///< grid checkers: configurations the endpoints' clearances prove free, untested
   double collision_t = std::numeric_limits<double>::quiet_NaN();

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/angles.hpp"
 #include "core/experiment.hpp"
 
 using csl::config;
@@ -70,6 +71,35 @@ TEST_CASE("the failure rate falls with n and respects the bound") {
   CHECK(rows[0].failures > rows[2].failures);
   CHECK(rows[0].failures > 0);
   CHECK(rows[2].failure_rate.estimate < 0.2);
+}
+
+TEST_CASE("where the bound says something, it is m e^(-sigma r^d n) and the measured rate respects it") {
+  // A wide opening (0.3) gives a clearance large enough for the bound to fall below 1 at a few
+  // hundred samples; the narrow gap above leaves every row vacuous, where "rate <= bound" could
+  // not fail. The bound is written again here from the handout: m = ceil(L / (r/2)),
+  // sigma = mu(B_1) / (2^d mu(F)) with mu(B_1) = pi in the plane.
+  const csl::CollisionWorld wide(csl::PointRobot{},
+                                 {csl::Wall{{0.5, 0.0}, {0.5, 0.35}}, csl::Wall{{0.5, 0.65}, {0.5, 1.0}}}, {0, 0}, {1, 1});
+  csl::Experiment ex(wide, config({0.15, 0.5}), config({0.85, 0.5}), params({20, 200, 600}, 30));
+  ex.run();
+  const auto& ref = ex.reference();
+  REQUIRE(ref.path_exists);
+  REQUIRE(ref.dimension == 2);
+  int real = 0;
+  for (const auto& row : ex.rows()) {
+    REQUIRE(row.has_bound);
+    const double m = std::ceil(ref.path_length / (ref.clearance / 2));
+    const double sigma = csl::kPi / (4.0 * ref.free_volume);
+    const double bound = m * std::exp(-sigma * ref.clearance * ref.clearance * row.samples);
+    CHECK(row.bound.balls == m);
+    CHECK(row.bound.bound == doctest::Approx(bound).epsilon(1e-9));
+    CHECK(row.bound.vacuous == (bound >= 1.0));
+    if (row.bound.vacuous) continue;
+    ++real;
+    CHECK(row.failure_rate.low <= row.bound.bound);
+    MESSAGE("n = " << row.samples << ": " << row.failures << "/" << row.trials << " failures, bound " << row.bound.bound);
+  }
+  CHECK(real >= 1);  // a row whose bound can be tested
 }
 
 TEST_CASE("experiments are reproducible from their seed") {
