@@ -8,9 +8,12 @@
 // at its default 1% of the space's extent, our step:D checker with that very D (it tests the
 // same configurations along an edge). OMPL's PRM is driven by a milestone-count termination
 // condition, never by time. Reported: microseconds per milestone and the ratio OMPL / ours.
+// It fails (exit 1) when the runs disagree (see disagreements()): ctest's quick run checks that.
 // Built for wasm (without OMPL) it reports our figures alone, for the wasm/native ratio
 // (tests/bench/compare_wasm.mjs runs both).
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <functional>
@@ -35,6 +38,7 @@ struct Result {
   double seconds = 0;
   long milestones = 0;
   long edges = 0;
+  std::uint64_t hash = 0;  ///< our roadmap's (0 for OMPL's)
   double us_per_milestone() const { return 1e6 * seconds / static_cast<double>(milestones); }
 };
 
@@ -62,6 +66,7 @@ Result ours(const csl::CollisionWorld& world, const csl::Config& start, const cs
   r.seconds = timer.seconds();
   r.milestones = static_cast<long>(prm.roadmap().vertices.size());
   r.edges = prm.edges_alive();
+  r.hash = csl::roadmap_hash(prm.roadmap());
   return r;
 }
 
@@ -150,6 +155,35 @@ Scene scene(std::string name, const csl::CollisionWorld& world, double step) {
   return s;
 }
 
+// What the runs must agree on, or the figures compare different work: the roadmap built phase
+// by phase and the one built step by step (the same seed: identical, to the bit), OMPL's
+// milestones and ours (it grows until it has as many), and edges per milestone of the same
+// order (k = 10 both; OMPL also joins pairs that only one side has among its k nearest, so it
+// has more, not several times more or fewer). Each disagreement is printed; main() fails on any.
+int disagreements(const Scene& s, const Row& row) {
+  int bad = 0;
+  const Result stepped = ours(*s.world, s.start, s.goal, row.samples, s.step, 1, true);
+  if (stepped.hash != row.reference.hash || stepped.edges != row.reference.edges) {
+    std::fprintf(stderr, "%s, n = %d: stepping built another roadmap than phase by phase (%ld vs %ld edges)\n",
+                 row.scene.c_str(), row.samples, stepped.edges, row.reference.edges);
+    ++bad;
+  }
+  if (row.ompl.milestones) {
+    if (row.ompl.milestones < row.reference.milestones || row.ompl.milestones > row.reference.milestones + 1) {
+      std::fprintf(stderr, "%s, n = %d: OMPL grew %ld milestones, ours %ld\n", row.scene.c_str(), row.samples,
+                   row.ompl.milestones, row.reference.milestones);
+      ++bad;
+    }
+    const double ratio = static_cast<double>(row.ompl.edges) / static_cast<double>(std::max(1L, row.reference.edges));
+    if (!(ratio >= 0.8 && ratio <= 2.5)) {
+      std::fprintf(stderr, "%s, n = %d: OMPL has %ld edges, ours %ld\n", row.scene.c_str(), row.samples,
+                   row.ompl.edges, row.reference.edges);
+      ++bad;
+    }
+  }
+  return bad;
+}
+
 // One row: our PRM phase by phase and stepped, and OMPL's, n samples, in turns.
 Row measure(const Scene& s, int n, int repeats) {
   Row row{s.name, n, {}, {}, {}, {}};
@@ -216,8 +250,12 @@ int main(int argc, char** argv) {
   }
 
   std::vector<Row> rows;
+  int bad = 0;
   for (const Scene& s : scenes)
-    for (int n : sizes) rows.push_back(measure(s, n, repeats));
+    for (int n : sizes) {
+      rows.push_back(measure(s, n, repeats));
+      bad += disagreements(s, rows.back());
+    }
 
   if (as_json) {
     std::printf("[");
@@ -227,7 +265,7 @@ int main(int argc, char** argv) {
                   rows[i].ours.us_per_milestone(), rows[i].stepped.us_per_milestone(),
                   rows[i].ompl.milestones ? std::to_string(rows[i].ompl.us_per_milestone()).c_str() : "null");
     std::printf("]\n");
-    return 0;
+    return bad ? 1 : 0;
   }
   std::printf("Roadmap construction, k = 10, matching edge-check resolution, best of %d runs taken in turns\n", repeats);
   std::printf("%-26s %7s %10s %11s %11s %11s %10s %10s %7s\n", "scene", "samples", "milestones", "ours us/ms", "stepped",
@@ -244,5 +282,6 @@ int main(int argc, char** argv) {
   std::printf("(us/ms: microseconds per milestone; ours: phase by phase, as the CLI runs it; stepped: one step()\n"
               " and its event at a time, as a lesson animates it; ratio: OMPL's time per milestone / ours;\n"
               " milestones and ours edges: our roadmap with seed 1, the runs timed use seeds 1, 2, ...)\n");
-  return 0;
+  if (bad) std::fprintf(stderr, "%d disagreement(s): the figures above compare different work\n", bad);
+  return bad ? 1 : 0;
 }

@@ -7,19 +7,38 @@ import assert from 'node:assert/strict';
 import { withBrowser, collectErrors, screenshot } from './lib/harness.mjs';
 
 // Opens the front page with `remove` run first, and returns the lab's status line once the
-// page has settled (the wasm would have started within that time).
+// loader has given up. "Does not start" is not a matter of waiting a while and looking once: the
+// factory of the wasm module (createCSpaceLab) and WebAssembly.instantiate are watched from
+// before the page's scripts run; the page runs on Playwright's fake clock, which, once the
+// loader has settled (lab.js's `ready` resolves when every start() has returned), is moved ten
+// minutes on, firing every timer a late start could hide in; only then is the watch read.
 async function statusWithout(browser, url, remove) {
   const page = await browser.newPage({ viewport: { width: 900, height: 600 } });
   const errors = collectErrors(page);
+  await page.clock.install();
+  await page.addInitScript(() => {
+    window.__factoryCalls = 0;
+    const instantiate = WebAssembly.instantiate;
+    WebAssembly.instantiate = (...args) => { window.__factoryCalls += 1; return instantiate(...args); };
+    let factory;
+    Object.defineProperty(window, 'createCSpaceLab', {
+      configurable: true,
+      get: () => factory && ((...args) => { window.__factoryCalls += 1; return factory(...args); }),
+      set: (f) => { factory = f; },
+    });
+  });
   await page.addInitScript(remove);
   await page.goto(url);
   await page.waitForSelector('.lab-status.error', { timeout: 30000 });
-  await page.waitForTimeout(500);
+  await page.waitForFunction(() => window.CSpaceLab && window.CSpaceLab.ready, null, { timeout: 30000 });
+  const settled = await page.evaluate(async () => (await window.CSpaceLab.ready).filter(Boolean).length);
+  await page.clock.runFor(10 * 60 * 1000);
   const result = await page.evaluate(() => ({
     text: document.querySelector('.lab-status').textContent,
     visible: !document.querySelector('.lab-status').hidden,
-    started: typeof window.cspacelab !== 'undefined',
+    started: typeof window.cspacelab !== 'undefined' || window.CSpaceLab.instances.length > 0 || window.__factoryCalls > 0,
   }));
+  assert.equal(settled, 0, 'no lab started');
   return { page, errors, ...result };
 }
 

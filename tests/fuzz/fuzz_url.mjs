@@ -1,6 +1,8 @@
 // Fuzzing of web/lab-url.js, the page's link parser, under node: JavaScript is out of
 // libFuzzer's reach, so this is a seeded, time-bounded mutation loop with property checks.
-//   node tests/fuzz/fuzz_url.mjs [SECONDS=30] [SEED=from the clock, printed]
+//   node tests/fuzz/fuzz_url.mjs [SECONDS=30] [SEED=from the clock, printed] [MIN_EXECUTIONS=0]
+// (CI runs a fixed seed and fails a run of fewer than MIN_EXECUTIONS inputs, or with a kind of
+// input left out: a slow or broken generator must not pass as a fuzz run: tests/CMakeLists.txt.)
 //   node tests/fuzz/fuzz_url.mjs --replay FILE      (a finding saved by an earlier run)
 // Inputs: links built from the bundled scenes (by name, z. and j. encoded), every lesson id and
 // parameters of every type, mutated; random text; corrupted scene payloads; random valid states.
@@ -272,4 +274,11 @@ if (process.argv[2] === '--replay') {
   }
   console.log(`fuzz_url: ${n} executions in ${seconds} s (seed ${seed}): ` +
               Object.entries(counts).map(([k, c]) => `${c} ${k}`).join(', '));
+  const least = Number(process.argv[4] || 0);
+  const starved = Object.entries(counts).filter(([, c]) => c < least / 20).map(([k]) => k);
+  if (n < least || starved.length) {
+    console.error(`fuzz_url: too little fuzzing: ${n} executions (at least ${least} asked)` +
+                  (starved.length ? `, too few of ${starved.join(', ')} (at least ${least / 20} each)` : ''));
+    process.exitCode = 1;
+  }
 }

@@ -128,6 +128,14 @@ test('messages quote untrusted text short and printable', () => {
   assert.equal(U.excerpt('abc'), '"abc"');
   assert.equal(U.excerpt('a\u0000b\nc\u202e'), '"a?b?c\u202e"');
   assert.equal(U.excerpt('x'.repeat(30)), '"' + 'x'.repeat(24) + '…"');
-  assert.equal(U.hash('lesson=p12'), U.hash('lesson=p12'));
+  // FNV-1a, 32 bits: the published test vectors (Fowler, Noll, Vo: "a" and "foobar"), and one
+  // of the lab's own keys worked by hand over its bytes; then a character past one byte (the
+  // hash reads UTF-16 code units: 'é' is 0xE9, '€' is 0x20AC).
+  assert.equal(U.hash(''), '811c9dc5');
+  assert.equal(U.hash('a'), 'e40c292c');
+  assert.equal(U.hash('foobar'), 'bf9cf968');
+  assert.equal(U.hash('lesson=p12'), '747a752f');
+  const fnv = (units) => units.reduce((h, u) => Number((BigInt(h ^ u) * 0x01000193n) & 0xffffffffn), 0x811c9dc5);
+  assert.equal(U.hash('é€'), fnv([0xe9, 0x20ac]).toString(16).padStart(8, '0'));
   assert.notEqual(U.hash('a'), U.hash('b'));
 });
