@@ -1319,7 +1319,9 @@
     // ---- input: focus, wheel, drag and drop -------------------------------------------------
 
     focused() {
-      return document.activeElement === this.canvas && document.hasFocus();
+      // The canvas, or the textarea that takes typed text while a field of the app has the keyboard.
+      const a = document.activeElement;
+      return (a === this.canvas || a === this.canvas.cslText) && document.hasFocus();
     }
 
     installInput() {

@@ -4,19 +4,106 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 
 #include "app/fonts.hpp"
 #include "imgui.h"
+#include "imgui_internal.h"  // the text field's place (PlatformImePos)
 #include "imgui_impl_opengl3.h"
 #include "imgui_impl_sdl.h"
 
 #ifdef __EMSCRIPTEN__
+#include <EGL/egl.h>
 #include <GLES3/gl3.h>
 #include <emscripten.h>
 #include <emscripten/html5.h>
+#define EMSCRIPTEN_KEEPALIVE_IF_WEB EMSCRIPTEN_KEEPALIVE
 #else
 #include <SDL_opengl.h>
+#define EMSCRIPTEN_KEEPALIVE_IF_WEB
 #endif
+
+#ifdef __EMSCRIPTEN__
+// Text that comes without a key press (a × or ² from a character palette, a compose key or an
+// on-screen keyboard, a paste) goes only to an editable element, as an input event: SDL's
+// Emscripten port reads key presses on the canvas alone, so such text was dropped. While a text
+// field of the app has the keyboard, a hidden textarea next to the canvas takes the focus (and on
+// a phone brings up its keyboard): its key events are passed on to the canvas, where SDL handles
+// them as before (and cancels the textarea's own typing, so nothing arrives twice), and what
+// still lands in it goes to ImGui. `on`: a field has the keyboard; x, y: where (CSS px).
+EM_JS(void, csl_text_field_js, (int on, float x, float y), {
+  var c = Module.canvas, t = c.cslText;
+  if (!t) {
+    if (!on || !c.parentNode) return;
+    t = c.cslText = document.createElement("textarea");
+    t.className = "lab-text-proxy";
+    t.setAttribute("aria-label", "the lab's text field");
+    t.setAttribute("autocomplete", "off");
+    t.setAttribute("autocapitalize", "off");
+    t.spellcheck = false;
+    t.tabIndex = -1;
+    c.parentNode.insertBefore(t, c.nextSibling);
+    var pass = function(e) {
+      var f = new KeyboardEvent(e.type, {key: e.key, code: e.code, location: e.location, repeat: e.repeat,
+        ctrlKey: e.ctrlKey, shiftKey: e.shiftKey, altKey: e.altKey, metaKey: e.metaKey, keyCode: e.keyCode,
+        charCode: e.charCode, which: e.which, bubbles: true, cancelable: true});
+      if (!c.dispatchEvent(f)) e.preventDefault();
+    };
+    ["keydown", "keyup", "keypress"].forEach(function(type) { t.addEventListener(type, pass); });
+    t.addEventListener("beforeinput", function(e) {
+      // An on-screen keyboard's backspace comes as an edit of the (empty) textarea, not a key.
+      if (e.inputType !== "deleteContentBackward" || t.value) return;
+      e.preventDefault();
+      pass({type: "keydown", key: "Backspace", code: "Backspace", keyCode: 8, which: 8, preventDefault: function() {}});
+      pass({type: "keyup", key: "Backspace", code: "Backspace", keyCode: 8, which: 8, preventDefault: function() {}});
+    });
+    t.addEventListener("input", function() {
+      var d = t.value;
+      t.value = "";
+      if (!d) return;
+      var n = lengthBytesUTF8(d) + 1, p = _malloc(n);
+      stringToUTF8(d, p, n);
+      _csl_text_input(p);
+      _free(p);
+    });
+  }
+  var focused = document.activeElement;
+  if (on) {
+    t.style.left = (c.offsetLeft + x) + "px";
+    t.style.top = (c.offsetTop + y) + "px";
+    if (focused === c) t.focus({preventScroll: true});
+  } else if (focused === t) {
+    c.focus({preventScroll: true});
+  }
+});
+
+// SDL's EGL layer takes eglGetProcAddress by address, and Emscripten's own version of it names
+// every WebGL entry point of its GL library, which puts all of them (about 45 KB of JS, more than
+// the app uses) into cspacelab.js. SDL only ever asks it for a few: those are given here, the
+// rest (EGL extensions it may do without) as null, as a driver that lacks them answers.
+extern "C" __eglMustCastToProperFunctionPointerType eglGetProcAddress(const char* name) {
+  using Proc = __eglMustCastToProperFunctionPointerType;
+  static const struct {
+    const char* name;
+    Proc proc;
+  } kKnown[] = {
+      {"glGetString", reinterpret_cast<Proc>(&glGetString)},
+      {"glGetStringi", reinterpret_cast<Proc>(&glGetStringi)},
+      {"glGetIntegerv", reinterpret_cast<Proc>(&glGetIntegerv)},
+      {"glGetError", reinterpret_cast<Proc>(&glGetError)},
+      {"glBindFramebuffer", reinterpret_cast<Proc>(&glBindFramebuffer)},
+      {"glGetFramebufferAttachmentParameteriv", reinterpret_cast<Proc>(&glGetFramebufferAttachmentParameteriv)},
+  };
+  for (const auto& k : kKnown)
+    if (name && std::strcmp(name, k.name) == 0) return k.proc;
+  return nullptr;
+}
+#endif
+
+/// Text for the field that has the keyboard (from the page: see csl_text_field_js).
+extern "C" EMSCRIPTEN_KEEPALIVE_IF_WEB void csl_text_input(const char* utf8) {
+  if (utf8 && ImGui::GetCurrentContext()) ImGui::GetIO().AddInputCharactersUTF8(utf8);
+}
 
 namespace csl::app {
 
@@ -173,6 +260,15 @@ void Platform::frame_once() {
   ImGui::NewFrame();
   frame_();
   ImGui::Render();
+#ifdef __EMSCRIPTEN__
+  // While a field has the keyboard, every frame (a click on the canvas takes the focus back);
+  // once when it lets go.
+  if (ImGui::GetIO().WantTextInput || text_mode_) {
+    text_mode_ = ImGui::GetIO().WantTextInput;
+    const ImVec2 at = ImGui::GetCurrentContext()->PlatformImePos;
+    csl_text_field_js(text_mode_ ? 1 : 0, at.x < 1e6f ? at.x : 0.0f, at.y < 1e6f ? at.y : 0.0f);
+  }
+#endif
   const double ui_done = now_ms();
 
   const ImGuiIO& io = ImGui::GetIO();

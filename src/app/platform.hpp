@@ -64,6 +64,7 @@ class Platform {
   FrameStats stats_;
   long max_frames_ = -1;
   bool quit_ = false;
+  bool text_mode_ = false;  // the canvas takes text from the page (a text field has the keyboard)
 };
 
 }  // namespace csl::app
