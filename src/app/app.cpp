@@ -9,6 +9,7 @@
 
 #include "app/fonts.hpp"
 #include "app/js_api.hpp"
+#include "app/panel.hpp"
 #include "app/theme.hpp"
 #include "app/ui.hpp"
 #include "app/bundled_scenes.hpp"
@@ -89,13 +90,15 @@ bool App::select_lesson(const std::string& id) {
   lesson_id_ = id;
   ctx_.playback.playing = false;
   ctx_.views.clear();
+  ctx_.plots.clear();
   ctx_.log.clear();
+  lesson_->on_show();  // its log again (it went with the clear), from where it stands
   return true;
 }
 
 void App::register_api() {
   JsApi& api = js_api();
-  api.add("status", "frames drawn, frame times, version, pixel ratio, lesson", [this](const json&) {
+  api.add("status", "frames drawn, frame times, version, pixel ratio, lesson, the side panel's measures and sections", [this](const json&) {
     const FrameStats& f = platform_.frame_stats();
     return json{{"frames", platform_.frame_count()},
                 {"version", kVersion},
@@ -106,6 +109,7 @@ void App::register_api() {
                 {"ui_ms", {{"mean", f.mean_ui_ms}, {"p95", f.p95_ui_ms}, {"max", f.max_ui_ms}}},
                 {"vertices", f.vertices},
                 {"notice", ImGui::GetTime() < ctx_.notice_until ? ctx_.notice : ""},
+                {"panel", panel::state()},
                 {"busy", busy_json()}};
   });
   api.add("lessons", "the lessons: [{id, name, category, open}] (open: started, has state)", [this](const json&) {
@@ -182,9 +186,19 @@ void App::register_api() {
     finish(*lesson_, args);
     return json(done);
   });
-  api.add("view", "CSS pixels of world points in a view: {view: 'workspace'|'cspace', points: [[x,y],...]}",
+  api.add("view", "CSS pixels of world points in a view: {view: 'workspace'|'cspace'|a plot's name, points: [[x,y],...]}; its axes' labels, whether it shows its Fit button",
           [this](const json& args) {
             const std::string name = args.value("view", "workspace");
+            if (auto plot = ctx_.plots.find(name); plot != ctx_.plots.end()) {
+              // A plot: data points (its axes' units, log or not) to CSS pixels.
+              json points = json::array();
+              for (const json& p : args.value("points", json::array())) {
+                if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number())
+                  throw ApiError("points must be [[x, y], ...]");
+                points.push_back(vec_json(plot->second->to_screen(p[0].get<double>(), p[1].get<double>())));
+              }
+              return json{{"points", points}, {"plot", true}};
+            }
             auto it = ctx_.views.find(name);
             if (it == ctx_.views.end()) throw ApiError("this lesson has no view \"" + name + "\"");
             const WorkspaceView& v = *it->second;
@@ -197,7 +211,9 @@ void App::register_api() {
             return json{{"canvas_min", vec_json(v.canvas_min())},
                         {"canvas_max", vec_json(v.canvas_max())},
                         {"scale", v.scale()},
-                        {"points", points}};
+                        {"points", points},
+                        {"ticks", {{"x", v.tick_labels(0)}, {"y", v.tick_labels(1)}}},
+                        {"fit_button", v.fit_button_shown()}};
           });
   // The whole state a link or an autosave needs to reproduce what is on screen exactly.
   api.add("snapshot", "{lesson, scene, params, steps}: everything needed to restore this view exactly ({lesson: id}: an open lesson's)",
@@ -344,19 +360,24 @@ void App::playback_controls() {
   }
   ImGui::BeginDisabled(lesson_->steps() == 0);
   if (ImGui::Button("\xE2\x97\x80 Back")) lesson_->step_back();  // ◀
+  web::record_control("back");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("step back (,)");
   ImGui::EndDisabled();
   ui::flow(ui::button_width("Step \xE2\x96\xB6"));
   ImGui::BeginDisabled(lesson_->finished());
   if (ImGui::Button("Step \xE2\x96\xB6")) lesson_->step_forward();  // ▶
+  web::record_control("step");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("one step (.)");
   ui::flow(ui::button_width("Finish phase"));
   if (ImGui::Button("Finish phase")) lesson_->finish_phase();
+  web::record_control("finish-phase");
   ui::flow(ui::button_width("Run all"));
   if (ImGui::Button("Run all")) lesson_->run_all();
+  web::record_control("run-all");
   ImGui::EndDisabled();
   ImGui::BeginDisabled(lesson_->finished() && !pb.playing);
   if (ImGui::Button(pb.playing ? "Pause " : "\xE2\x96\xB6 Play")) pb.playing = !pb.playing;
+  web::record_control("play");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("play or pause (Space)");
   ImGui::EndDisabled();
   ImGui::SameLine();
@@ -416,11 +437,13 @@ void App::frame() {
   top_bar();
   ImGui::Separator();
   const float panel_w = std::clamp(vp->WorkSize.x * 0.3f, 280.0f, 380.0f);
-  ImGui::BeginChild("panel", ImVec2(panel_w, 0), false);
+  panel::begin(panel_w);
   homework_.card(lesson_id_);
   playback_controls();
+  ImGui::PushID(lesson_id_.c_str());  // each lesson's folded sections its own
   lesson_->panel(ctx_);
-  ImGui::EndChild();
+  ImGui::PopID();
+  panel::end();
   ImGui::SameLine();
   ImGui::BeginChild("main", ImVec2(0, 0), false, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
   // The event log, for lessons that step through an algorithm or report progress.

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "app/event_log.hpp"
+#include "app/plot.hpp"
 #include "app/workspace_view.hpp"
 
 namespace csl::app {
@@ -26,6 +27,8 @@ struct LabContext {
   /// The lesson's views by name ("workspace", "cspace"), for the JS API's coordinate queries and
   /// the F key (fit the view).
   std::map<std::string, WorkspaceView*> views;
+  /// The lesson's plots by name ("bound"): the JS API maps data points through them as through views.
+  std::map<std::string, const Plot*> plots;
 
   /// Shows a one-line notice for a few seconds.
   void notify(const std::string& text, double seconds = 5.0);

@@ -142,9 +142,17 @@ void draw_roadmap(const WorkspaceView& view, const Space& space, const Roadmap& 
       batch.segment(sa, sb, theme::component_color(c, alpha), 1.2f);
     }
   }
+  // Vertices as squares with a dark rim, large enough to find and count while the roadmap is
+  // small (6 px across up to 400 vertices), smaller as it fills the view (a 20000-vertex
+  // roadmap of 6 px squares hides its own edges); never below 4 px (they were 3.6 px, no rim).
+  const double n = static_cast<double>(v.size());
+  const float half = n <= 400 ? 3.0f : n <= 3000 ? 2.5f : 2.0f;
   for (std::size_t i = 2; i < v.size(); ++i) {
     const int c = labels.empty() ? 0 : labels[i];
-    batch.square(view.to_screen(Vec2(v[i][0], v[i][1])), 1.8f, theme::component_color(c));
+    const ImVec2 at = view.to_screen(Vec2(v[i][0], v[i][1]));
+    // (Past 3000 vertices no rim: twice the quads for a rim too small to see.)
+    if (n <= 3000) batch.square(at, half + 1.0f, theme::rgba(30, 30, 30, 200));
+    batch.square(at, half, theme::component_color(c));
   }
   if (every > 1) {
     char text[96];

@@ -26,6 +26,8 @@ class Lesson {
   virtual void views(LabContext& ctx, ImVec2 size) = 0;
   /// Called once a frame before panel/views: advance animations, replay after edits.
   virtual void update(LabContext&) {}
+  /// The lesson comes on screen (the app cleared the event log): log where it stands again.
+  virtual void on_show() {}
 
   /// The scene the lesson works on (get_scene/set_scene, undo), or nullptr.
   virtual Scene* scene() { return nullptr; }

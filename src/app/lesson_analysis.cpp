@@ -25,6 +25,7 @@
 #include "app/draw.hpp"
 #include "app/js_api.hpp"
 #include "app/lesson.hpp"
+#include "app/panel.hpp"
 #include "app/plot.hpp"
 #include "app/scene_editor.hpp"
 #include "app/theme.hpp"
@@ -99,6 +100,7 @@ class AnalysisLesson : public Lesson {
       editor_.help_window();
       ImGui::SameLine();
       bound_plot(ImVec2(size.x - side - ImGui::GetStyle().ItemSpacing.x, size.y));
+      ctx.plots["bound"] = &plot_;
     } else {
       const float side = std::min(size.x, size.y);
       p9_view_.begin("##p9", ImVec2(side, size.y), Vec2(0, 0), Vec2(1, 1));
@@ -396,7 +398,19 @@ class AnalysisLesson : public Lesson {
   }
 
   void bound_panel(LabContext& ctx) {
-    ui::section("The bound of section 2.1");
+    if (panel::fold("The bound of section 2.1")) bound_section();
+    if (panel::fold("How L, r and μ(F) were measured", false)) {
+      ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+      ImGui::TextWrapped("L and r on the widest path (the largest clearance) of a reference roadmap of 3000 samples, "
+                         "r = its least clearance in the workspace (proven, a lower bound) / the robot's Lipschitz "
+                         "constant; μ(F) by Monte Carlo");
+      ImGui::PopStyleColor();
+    }
+    if (panel::fold("Experiment: run PRM many times")) experiment_section(ctx);
+    if (panel::fold("Obstacles") && editor_.toolbar(scene_, ctx)) measure();
+  }
+
+  void bound_section() {
     ImGui::TextWrapped("A free path of length L with clearance r is covered by m = ceil(L/(r/2)) balls of "
                        "radius r/2; PRM fails only if one of them gets no sample:");
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.0f, 0.3f, 0.55f, 1.0f));
@@ -430,14 +444,9 @@ class AnalysisLesson : public Lesson {
                          count_text(std::ceil(t->interior_samples_for(target_))).c_str(),
                          count_text(std::ceil(t->samples_for(target_))).c_str());
     }
-    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    ImGui::TextWrapped("measured: L and r on the widest path (the largest clearance) of a reference roadmap of "
-                       "3000 samples, r = its least clearance in the workspace (proven, a lower bound) / the "
-                       "robot's Lipschitz constant; "
-                       "μ(F) by Monte Carlo");
-    ImGui::PopStyleColor();
+  }
 
-    ui::section("Experiment: run PRM many times");
+  void experiment_section(LabContext& ctx) {
     ImGui::PushItemWidth(-110);
     ImGui::InputText("n values", counts_text_, sizeof counts_text_);
     ImGui::SliderInt("runs per n", &trials_, 1, 200);
@@ -499,8 +508,6 @@ class AnalysisLesson : public Lesson {
         ImGui::EndTable();
       }
     }
-    ui::section("Obstacles");
-    if (editor_.toolbar(scene_, ctx)) measure();
   }
 
   void bound_plot(ImVec2 size) {
@@ -512,7 +519,7 @@ class AnalysisLesson : public Lesson {
     if (const std::optional<TilingBound> t = tiling()) n_hi = std::max(n_hi, std::min(1e6, 1.5 * t->samples_for(target_)));
     n_hi = std::pow(10.0, std::ceil(std::log10(n_hi)));
     n_lo = std::pow(10.0, std::floor(std::log10(std::max(n_lo, 1.0))));
-    Plot plot;
+    Plot& plot = plot_;
     plot.begin("##bound-plot", size, {n_lo, n_hi, true, "samples n (log scale)"}, {1e-4, 1e3, true, "P(failure)"});
     plot.shade_above(1.0, theme::rgba(0, 0, 0, 18), "above 1: the bound says nothing");
     std::vector<double> xs, path_bound, handout, refined;
@@ -594,59 +601,67 @@ class AnalysisLesson : public Lesson {
   // P8, the handout's way first (its m, sigma, the bound with the numbers in, the n it needs for
   // the student's p), then the refined bound and the path bound beside it.
   void tiling_panel() {
-    ui::section("P8: tile the whole cube");
     const std::optional<TilingBound> t = tiling();
-    ImGui::TextWrapped("Cover all of F = [0,1]^%d with balls of radius r/2 instead of one path (r and d: the "
-                       "scene's, tab Bound).", dim_);
+    const bool open = panel::fold("P8: tile the whole cube");
+    if (open) {
+      ImGui::TextWrapped("Cover all of F = [0,1]^%d with balls of radius r/2 instead of one path (r and d: the "
+                         "scene's, tab Bound).", dim_);
+      if (t) {
+        ImGui::PushItemWidth(-ui::toggle_width("target p") + ImGui::GetFrameHeight());
+        double p = target_;
+        // Typed digit by digit ("0", "0.0", "0.01"): only a p in (0, 1) is taken.
+        if (ImGui::InputDouble("target p", &p, 0.0, 0.0, "%g") && p > 0.0 && p < 1.0) target_ = p;
+        ImGui::PopItemWidth();
+      }
+    }
     if (!t) {
       ImGui::TextColored(ImVec4(0.7f, 0.25f, 0.0f, 1.0f), "no clearance r > 0 (or too many balls): set r in tab Bound");
       return;
     }
-    ImGui::PushItemWidth(-ui::toggle_width("target p") + ImGui::GetFrameHeight());
-    double p = target_;
-    // Typed digit by digit ("0", "0.0", "0.01"): only a p in (0, 1) is taken.
-    if (ImGui::InputDouble("target p", &p, 0.0, 0.0, "%g") && p > 0.0 && p < 1.0) target_ = p;
-    ImGui::PopItemWidth();
     const double lead = std::max(2.0, std::sqrt(static_cast<double>(dim_)));
     const double n_handout = t->interior_samples_for(target_), n_refined = t->samples_for(target_);
     const std::string m = count_text(t->balls), per_axis = count_text(t->per_axis);
     const ImVec4 key = key_colour();
     const FailureBound path = bound(0);
-    // The headline, in view also in a small embed: the handout's n first.
-    const std::string path_n = path.rate > 0 ? count_text(std::ceil(path.samples_for(target_))) : "?";
-    formula(ui::format("n for p = %s: %s as in the handout, %s refined, %s for one path (2.1)", target_text().c_str(),
-                   count_text(std::ceil(n_handout)).c_str(), count_text(std::ceil(n_refined)).c_str(), path_n.c_str()),
-            &key);
+    if (open) {
+      // The headline, in view also in a small embed: the handout's n first.
+      const std::string path_n = path.rate > 0 ? count_text(std::ceil(path.samples_for(target_))) : "?";
+      formula(ui::format("n for p = %s: %s as in the handout, %s refined, %s for one path (2.1)", target_text().c_str(),
+                     count_text(std::ceil(n_handout)).c_str(), count_text(std::ceil(n_refined)).c_str(), path_n.c_str()),
+              &key);
 
-    ImGui::TextColored(key, "The handout's bound");
-    dim_text_wrapped("A grid of N balls per axis, 1/N apart: neighbours at most r/2 apart needs N ≥ 2/r, and "
-                     "covering every point (half a cell's diagonal, √d/(2N), at most r/2) needs N ≥ √d/r.");
-    formula(ui::format("N = ⌈max(2, √d)/r⌉ = ⌈%.4g/%.4g⌉ = %s", lead, clearance_, per_axis.c_str()));
-    formula(ui::format("m = N^d = %s^%d = %s", per_axis.c_str(), dim_, m.c_str()));
-    formula(ui::format("σ = μ(B₁)/2^d = %.4g/%s = %.4g", unit_ball_volume(dim_), count_text(std::ldexp(1.0, dim_)).c_str(),
-                   t->sigma));
-    formula(ui::format("P(fail) ≤ m e^(−σ r^d n) = %s e^(−%.4g n)", m.c_str(), t->rate));
-    formula(ui::format("n = ln(m/p)/(σ r^d) = ln(%s/%s)/%.4g = %s", m.c_str(), target_text().c_str(), t->rate,
-                   count_text(std::ceil(n_handout)).c_str()),
-            &key);
+      ImGui::TextColored(key, "The handout's bound");
+      dim_text_wrapped("A grid of N balls per axis, 1/N apart: neighbours at most r/2 apart needs N ≥ 2/r, and "
+                       "covering every point (half a cell's diagonal, √d/(2N), at most r/2) needs N ≥ √d/r.");
+      formula(ui::format("N = ⌈max(2, √d)/r⌉ = ⌈%.4g/%.4g⌉ = %s", lead, clearance_, per_axis.c_str()));
+      formula(ui::format("m = N^d = %s^%d = %s", per_axis.c_str(), dim_, m.c_str()));
+      formula(ui::format("σ = μ(B₁)/2^d = %.4g/%s = %.4g", unit_ball_volume(dim_), count_text(std::ldexp(1.0, dim_)).c_str(),
+                     t->sigma));
+      formula(ui::format("P(fail) ≤ m e^(−σ r^d n) = %s e^(−%.4g n)", m.c_str(), t->rate));
+      formula(ui::format("n = ln(m/p)/(σ r^d) = ln(%s/%s)/%.4g = %s", m.c_str(), target_text().c_str(), t->rate,
+                     count_text(std::ceil(n_handout)).c_str()),
+              &key);
+    }
 
-    ui::section("Refined: the balls at the faces");
-    ImGui::TextWrapped("%s of the %s balls stick out of the cube, and a sample lands in those less often than σ r^d "
-                       "says: there the handout's formula is not quite a bound. Counting a ball that sticks out "
-                       "along j axes at rate σ r^d/2^j:",
-                       count_text(t->boundary_balls).c_str(), m.c_str());
-    formula(ui::format("n = %s for p = %s", count_text(std::ceil(n_refined)).c_str(), target_text().c_str()), &key);
+    if (panel::fold("Refined: the balls at the faces", false)) {
+      ImGui::TextWrapped("%s of the %s balls stick out of the cube, and a sample lands in those less often than σ r^d "
+                         "says: there the handout's formula is not quite a bound. Counting a ball that sticks out "
+                         "along j axes at rate σ r^d/2^j:",
+                         count_text(t->boundary_balls).c_str(), m.c_str());
+      formula(ui::format("n = %s for p = %s", count_text(std::ceil(n_refined)).c_str(), target_text().c_str()), &key);
+    }
 
-    ui::section("Against the path bound (2.1)");
-    if (path.rate > 0)
-      formula(ui::format("path: m = ⌈L/(r/2)⌉ = %s, n = %s", count_text(path.balls).c_str(),
-                     count_text(std::ceil(path.samples_for(target_))).c_str()));
-    else
-      ImGui::TextWrapped("path: enter L, r and μ(F) in tab Bound");
-    formula(ui::format("cube: m = %s, n = %s (refined %s)", m.c_str(), count_text(std::ceil(n_handout)).c_str(),
-                   count_text(std::ceil(n_refined)).c_str()));
-    dim_text_wrapped("Much worse: the cube's m grows like (1/r)^d, the path's like L/r, and n with ln m. The cube "
-                     "pays for every corner of the space, not one corridor, the more so as d grows.");
+    if (panel::fold("Against the path bound (2.1)", false)) {
+      if (path.rate > 0)
+        formula(ui::format("path: m = ⌈L/(r/2)⌉ = %s, n = %s", count_text(path.balls).c_str(),
+                       count_text(std::ceil(path.samples_for(target_))).c_str()));
+      else
+        ImGui::TextWrapped("path: enter L, r and μ(F) in tab Bound");
+      formula(ui::format("cube: m = %s, n = %s (refined %s)", m.c_str(), count_text(std::ceil(n_handout)).c_str(),
+                     count_text(std::ceil(n_refined)).c_str()));
+      dim_text_wrapped("Much worse: the cube's m grows like (1/r)^d, the path's like L/r, and n with ln m. The cube "
+                       "pays for every corner of the space, not one corridor, the more so as d grows.");
+    }
   }
 
   // One ray of the P9 breakdown: its case (the edge it leaves the right half through, from its
@@ -666,7 +681,7 @@ class AnalysisLesson : public Lesson {
   }
 
   void visibility_panel() {
-    ui::section("P9: seeing through the gap");
+    if (!panel::fold("P9: seeing through the gap")) return exact_and_monte_carlo();
     ImGui::TextWrapped("A wall at x = 1/2, open for a height d in the middle. From a point (x1, y1) you click, "
                        "x1 < 1/2, what share of the square is in sight?");
     ImGui::PushItemWidth(-90);
@@ -681,12 +696,16 @@ class AnalysisLesson : public Lesson {
       sample_p9();
     }
     ImGui::PopItemWidth();
-    const P9Breakdown b = p9_breakdown(p9_x_, p9_y_, p9_gap_);
     ImGui::Text("(x1, y1) = (%.3f, %.3f), d = %.3f", p9_x_, p9_y_, p9_gap_);
     const ImVec4 key = key_colour();
-    formula(ui::format("p = %.5f exact, %.5f by Monte Carlo", b.probability, mc_.estimate), &key);
+    formula(ui::format("p = %.5f exact, %.5f by Monte Carlo", p9_breakdown(p9_x_, p9_y_, p9_gap_).probability, mc_.estimate), &key);
+    exact_and_monte_carlo();
+  }
 
-    ui::section("Exact, by cases");
+  void exact_and_monte_carlo() {
+    const P9Breakdown b = p9_breakdown(p9_x_, p9_y_, p9_gap_);
+    const ImVec4 key = key_colour();
+    if (panel::fold("Exact, by cases")) {
     dim_text_wrapped("All of the left half is in sight, and of the right half the cone between the rays through "
                      "the opening's ends. A ray through height a there has slope s = (a − y1)/(½ − x1) and reaches "
                      "a + s/2 at x = 1; A is the area below it.");
@@ -696,8 +715,9 @@ class AnalysisLesson : public Lesson {
     formula(ui::format("p = ½ + A_up − A_lo = 0.5 + %.5f − %.5f = %.5f", b.upper.area_under, b.lower.area_under,
                    b.probability),
             &key);
+    }
 
-    ui::section("Monte Carlo");
+    if (!panel::fold("Monte Carlo")) return;
     formula(ui::format("%lld samples: estimate %.5f", mc_.trials, mc_.estimate));
     formula(ui::format("95%% interval [%.5f, %.5f]", mc_.low, mc_.high));
     if (exact_in_interval())
@@ -796,6 +816,7 @@ class AnalysisLesson : public Lesson {
   Scene scene_;
   SceneEditor editor_;
   WorkspaceView scene_view_, p9_view_;
+  Plot plot_;  // the bounds against n (a member: the JS API maps points through it)
   std::unique_ptr<CollisionWorld> world_;
   std::vector<Config> reference_path_;
   bool path_exists_ = false;

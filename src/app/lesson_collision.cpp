@@ -3,6 +3,7 @@
 // collision), and the exact bisection of Schwarzer, Saha and Latombe, animated midpoint by
 // midpoint with the clearances eta and the motion bound lambda that decide each piece.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -12,11 +13,14 @@
 
 #include "app/bundled_scenes.hpp"
 #include "app/draw.hpp"
+#include "app/fonts.hpp"
 #include "app/js_api.hpp"
 #include "app/lesson.hpp"
+#include "app/panel.hpp"
 #include "app/scene_editor.hpp"
 #include "app/theme.hpp"
 #include "app/ui.hpp"
+#include "app/web_bridge.hpp"
 #include "core/angles.hpp"
 #include "core/edge_check_json.hpp"
 #include "core/work.hpp"
@@ -50,6 +54,8 @@ class CollisionLesson : public Lesson {
  public:
   CollisionLesson() { load(false); }
 
+  void on_show() override { logged_ = -1; }
+
   void update(LabContext& ctx) override {
     const int due = ctx.playback.due(static_cast<double>(ImGui::GetIO().DeltaTime));
     for (int i = 0; i < due && !finished(); ++i) step_forward();
@@ -62,8 +68,8 @@ class CollisionLesson : public Lesson {
 
   void panel(LabContext& ctx) override {
     ImGui::TextWrapped("Is the line from p to q free? Test N configurations on it, or prove it piece by piece: "
-                       "a piece is free when λ < η₀ + η₁, the clearances at its ends. (The handout's ≤ would let "
-                       "the line touch an obstacle; here touching is a collision.)");
+                       "free when λ < η₀ + η₁, the clearances at its ends (strict: the handout's ≤ would let the "
+                       "line touch an obstacle).");
     int robot = arm_ ? 1 : 0;
     if (ImGui::RadioButton("point robot (P12)", &robot, 0)) load(false);
     ui::flow(ui::toggle_width("2-link arm"));
@@ -95,8 +101,11 @@ class CollisionLesson : public Lesson {
     }
     if (arm_) ImGui::TextDisabled("p, q = (θ₁, θ₂) in radians");
     if (changed) recompute();
+    // With p and q, before the checks: the bisection table below takes the panel's remaining
+    // height, and the tools under it were cut off at 1280 x 800.
+    if (panel::fold("Obstacles (drawn in the view)") && editor_.toolbar(scene_, ctx)) recompute();
 
-    ui::section("Fixed resolution");
+    if (!panel::fold("Fixed resolution")) return exact_section();
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ImGui::TextWrapped("N configurations, p and q included: t = i/(N−1)");
     ImGui::PopStyleColor();
@@ -119,22 +128,26 @@ class CollisionLesson : public Lesson {
     else if (bisection_.collision)
       ImGui::Text("no N up to %d sees it", kInteractiveMaxGrid);
     interior_count_lines();
+    exact_section();
+  }
 
-    ui::section("Exact: bisection");
-    ImGui::Text("step %d of %zu", shown_, bisection_.trace.size());
+  void exact_section() {
+    if (!panel::fold("Exact: bisection")) return;
     if (finished() && bisection_.collision)
-      ImGui::Text("verdict: collision at t = %.4f", *bisection_.collision_t);
+      ImGui::Text("step %d of %zu: collision at t = %.4f", shown_, bisection_.trace.size(), *bisection_.collision_t);
     else if (finished())
-      ImGui::Text("verdict: free");
+      ImGui::Text("step %d of %zu: free", shown_, bisection_.trace.size());
+    else
+      ImGui::Text("step %d of %zu", shown_, bisection_.trace.size());
     ImGui::Text("evaluations: grid %d, bisection %d", grid_.evaluations, bisection_.evaluations);
     trace_table();
-    ImGui::Separator();
-    ImGui::TextDisabled("Obstacles (drawn in the view)");
-    if (editor_.toolbar(scene_, ctx)) recompute();
   }
 
   void views(LabContext& ctx, ImVec2 size) override {
-    const float strip = 92.0f;
+    // The t rows under the view: grid, bisection, and the zoom on the current piece; a short lab
+    // (an embed in a course page) keeps its height for the view and leaves the zoom out.
+    const bool zoom = size.y >= 420.0f;
+    const float strip = zoom ? 140.0f : 92.0f;
     view_.begin("##collision-workspace", ImVec2(size.x, size.y - strip), scene_.workspace_min, scene_.workspace_max);
     ctx.views["workspace"] = &view_;
     view_.draw_grid("x", "y");
@@ -150,7 +163,7 @@ class CollisionLesson : public Lesson {
     options.endpoints_are_points = !arm_;
     if (editor_.edit(view_, scene_, ctx, options)) recompute();
     editor_.help_window();
-    t_strip(ImVec2(size.x, strip));
+    t_strip(ImVec2(size.x, strip), zoom);
   }
 
   Scene* scene() override { return &scene_; }
@@ -183,7 +196,8 @@ class CollisionLesson : public Lesson {
             {"min_grid_interior", min_interior_ ? json(*min_interior_) : json(nullptr)},
             {"min_grid_one_end", one_end() ? json(*one_end()) : json(nullptr)},
             {"bisection", bisection},
-            {"shown", shown_}};
+            {"shown", shown_},
+            {"trace_table", trace_table_json()}};
   }
 
   void set_params(const json& j) override {
@@ -213,6 +227,12 @@ class CollisionLesson : public Lesson {
     scene_.start = p;
     scene_.goal = q;
     recompute();
+  }
+
+  json trace_table_json() const {
+    json rows = json::array();
+    for (const TraceRow& r : trace_rows()) rows.push_back(r);
+    return {{"header", kTraceHeader}, {"rows", rows}};
   }
 
   json params() const override {
@@ -378,87 +398,166 @@ class CollisionLesson : public Lesson {
   }
 
   // The parameter t along the edge, [0, 1]: the grid's t's on the upper row, bisection's
-  // midpoints (numbered in order) and certified pieces on the lower: the homework's plot.
-  void t_strip(ImVec2 size) {
+  // midpoints (numbered in order) and certified pieces on the lower: the homework's plot. A
+  // third row magnifies the piece under test: deep in a bisection its midpoints lie closer
+  // together than a dot is wide on [0, 1].
+  void t_strip(ImVec2 size, bool zoom) {
     const ImVec2 o = ImGui::GetCursorScreenPos();
     ImGui::InvisibleButton("##t-strip", size);
+    web::record_control("collision-strip");
     ImDrawList* dl = ImGui::GetWindowDrawList();
     const float x0 = o.x + 60.0f, x1 = o.x + size.x - 30.0f;
-    const auto x = [&](double t) { return x0 + static_cast<float>(t) * (x1 - x0); };
-    const float row1 = o.y + 22.0f, row2 = o.y + 58.0f;
+    const float row1 = o.y + 22.0f, row2 = o.y + 58.0f, row3 = o.y + 112.0f;
     dl->AddText(ImVec2(o.x + 4, row1 - 8), theme::kLabel, "grid");
     dl->AddText(ImVec2(o.x + 4, row2 - 8), theme::kLabel, "bisect");
     for (float row : {row1, row2}) dl->AddLine(ImVec2(x0, row), ImVec2(x1, row), theme::kGridMajor, 2.0f);
+    const auto x = [&](double t) { return x0 + static_cast<float>(t) * (x1 - x0); };
     for (double t : {0.0, 0.25, 0.5, 0.75, 1.0}) {
       char text[16];
       std::snprintf(text, sizeof text, "%g", t);
       dl->AddText(ImVec2(x(t) - 0.5f * ImGui::CalcTextSize(text).x, row2 + 12), theme::kLabel, text);
     }
-    // The true colliding part of the edge (fine sampling), for reference.
     for (const EdgeEvent& e : grid_.trace)
       dl->AddRectFilled(ImVec2(x(e.t) - 3, row1 - 6), ImVec2(x(e.t) + 3, row1 + 6), e.free ? theme::kFree : theme::kHit);
+    bisection_row(dl, row2, 0.0, 1.0, x0, x1, o.x, o.x + size.x);
+
+    // The zoom: four times the current piece's width around it (within [0, 1]), joined to where
+    // it lies on the row above.
+    if (!zoom) return;
+    const EdgeEvent* now = shown_ > 0 ? &bisection_.trace[static_cast<std::size_t>(shown_ - 1)] : nullptr;
+    // Only once the piece is small enough for the zoom to show more than the row above (x2 at least).
+    if (!now || now->t0 == now->t1 || now->t1 - now->t0 > 0.125) {
+      dl->AddText(ImVec2(o.x + 4, row3 - 8), theme::kGridMajor, "zoom");
+      dl->AddText(ImVec2(x0, row3 - 8), theme::kGridMajor, "(the piece under test, magnified, once it is small)");
+      return;
+    }
+    const double width = now->t1 - now->t0, mid = 0.5 * (now->t0 + now->t1);
+    const double lo = std::max(0.0, std::min(mid - 2.0 * width, 1.0 - 4.0 * width));
+    const double hi = std::min(1.0, lo + 4.0 * width);
+    char factor[32];
+    std::snprintf(factor, sizeof factor, "×%.0f", 1.0 / (hi - lo));
+    dl->AddText(ImVec2(o.x + 4, row3 - 8), theme::kLabel, factor);
+    const ImU32 guide = theme::with_alpha(theme::kCurrent, 110);
+    dl->AddLine(ImVec2(x(lo), row2 + 6), ImVec2(x0, row3 - 20), guide, 1.0f);
+    dl->AddLine(ImVec2(x(hi), row2 + 6), ImVec2(x1, row3 - 20), guide, 1.0f);
+    dl->AddRectFilled(ImVec2(x(lo), row2 - 7), ImVec2(x(hi), row2 + 7), theme::with_alpha(theme::kCurrent, 45));
+    dl->AddLine(ImVec2(x0, row3), ImVec2(x1, row3), theme::kGridMajor, 2.0f);
+    const auto zx = [&](double t) { return x0 + static_cast<float>((t - lo) / (hi - lo)) * (x1 - x0); };
+    dl->AddRectFilled(ImVec2(zx(now->t0), row3 - 8), ImVec2(zx(now->t1), row3 + 8), theme::with_alpha(theme::kCurrent, 70));
+    for (double t : {lo, hi}) {
+      char text[16];
+      std::snprintf(text, sizeof text, "%.4g", t);
+      const float w = ImGui::CalcTextSize(text).x;
+      dl->AddText(ImVec2(std::clamp(zx(t) - 0.5f * w, o.x, o.x + size.x - w), row3 + 10), theme::kLabel, text);
+    }
+    dl->PushClipRect(ImVec2(x0 - 6, row3 - 30), ImVec2(x1 + 6, row3 + 10), true);
+    bisection_row(dl, row3, lo, hi, x0, x1, x0 - 6, x1 + 6);
+    dl->PopClipRect();
+  }
+
+  // Bisection up to the step shown, on a row showing [lo, hi] of t between screen x0 and x1:
+  // certified pieces as bars, evaluated midpoints as dots numbered in order above them (newest
+  // first, never one number over another; `left`, `right`: where numbers may go).
+  void bisection_row(ImDrawList* dl, float row, double lo, double hi, float x0, float x1, float left, float right) const {
+    const auto x = [&](double t) { return x0 + static_cast<float>((t - lo) / (hi - lo)) * (x1 - x0); };
+    const auto inside = [&](double t) { return t >= lo - 1e-12 && t <= hi + 1e-12; };
     int number = 0;
     for (int i = 0; i < shown_; ++i) {
       const EdgeEvent& e = bisection_.trace[static_cast<std::size_t>(i)];
       if (e.kind == EdgeEvent::Kind::Certify) {
-        dl->AddRectFilled(ImVec2(x(e.t0), row2 - 3), ImVec2(x(e.t1), row2 + 3), theme::with_alpha(theme::kFree, 140));
+        if (e.t1 >= lo && e.t0 <= hi)
+          dl->AddRectFilled(ImVec2(x(std::max(e.t0, lo)), row - 3), ImVec2(x(std::min(e.t1, hi)), row + 3),
+                            theme::with_alpha(theme::kFree, 140));
         continue;
       }
       if (e.kind != EdgeEvent::Kind::Evaluate) continue;
       ++number;
-      dl->AddCircleFilled(ImVec2(x(e.t), row2), 5.0f, e.free ? theme::kFree : theme::kHit, 12);
+      if (inside(e.t)) dl->AddCircleFilled(ImVec2(x(e.t), row), 5.0f, e.free ? theme::kFree : theme::kHit, 12);
     }
-    // Their numbers above them, centred, newest first and never over one another: deep in a
-    // bisection the midpoints come closer than a number is wide.
     LabelRow labels;
     for (int i = shown_ - 1; i >= 0; --i) {
       const EdgeEvent& e = bisection_.trace[static_cast<std::size_t>(i)];
       if (e.kind != EdgeEvent::Kind::Evaluate) continue;
       const std::string text = std::to_string(number--);
+      if (!inside(e.t)) continue;
       const float w = ImGui::CalcTextSize(text.c_str()).x;
-      const float left = std::clamp(x(e.t) - 0.5f * w, o.x, o.x + size.x - w);
-      if (labels.take(left, w)) dl->AddText(ImVec2(left, row2 - 22), theme::kLabel, text.c_str());
+      const float at = std::clamp(x(e.t) - 0.5f * w, left, right - w);
+      if (labels.take(at, w)) dl->AddText(ImVec2(at, row - 22), theme::kLabel, text.c_str());
     }
   }
 
-  void trace_table() {
-    // As tall as its rows, up to 180 px and what is left of the panel (at least four rows): then
-    // it scrolls, following the newest row. So the panel itself need not scroll to show it.
-    const float row = ImGui::GetTextLineHeight() + 2.0f * ImGui::GetStyle().CellPadding.y + 1.0f;
-    const float rows = row * static_cast<float>(std::max(shown_, 1) + 1) + 4.0f;
-    const float height = std::min({180.0f, rows, std::max(5.0f * row, ImGui::GetContentRegionAvail().y - 2.0f)});
-    if (!ImGui::BeginTable("trace", 5, ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_BordersInnerH,
-                           ImVec2(0, height)))
-      return;
-    ImGui::TableSetupScrollFreeze(0, 1);
-    // Weighted: a certified piece's eta column holds a sum ("0.260+0.754").
-    ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_WidthStretch, 0.45f);
-    ImGui::TableSetupColumn("t", ImGuiTableColumnFlags_WidthStretch, 1.0f);
-    ImGui::TableSetupColumn("η", ImGuiTableColumnFlags_WidthStretch, 1.5f);
-    ImGui::TableSetupColumn("λ", ImGuiTableColumnFlags_WidthStretch, 0.95f);
-    ImGui::TableSetupColumn("piece", ImGuiTableColumnFlags_WidthStretch, 1.7f);
-    ImGui::TableHeadersRow();
+  // The trace table's text, row by row (drawn by trace_table(), reported by state()).
+  using TraceRow = std::array<std::string, 7>;
+  static constexpr std::array<const char*, 7> kTraceHeader{"#", "piece", "λ", "", "η₀+η₁", "t", "η(t)"};
+  std::vector<TraceRow> trace_rows() const {
+    std::vector<TraceRow> out;
     int number = 0;
     for (int i = 0; i < shown_; ++i) {
       const EdgeEvent& e = bisection_.trace[static_cast<std::size_t>(i)];
+      const bool piece = e.t0 != e.t1, evaluated = e.kind == EdgeEvent::Kind::Evaluate;
+      TraceRow& r = out.emplace_back();
+      if (evaluated) r[0] = std::to_string(++number);
+      r[1] = piece ? ui::format("[%.4g, %.4g]", e.t0, e.t1) : "end";
+      if (piece) {
+        r[2] = ui::format("%.4f", e.lambda);
+        r[3] = e.kind == EdgeEvent::Kind::Certify ? "<" : "≥";
+        r[4] = ui::format("%.4f", e.eta0 + e.eta1);
+      }
+      if (evaluated) {
+        r[5] = ui::format("%.4g", e.t);
+        r[6] = ui::format("%.4f", e.eta);
+      }
+    }
+    return out;
+  }
+
+  void trace_table() {
+    if (shown_ == 0) {
+      ImGui::TextDisabled("Step (or Play) to test it piece by piece.");
+      return;
+    }
+    // As tall as its rows, up to 180 px and what is left of the panel (at least three rows): then
+    // it scrolls, following the newest row. So the panel itself need not scroll to show it.
+    // Each column holds one thing on every row: the evaluation's number (as in the view), the
+    // piece [t0, t1] under test, its motion bound, how that compares with the clearances of its
+    // ends and their sum, then the midpoint tested (if the piece was split) and its clearance.
+    // An endpoint's evaluation has no piece: only its t and clearance.
+    ImGui::PushFont(fonts().small);
+    const float row = ImGui::GetTextLineHeight() + 2.0f * ImGui::GetStyle().CellPadding.y + 1.0f;
+    const float rows = row * static_cast<float>(std::max(shown_, 1) + 1) + 4.0f;
+    const float note = ImGui::GetTextLineHeightWithSpacing() + 4.0f;  // the line under it
+    const float height = std::min({180.0f, rows, std::max(4.0f * row, ImGui::GetContentRegionAvail().y - note)});
+    if (!ImGui::BeginTable("trace", 7, ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_BordersInnerH,
+                           ImVec2(0, height))) {
+      ImGui::PopFont();
+      return;
+    }
+    ImGui::TableSetupScrollFreeze(0, 1);
+    constexpr float kWeights[7] = {0.4f, 1.9f, 0.85f, 0.3f, 0.85f, 0.85f, 0.85f};
+    for (std::size_t c = 0; c < kTraceHeader.size(); ++c)
+      ImGui::TableSetupColumn(kTraceHeader[c], ImGuiTableColumnFlags_WidthStretch, kWeights[c]);
+    ImGui::TableHeadersRow();
+    const std::vector<TraceRow> rows_text = trace_rows();
+    for (int i = 0; i < shown_; ++i) {
+      const EdgeEvent& e = bisection_.trace[static_cast<std::size_t>(i)];
+      const TraceRow& r = rows_text[static_cast<std::size_t>(i)];
       ImGui::TableNextRow();
       if (i + 1 == shown_) ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg0, theme::with_alpha(theme::kCurrent, 70));
-      ImGui::TableNextColumn();
-      if (e.kind == EdgeEvent::Kind::Evaluate) ImGui::Text("%d", ++number);
-      ImGui::TableNextColumn();
-      if (e.kind == EdgeEvent::Kind::Evaluate) ImGui::Text("%.4f", e.t);
-      else ImGui::TextDisabled(e.kind == EdgeEvent::Kind::Certify ? "free" : "?");
-      ImGui::TableNextColumn();
-      if (e.kind == EdgeEvent::Kind::Evaluate) ImGui::Text("%.4f", e.eta);
-      else ImGui::Text("%.3f+%.3f", e.eta0, e.eta1);
-      ImGui::TableNextColumn();
-      if (e.t0 != e.t1) ImGui::Text("%.4f", e.lambda);
-      ImGui::TableNextColumn();
-      if (e.t0 != e.t1) ImGui::Text("[%.3g, %.3g]", e.t0, e.t1);
-      else ImGui::TextDisabled("endpoint");
+      for (std::size_t c = 0; c < r.size(); ++c) {
+        ImGui::TableNextColumn();
+        if (c == 1 && e.t0 == e.t1) ImGui::TextDisabled("%s", r[c].c_str());
+        else if (c == 3 && e.kind == EdgeEvent::Kind::Certify) ImGui::TextColored(ImVec4(0.0f, 0.45f, 0.3f, 1.0f), "%s", r[c].c_str());
+        else if (c == 6 && !e.free) ImGui::TextColored(ImVec4(0.75f, 0.2f, 0.0f, 1.0f), "%s", r[c].c_str());
+        else ImGui::TextUnformatted(r[c].c_str());
+      }
       if (i + 1 == shown_) ImGui::SetScrollHereY(1.0f);
     }
     ImGui::EndTable();
+    ImGui::PopFont();
+    // What the rows mean, once, under the table.
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextUnformatted("<: proven free;  ≥: split at the midpoint t");
+    ImGui::PopStyleColor();
   }
 
   void log(LabContext& ctx) {

@@ -16,6 +16,7 @@
 #include "app/fonts.hpp"
 #include "app/js_api.hpp"
 #include "app/lesson.hpp"
+#include "app/panel.hpp"
 #include "app/theme.hpp"
 #include "app/ui.hpp"
 #include "app/web_bridge.hpp"
@@ -307,36 +308,35 @@ class DistancesLesson : public Lesson {
     ImGui::PopFont();
     text_flow(ui::format("= %.2f°: %s", degrees(a.distance), case_line().c_str()));
 
-    ui::section("(a) by the modulus");
-    text_flow(
-        ui::format("|q₁ − q₂| = |%s − %s| = %s", num(a.q1).c_str(), factor(a.q2).c_str(), num(a.raw_difference).c_str()));
-    text_flow(ui::format("%s mod 2π = %s", num(a.raw_difference).c_str(), num(a.modulus).c_str()));
-    text_flow(ui::format("d = min(%s, 2π − %s) = min(%s, %s) = %s", num(a.modulus).c_str(), num(a.modulus).c_str(),
-                  num(a.modulus).c_str(), num(a.other_way).c_str(), num(a.modular_distance).c_str()));
-
-    ui::section("(b) by rotation matrices");
-    text_flow("trace(R₁^T R₂)/2 = cos q₁ cos q₂ + sin q₁ sin q₂");
-    text_flow(ui::format("= %s·%s + %s·%s = %s", factor(a.cos1).c_str(), factor(a.cos2).c_str(), factor(a.sin1).c_str(),
-                  factor(a.sin2).c_str(), num(a.dot).c_str()));
-    text_flow(ui::format("d = arccos(%s) = %s", num(a.dot).c_str(), num(a.arccos_distance).c_str()));
-
-    ui::section("this case");
-    text_flow(case_text());
-    ImGui::TextDisabled("Why the lab computes (b) with atan2");
-    text_flow(
-        ui::format("arccos is steep next to 1 and −1: a rounding of 1e-16 in the dot product moves arccos "
-            "near 0 by 1e-8. The lab takes atan2(|sin d|, cos d) with sin d = cos q₁ sin q₂ − sin q₁ cos q₂ "
-            "instead, accurate everywhere: %s.",
-            ui::format("%.10f", a.rotation_distance).c_str()));
-
-    ui::section("in the lab's PRM");
-    text_flow(
-        "The lab keeps angles in [−π, π) and measures each one's difference by way (a), the short way round: "
-        "|wrap(q₂ − q₁)|. For the 2-link arm, whose C-space is T² = S¹ × S¹, it combines the two joints as "
-        "d = √(d₁² + d₂²), with d₁ and d₂ the S¹ distances of the joint angles (the flat torus metric, both joints "
-        "weighted 1); PRM's nearest neighbours are nearest in it. A straight edge turns each joint by its shorter "
-        "turn, so it may leave the square [−π, π)² on one side and come back on the other; for exactly opposite "
-        "angles it turns clockwise (a half turn counts as −π).");
+    if (panel::fold("(a) by the modulus")) {
+      text_flow(ui::format("|q₁ − q₂| = |%s − %s| = %s", num(a.q1).c_str(), factor(a.q2).c_str(),
+                           num(a.raw_difference).c_str()));
+      text_flow(ui::format("%s mod 2π = %s", num(a.raw_difference).c_str(), num(a.modulus).c_str()));
+      text_flow(ui::format("d = min(%s, 2π − %s) = min(%s, %s) = %s", num(a.modulus).c_str(), num(a.modulus).c_str(),
+                           num(a.modulus).c_str(), num(a.other_way).c_str(), num(a.modular_distance).c_str()));
+    }
+    if (panel::fold("(b) by rotation matrices")) {
+      text_flow("trace(R₁^T R₂)/2 = cos q₁ cos q₂ + sin q₁ sin q₂");
+      text_flow(ui::format("= %s·%s + %s·%s = %s", factor(a.cos1).c_str(), factor(a.cos2).c_str(), factor(a.sin1).c_str(),
+                           factor(a.sin2).c_str(), num(a.dot).c_str()));
+      text_flow(ui::format("d = arccos(%s) = %s", num(a.dot).c_str(), num(a.arccos_distance).c_str()));
+    }
+    if (panel::fold("this case")) text_flow(case_text());
+    // Folded at first (the panel's default fits 1280 x 800): depth for whoever asks.
+    if (panel::fold("why the lab computes (b) with atan2", false))
+      text_flow(
+          ui::format("arccos is steep next to 1 and −1: a rounding of 1e-16 in the dot product moves arccos "
+              "near 0 by 1e-8. The lab takes atan2(|sin d|, cos d) with sin d = cos q₁ sin q₂ − sin q₁ cos q₂ "
+              "instead, accurate everywhere: %s.",
+              ui::format("%.10f", a.rotation_distance).c_str()));
+    if (panel::fold("in the lab's PRM", false))
+      text_flow(
+          "The lab keeps angles in [−π, π) and measures each one's difference by way (a), the short way round: "
+          "|wrap(q₂ − q₁)|. For the 2-link arm, whose C-space is T² = S¹ × S¹, it combines the two joints as "
+          "d = √(d₁² + d₂²), with d₁ and d₂ the S¹ distances of the joint angles (the flat torus metric, both joints "
+          "weighted 1); PRM's nearest neighbours are nearest in it. A straight edge turns each joint by its shorter "
+          "turn, so it may leave the square [−π, π)² on one side and come back on the other; for exactly opposite "
+          "angles it turns clockwise (a half turn counts as −π).");
   }
 
   void set_q2(double v) {
@@ -572,18 +572,19 @@ class DistancesLesson : public Lesson {
     web::record_control("distances-degenerate");
 
     const SegmentDiskReport& s = segment_;
-    ui::section("project q onto the line p₁p₂");
-    if (s.where == SegmentDiskCase::Degenerate) {
-      text_flow(
-          ui::format("p₂ − p₁ = (0, 0): there is no line. t* = 0/0 is undefined, and every point of the "
-              "\"segment\" is p₁: c = p₁ = %s",
-              point(s.closest).c_str()));
-    } else {
-      text_flow(ui::format("p₂ − p₁ = %s, |p₂ − p₁|² = %s", point(s.direction).c_str(), num(s.length_squared).c_str()));
-      text_flow(ui::format("(q − p₁)·(p₂ − p₁) = %s", num(s.dot).c_str()));
-      text_flow(ui::format("t* = %s / %s = %s", num(s.dot).c_str(), num(s.length_squared).c_str(), num(s.t_raw).c_str()));
-      text_flow(ui::format("t = clamp(t*, 0, 1) = %s", num(s.t).c_str()));
-      text_flow(ui::format("c = p₁ + t (p₂ − p₁) = %s", point(s.closest).c_str()));
+    if (panel::fold("project q onto the line p₁p₂")) {
+      if (s.where == SegmentDiskCase::Degenerate) {
+        text_flow(
+            ui::format("p₂ − p₁ = (0, 0): there is no line. t* = 0/0 is undefined, and every point of the "
+                "\"segment\" is p₁: c = p₁ = %s",
+                point(s.closest).c_str()));
+      } else {
+        text_flow(ui::format("p₂ − p₁ = %s, |p₂ − p₁|² = %s", point(s.direction).c_str(), num(s.length_squared).c_str()));
+        text_flow(ui::format("(q − p₁)·(p₂ − p₁) = %s", num(s.dot).c_str()));
+        text_flow(ui::format("t* = %s / %s = %s", num(s.dot).c_str(), num(s.length_squared).c_str(), num(s.t_raw).c_str()));
+        text_flow(ui::format("t = clamp(t*, 0, 1) = %s", num(s.t).c_str()));
+        text_flow(ui::format("c = p₁ + t (p₂ − p₁) = %s", point(s.closest).c_str()));
+      }
     }
     text_flow(ui::format("|q − c| = %s", num(s.centre_distance).c_str()));
 
@@ -595,7 +596,7 @@ class DistancesLesson : public Lesson {
     text_flow(segment_case_text());
     if (s.meets) ImGui::TextColored(ImVec4(0.7f, 0.25f, 0.0f, 1.0f), "|q − c| ≤ r: they meet, so d = 0.");
 
-    ui::section("the lab's clearance η keeps the sign");
+    if (!panel::fold("the lab's clearance η keeps the sign", false)) return;
     text_flow(ui::format("η = |q − c| − r = %s", num(s.lab_clearance).c_str()));
     text_flow(
         "The collision checker computes this signed value for each arm link against each disk "

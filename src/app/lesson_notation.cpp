@@ -15,6 +15,7 @@
 #include "app/surface_view.hpp"
 #include "app/theme.hpp"
 #include "app/ui.hpp"
+#include "app/web_bridge.hpp"
 #include "core/angles.hpp"
 #include "core/notation.hpp"
 
@@ -144,10 +145,12 @@ class NotationLesson : public Lesson {
     ImGui::BeginChild("robot-picture", ImVec2(size.x * 0.5f, size.y), true, still);
     robot_picture(ImGui::GetContentRegionAvail());
     ImGui::EndChild();
+    web::record_control("notation-picture");  // (its rectangle: the tests compare it with a reference)
     ImGui::SameLine();
     ImGui::BeginChild("surfaces", ImVec2(0, size.y), true, still);
     surfaces(ImGui::GetContentRegionAvail());
     ImGui::EndChild();
+    web::record_control("notation-surfaces");
   }
 
   json state(const json&) const override {

@@ -20,9 +20,11 @@
 #include "app/fonts.hpp"
 #include "app/js_api.hpp"
 #include "app/lesson.hpp"
+#include "app/panel.hpp"
 #include "app/prm_text.hpp"
 #include "app/scene_editor.hpp"
 #include "app/theme.hpp"
+#include "app/web_bridge.hpp"
 #include "app/ui.hpp"
 #include "core/angles.hpp"
 #include "core/cspace_map.hpp"
@@ -132,6 +134,8 @@ class PotentialLesson : public Lesson {
  public:
   PotentialLesson() { load(bundled_scene("p13")); }
 
+  void on_show() override { logged_ = -1; }
+
   void update(LabContext& ctx) override {
     const int due = ctx.playback.due(static_cast<double>(ImGui::GetIO().DeltaTime));
     for (int i = 0; i < due && descent_ && !descent_->done(); ++i) descent_->step();
@@ -155,7 +159,13 @@ class PotentialLesson : public Lesson {
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", e.tooltip);
     }
 
-    ui::section("Field");
+    if (panel::fold("Field")) field_controls();
+    if (panel::fold("Gradient descent")) descent_controls(ctx);
+    // Folded at first: the examples bring their scenes, and the panel's default fits 1280 x 800.
+    if (panel::fold("Obstacles", false) && editor_.toolbar(scene_, ctx)) scene_changed();
+  }
+
+  void field_controls() {
     bool changed = false;
     PotentialParams f = field_params_;
     changed |= slider("ρ₀", &f.rho0, 0.02, 0.3, "region of influence of each obstacle");
@@ -171,9 +181,10 @@ class PotentialLesson : public Lesson {
       field_params_ = f;
       rebuild();
     }
+  }
 
-    ui::section("Gradient descent");
-    changed = false;
+  void descent_controls(LabContext& ctx) {
+    bool changed = false;
     DescentParams d = descent_params_;
     changed |= slider("step", &d.step, 0.001, 0.1, "alpha: the length of one descent step", true);
     int escapes = d.escapes;
@@ -191,13 +202,14 @@ class PotentialLesson : public Lesson {
       descent_params_ = d;
       restart_descent();
     }
-    if (ImGui::Button("Descend from the start")) set_from(scene_.start);
+    // Back to the start and play: the button says "descend", so the robot moves at once.
+    if (ImGui::Button("Descend from the start")) {
+      set_from(scene_.start);
+      ctx.playback.playing = descent_ != nullptr;
+    }
+    web::record_control("potential-descend");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("from the scene's start, played step by step (Space pauses)");
     status_text();
-
-    ui::section("At the robot");
-    robot_summary();
-    ui::section("Obstacles");
-    if (editor_.toolbar(scene_, ctx)) scene_changed();
   }
 
   // The views on top, the forces table under them (the panel is too narrow for its vectors).
@@ -538,8 +550,8 @@ class PotentialLesson : public Lesson {
       return;
     }
     const Descent& d = *descent_;
-    ImGui::Text("step %ld  U = %.4g  |τ| = %.3g", d.steps(), d.potential(), d.force());
-    ImGui::Text("distance to the goal %.3f", d.distance_to_goal());
+    ImGui::Text("step %ld  |τ| = %.3g  to the goal %.3f", d.steps(), d.force(), d.distance_to_goal());
+    robot_summary();
     ImGui::Text("local minima %d  escapes used %d of %d", d.local_minima(), d.escapes_used(), d.params().escapes);
     switch (d.outcome()) {
       case DescentOutcome::Running: break;
@@ -558,7 +570,7 @@ class PotentialLesson : public Lesson {
     }
   }
 
-  // The panel's short summary; the table of every control point is under the views.
+  // U at the robot, in the descent's status; the table of every control point is under the views.
   void robot_summary() {
     const PotentialReport r = field_->evaluate(shown());
     if (r.contact) {
@@ -566,8 +578,6 @@ class PotentialLesson : public Lesson {
       return;
     }
     ImGui::Text("U = %.4g  (attractive %.4g, repulsive %.4g)", r.U, r.U_att, r.U_rep);
-    ImGui::TextWrapped("Under the views: ρ, ∇ρ and the forces at every control point, their sum τ = Σ J^T F, "
-                       "and (5.5), (5.6) worked for the row you click.");
   }
 
   // The control point whose equations are worked: the one chosen, or (none chosen, or the
@@ -945,6 +955,7 @@ class PotentialLesson : public Lesson {
     cspace_view_.begin("##potential-cspace", size, arm ? Vec2(-kPi, -kPi) : scene_.workspace_min,
                        arm ? Vec2(kPi, kPi) : scene_.workspace_max);
     ctx.views["cspace"] = &cspace_view_;
+    cspace_view_.set_angular(arm, arm);
     cspace_view_.draw_grid(arm ? "θ₁" : "x", arm ? "θ₂" : "y");
     cspace_view_.push_clip();
     draw_heat_map(cspace_view_, map_u_);

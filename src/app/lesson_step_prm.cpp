@@ -24,6 +24,8 @@ class StepPrmLesson : public PlannerLesson {
  public:
   StepPrmLesson() : scene_(bundled_scene("prm-demo")), session_(scene_, params_) {}
 
+  void on_show() override { logged_version_ = -1; }
+
   void update(LabContext& ctx) override {
     const int due = ctx.playback.due(static_cast<double>(ImGui::GetIO().DeltaTime));
     for (int i = 0; i < due && !prm().done() && !session_.busy(); ++i) session_.step_forward();

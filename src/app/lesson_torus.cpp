@@ -17,6 +17,7 @@
 #include "app/field_draw.hpp"
 #include "app/js_api.hpp"
 #include "app/lesson.hpp"
+#include "app/panel.hpp"
 #include "app/planner_lesson.hpp"
 #include "app/planner_session.hpp"
 #include "app/prm_controls.hpp"
@@ -25,6 +26,7 @@
 #include "app/surface_view.hpp"
 #include "app/theme.hpp"
 #include "app/ui.hpp"
+#include "app/web_bridge.hpp"
 #include "core/angles.hpp"
 #include "core/cspace_map.hpp"
 #include "core/cspace_quads.hpp"
@@ -42,9 +44,11 @@ enum class Exercise { None, Around, Shrink };
 class TorusLesson : public PlannerLesson {
  public:
   TorusLesson() : scene_(bundled_scene("arm-2link")), session_(scene_, params_) {
-    q_ = scene_.start;
+    q_ = pose_beside_markers();
     rebuild_map();
   }
+
+  void on_show() override { logged_version_ = -1; }
 
   void update(LabContext& ctx) override {
     const int due = ctx.playback.due(static_cast<double>(ImGui::GetIO().DeltaTime));
@@ -79,44 +83,58 @@ class TorusLesson : public PlannerLesson {
     ImGui::Checkbox("animate the path / loop", &animate_);
     ui::flow(ui::button_width("clear trail"));
     if (ImGui::SmallButton("clear trail")) trail_.clear();
-    ui::section("Right-hand view");
+    // The right-hand view on one row: a heading of its own cost the panel a line.
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextDisabled("right:");
+    ImGui::SameLine();
     ImGui::RadioButton("square", &right_view_, 0);
     ui::flow(ui::toggle_width("torus (3-D)"));
     ImGui::RadioButton("torus (3-D)", &right_view_, 1);
     ui::flow(ui::toggle_width("both"));
     ImGui::RadioButton("both", &right_view_, 2);
 
-    ui::section("PRM on the torus");
-    if (prm_controls(params_, world(), ctx, 5000)) rebuild(0);
-    ImGui::Text("|V| = %zu  |E| = %ld  components %d", prm().roadmap().vertices.size(), prm().edges_alive(),
-                session_.prm().components());
-    ImGui::Text("edges across a seam: %d", seam_edges());
-    if (prm().solved()) ImGui::TextColored(ImVec4(0.0f, 0.45f, 0.3f, 1.0f), "path found, length %.3f rad", prm().path_length());
-    else if (prm().done()) ImGui::TextColored(ImVec4(0.7f, 0.25f, 0.0f, 1.0f), "no path found");
-    if (replay_pending()) {
-      ImGui::PushTextWrapPos(0.0f);
-      ImGui::TextDisabled("(the roadmap of the scene before this drag: replayed at the release)");
-      ImGui::PopTextWrapPos();
+    if (panel::fold("PRM on the torus")) {
+      if (prm_controls(params_, world(), ctx, 5000)) rebuild(0);
+      ImGui::Text("|V| = %zu  |E| = %ld  components %d", prm().roadmap().vertices.size(), prm().edges_alive(),
+                  session_.prm().components());
+      ImGui::Text("edges across a seam: %d", seam_edges());
+      if (prm().solved()) ImGui::TextColored(ImVec4(0.0f, 0.45f, 0.3f, 1.0f), "path found, length %.3f rad", prm().path_length());
+      else if (prm().done()) ImGui::TextColored(ImVec4(0.7f, 0.25f, 0.0f, 1.0f), "no path found");
+      if (replay_pending()) {
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextDisabled("(the roadmap of the scene before this drag: replayed at the release)");
+        ImGui::PopTextWrapPos();
+      }
     }
 
-    ui::section("Exercise: loops on the torus");
-    if (ImGui::Button("a loop around the torus")) start_exercise(Exercise::Around);
-    ui::flow(ui::button_width("a loop that shrinks"));
-    if (ImGui::Button("a loop that shrinks")) start_exercise(Exercise::Shrink);
-    if (exercise_ == Exercise::Around)
-      ImGui::TextWrapped("θ₁ makes a full turn: the point leaves the square on the right and comes back on the "
-                         "left, because the edges are the same place. On the torus this loop goes around the hole: "
-                         "no continuous change of it shrinks it to a point. The arm turns all the way round.");
-    if (exercise_ == Exercise::Shrink)
-      ImGui::TextWrapped("A small circle in the square is a loop that can be pulled in to a point, in the square "
-                         "and on the torus alike: the arm only wiggles.");
-    if (exercise_ != Exercise::None) {
-      ImGui::TextWrapped("%s", loop_blocked() ? "Here the loop crosses C-obstacles: the arm could not make this motion."
-                                              : "Here the whole loop is free.");
-      if (ImGui::SmallButton("stop the exercise")) exercise_ = Exercise::None;
+    if (panel::fold("Exercise: loops on the torus")) {
+      bool started = false;
+      if (ImGui::Button("a loop around the torus")) started = (start_exercise(Exercise::Around), true);
+      web::record_control("torus-loop-around");
+      ui::flow(ui::button_width("a loop that shrinks"));
+      if (ImGui::Button("a loop that shrinks")) started = (start_exercise(Exercise::Shrink), true);
+      web::record_control("torus-loop-shrink");
+      if (exercise_ == Exercise::Around)
+        ImGui::TextWrapped("θ₁ makes a full turn: the point leaves the square on the right and comes back on the "
+                           "left, because the edges are the same place. On the torus this loop goes around the hole: "
+                           "no continuous change of it shrinks it to a point. The arm turns all the way round.");
+      if (exercise_ == Exercise::Shrink)
+        ImGui::TextWrapped("A small circle in the square is a loop that can be pulled in to a point, in the square "
+                           "and on the torus alike: the arm only wiggles.");
+      if (exercise_ != Exercise::None) {
+        ImGui::TextWrapped("%s", loop_blocked() ? "Here the loop crosses C-obstacles: the arm could not make this "
+                                                  "motion. The loop shows the torus's shape, not a path."
+                                                : "Here the whole loop is free.");
+        if (ImGui::SmallButton("stop the exercise")) exercise_ = Exercise::None;
+        web::record_control("torus-loop-stop");
+        // The text the button brought is what the student looks for next: scrolled into view.
+        if (started) scroll_to_exercise_ = 2;
+        if (scroll_to_exercise_ > 0 && --scroll_to_exercise_ == 0) ImGui::SetScrollHereY(1.0f);
+      }
     }
-    ui::section("Obstacles");
-    if (editor_.toolbar(scene_, ctx)) rebuild(session_.wanted_steps());
+    if (panel::fold("Obstacles")) {
+      if (editor_.toolbar(scene_, ctx)) rebuild(session_.wanted_steps());
+    }
   }
 
   void views(LabContext& ctx, ImVec2 size) override {
@@ -144,9 +162,9 @@ class TorusLesson : public PlannerLesson {
     // The parameters were priced in the old scene: a denser one may cost past the lab's budget.
     if (!(why = scene_budget_problem(params_, s)).empty()) return false;
     editor_.replace(scene_, s);
-    q_ = scene_.start;
     trail_.clear();
     rebuild(0);
+    q_ = pose_beside_markers();  // (in the new scene's world, which rebuild() made)
     return true;
   }
   bool undo() override { return editor_.undo(scene_) && (rebuild(session_.wanted_steps()), true); }
@@ -168,6 +186,7 @@ class TorusLesson : public PlannerLesson {
              {"trail", trail_.size()},
              {"view", right_view_ == 0 ? "square" : right_view_ == 1 ? "torus" : "both"},
              {"exercise", exercise_ == Exercise::None ? "none" : exercise_ == Exercise::Around ? "around" : "shrink"},
+             {"workspace_caption", workspace_caption() ? json(workspace_caption()) : json(nullptr)},
              {"prm",
               {{"params", prm_params_json(params_)},
                {"phase", phase_name(planner.phase())},
@@ -271,6 +290,20 @@ class TorusLesson : public PlannerLesson {
   }
   bool replay_pending() const { return session_.replay_pending(); }
 
+  // Where the arm stands when a scene is loaded: free, and well apart from S and G in the square,
+  // so that its dot hides neither marker (a student who follows "drag in the square" from the
+  // dot poses the arm instead of moving the start). The start itself if nothing nearby is free.
+  Config pose_beside_markers() const {
+    const Space& space = world().space();
+    for (double r : {0.9, 0.6, 1.2})
+      for (int k = 0; k < 8; ++k) {
+        const double a = kTwoPi * (k + 0.5) / 8.0;  // diagonals first: clear of both axes' labels
+        const Config q = space.wrap(config({scene_.start[0] + r * std::cos(a), scene_.start[1] + r * std::sin(a)}));
+        if (world().is_free(q) && space.distance(q, scene_.goal) > 0.5) return q;
+      }
+    return scene_.start;
+  }
+
   int seam_edges() const {
     int n = 0;
     const auto& v = prm().roadmap().vertices;
@@ -344,6 +377,11 @@ class TorusLesson : public PlannerLesson {
     draw_robot(view_, robot, scene_.goal, theme::with_alpha(theme::kGoal, 110), 2.0f);
     draw_robot(view_, robot, q_, world().is_free(q_) ? theme::kRobot : theme::kHit, 4.0f);
     view_.pop_clip();
+    if (const char* caption = workspace_caption()) {
+      // The loop is about the shape of the torus, not a motion the arm could make: say so where
+      // the arm is seen sweeping through obstacles, not only in the panel.
+      view_.draw_label(Vec2(scene_.workspace_min.x(), scene_.workspace_max.y()), caption, theme::kWarning, ImVec2(16, -22));
+    }
     (void)grab_link;
     // Links first (a press on a link turns its joint), the editor otherwise.
     if (dragging_link_ == 0 && view_.hovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left))
@@ -373,6 +411,11 @@ class TorusLesson : public PlannerLesson {
     if (replay_pending() && !editor_.dragging()) scene_edited();  // released
   }
 
+  const char* workspace_caption() const {
+    if (exercise_ == Exercise::None || !animate_) return nullptr;
+    return loop_blocked() ? "a loop in C-space, not a path: red where the arm hits" : "a loop in C-space, not a planned path";
+  }
+
   // 1 or 2 if the mouse is on link 1 or 2 of the posed arm, else 0.
   int link_under_mouse() const {
     const ArmPose pose = arm_pose(std::get<ArmRobot>(scene_.robot), q_);
@@ -387,6 +430,7 @@ class TorusLesson : public PlannerLesson {
   void cspace(LabContext& ctx, ImVec2 size) {
     cspace_view_.begin("##torus-cspace", size, Vec2(-kPi, -kPi), Vec2(kPi, kPi));
     ctx.views["cspace"] = &cspace_view_;
+    cspace_view_.set_angular(true, true);
     cspace_view_.draw_grid("θ₁", "θ₂");
     cspace_view_.push_clip();
     const bool stale = replay_pending() || session_.replaying();
@@ -416,8 +460,10 @@ class TorusLesson : public PlannerLesson {
     const Config at_mouse = space.wrap(config({m.x(), m.y()}));
     if (cspace_view_.hovered()) ghost_ = at_mouse;
     if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && cspace_view_.hovered()) {
+      // What is drawn on top takes the press: the arm's dot, then G, then S.
       const double grab = cspace_view_.pixels(11.0f);
-      if (length(Vec2(scene_.goal[0], scene_.goal[1]) - m) <= grab) drag_marker_ = 2;
+      if (length(Vec2(q_[0], q_[1]) - m) <= cspace_view_.pixels(8.0f)) posing_ = true;
+      else if (length(Vec2(scene_.goal[0], scene_.goal[1]) - m) <= grab) drag_marker_ = 2;
       else if (length(Vec2(scene_.start[0], scene_.start[1]) - m) <= grab) drag_marker_ = 1;
       else posing_ = true;
       marker_before_ = scene_;
@@ -525,6 +571,7 @@ class TorusLesson : public PlannerLesson {
   bool animate_ = false;
   double phase_ = 0.0;
   Exercise exercise_ = Exercise::None;
+  int scroll_to_exercise_ = 0;  // frames until the panel scrolls to the exercise's text (its height settles first)
   Config loop_origin_;
 };
 

@@ -8,8 +8,31 @@ namespace {
 // What an edge check cost: its evaluations, and for the grid checkers in a roadmap, which test
 // only what the endpoints' clearances leave unproven, how many they proved free.
 std::string checks_text(const PrmEvent& e) {
+  if (e.skipped == 0 && e.evaluations == 0) return "its ends are vertices, free: nothing between them to test";
   if (e.skipped == 0) return std::to_string(e.evaluations) + (e.evaluations == 1 ? " evaluation" : " evaluations");
+  if (e.evaluations == 0)
+    return "all " + std::to_string(e.skipped) + " configurations proven free by the ends' clearances, none tested";
   return std::to_string(e.evaluations) + " tested, " + std::to_string(e.skipped) + " proven free by the ends' clearances";
+}
+
+// An edge added: how it was proven free. Bisection with no evaluation is not a missing check:
+// the ends' clearances cover the whole line at once (lambda < eta(p) + eta(q)).
+std::string edge_added_text(const PrmEvent& e, const Prm& prm) {
+  const EdgeCheckerSpec& checker = prm.params().checker;
+  if (!prm.params().connector && checker.kind == EdgeCheckerSpec::Kind::Bisection && e.evaluations == 0)
+    return "free at once: its ends' clearances cover it (λ < η(p) + η(q), nothing between to test)";
+  return "free (" + checker.name() + ", " + checks_text(e) + ")";
+}
+
+// A vertex's close pairs: how many are new, and why fewer than k (or than are within r) are.
+std::string neighbors_text(const PrmEvent& e, const Prm& prm) {
+  const std::string rule = prm.params().neighbors.name();
+  std::string out = std::to_string(e.candidates) + (e.candidates == 1 ? " close pair" : " close pairs") + " to check (" + rule;
+  if (e.seen > 0)
+    out += "; " + std::to_string(e.seen) + (e.seen == 1 ? " other was" : " others were") + " checked already from the other vertex";
+  out += ")";
+  if (e.candidates == 0 && e.seen == 0) out += ": no other vertex is close";
+  return out;
 }
 
 }  // namespace
@@ -52,12 +75,10 @@ std::string describe(const PrmEvent& e, const Prm& prm, const Scene& scene) {
                     obstacle_label(scene, e.obstacle).c_str());
       break;
     case PrmEvent::Kind::Neighbors:
-      std::snprintf(buf, sizeof buf, "connecting vertex %d: %d close pair%s to check (%s)", e.vertex, e.candidates,
-                    e.candidates == 1 ? "" : "s", prm.params().neighbors.name().c_str());
+      std::snprintf(buf, sizeof buf, "connecting vertex %d: %s", e.vertex, neighbors_text(e, prm).c_str());
       break;
     case PrmEvent::Kind::EdgeAdded:
-      std::snprintf(buf, sizeof buf, "edge %d-%d: free (%s, %s), added", e.vertex, e.other,
-                    prm.params().checker.name().c_str(), checks_text(e).c_str());
+      std::snprintf(buf, sizeof buf, "edge %d-%d: %s, added", e.vertex, e.other, edge_added_text(e, prm).c_str());
       break;
     case PrmEvent::Kind::EdgeRejected:
       std::snprintf(buf, sizeof buf, "edge %d-%d: in collision at t = %.3f (%s)", e.vertex, e.other, e.collision_t,

@@ -3,14 +3,20 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "app/fonts.hpp"
 #include "app/theme.hpp"
+#include "app/web_bridge.hpp"
+#include "core/angles.hpp"
 
 namespace csl::app {
 
 namespace {
 constexpr float kMargin = 36.0f;  // room for the axis labels
+float ui_button_width(const char* label) {  // of a SmallButton
+  return ImGui::CalcTextSize(label).x + 2.0f * ImGui::GetStyle().FramePadding.x;
+}
 }
 
 void WorkspaceView::begin(const char* id, ImVec2 size, const Vec2& world_min, const Vec2& world_max) {
@@ -22,6 +28,22 @@ void WorkspaceView::begin(const char* id, ImVec2 size, const Vec2& world_min, co
   size.x = std::max(size.x, 64.0f);
   size.y = std::max(size.y, 64.0f);
   canvas_max_ = ImVec2(canvas_min_.x + size.x, canvas_min_.y + size.y);
+  if (zoom_ != 1.0 || pan_ != Vec2(0, 0)) {
+    // Zoomed or panned: a button back to the whole picture, at the canvas's top right. Submitted
+    // before the canvas, so that it takes the press (ImGui gives a press to the first of two
+    // overlapping items) and an editor under it sees none.
+    const char* label = "Fit view (F)";
+    ImGui::SetCursorScreenPos(ImVec2(canvas_max_.x - ui_button_width(label) - 6.0f, canvas_min_.y + 4.0f));
+    ImGui::PushID(id);
+    if (ImGui::SmallButton(label)) reset_view();
+    web::record_control((std::string("fit") + id).c_str());  // "fit##prm-workspace": for tests
+    fit_button_ = true;
+    ImGui::PopID();
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the whole scene again (F)");
+    ImGui::SetCursorScreenPos(canvas_min_);
+  } else {
+    fit_button_ = false;
+  }
   ImGui::InvisibleButton(id, size,
                          ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
                              ImGuiButtonFlags_MouseButtonMiddle);
@@ -77,47 +99,94 @@ void WorkspaceView::push_clip() const {
   draw_list()->PushClipRect(a, b, true);
 }
 
+WorkspaceView::Ticks WorkspaceView::ticks(int axis, double extent, double pixels_per_unit) const {
+  Ticks t;
+  if (angular_[axis]) {
+    // Multiples of pi: labels at pi/d (d = 1, 2, 4, 12, 24, 48: 180, 90, 45, 15, 7.5, 3.75
+    // degrees) at least ~56 px apart, and lines between them at least 12 px apart.
+    t.angular = true;
+    t.denominator = 48;
+    for (int d : {1, 2, 4, 12, 24, 48})
+      if (kPi / d * pixels_per_unit >= 56.0) t.denominator = d;
+    const double major = kPi / t.denominator;
+    t.major_every = 1;
+    for (int m : {2, 3, 4, 6})
+      if (major / m * pixels_per_unit >= 12.0) t.major_every = m;
+    t.step = major / t.major_every;
+    return t;
+  }
+  // A power of ten (or half of one) that gives lines at least ~24 px apart; labels every fifth.
+  double step = std::pow(10.0, std::floor(std::log10(extent)));
+  for (int i = 0; i < 64 && step * pixels_per_unit > 240.0; ++i) step /= 2.0;
+  for (int i = 0; i < 64 && step * pixels_per_unit > 48.0; ++i) step /= 5.0;
+  for (int i = 0; i < 64 && step * pixels_per_unit < 12.0; ++i) step *= 2.0;
+  t.step = step;
+  t.major_every = 5;
+  return t;
+}
+
+void WorkspaceView::angle_label(long long numerator, int denominator, char* out, std::size_t size) {
+  if (numerator == 0) {
+    std::snprintf(out, size, "0");
+    return;
+  }
+  long long a = std::llabs(numerator), b = denominator;
+  while (b != 0) {  // gcd
+    const long long r = a % b;
+    a = b;
+    b = r;
+  }
+  const long long num = numerator / a, den = denominator / a;
+  const char* sign = num < 0 ? "\xE2\x88\x92" : "";  // a minus sign, as the lessons write one
+  const long long m = std::llabs(num);
+  const std::string coefficient = m == 1 ? "" : std::to_string(m);
+  if (den == 1) std::snprintf(out, size, "%s%s\xCF\x80", sign, coefficient.c_str());
+  else std::snprintf(out, size, "%s%s\xCF\x80/%lld", sign, coefficient.c_str(), den);
+}
+
 void WorkspaceView::draw_grid(const char* x_label, const char* y_label) const {
   ImDrawList* dl = draw_list();
   dl->PushClipRect(canvas_min_, canvas_max_, true);
   const ImVec2 lo = to_screen(world_min_), hi = to_screen(world_max_);
   dl->AddRectFilled(ImVec2(lo.x, hi.y), ImVec2(hi.x, lo.y), theme::kCanvasBg);
 
-  // Grid spacing: a power of ten (or half of one) that gives lines at least ~24 px apart. The
-  // lines are counted, not stepped to an end: at most one per 6 pixels of the canvas, whatever
-  // the scene's size or the float scale does (a step below the rounding of its values stepped
-  // forever, and a 1e-15 wide workspace drew ~1e8 lines into the draw list).
   const double extent = std::max(world_max_.x() - world_min_.x(), world_max_.y() - world_min_.y());
   const double pixels_per_unit = static_cast<double>(scale_);
   if (!(extent > 0.0) || !std::isfinite(extent) || !(pixels_per_unit > 0.0) || !std::isfinite(pixels_per_unit)) {
     dl->PopClipRect();
     return;
   }
-  double step = std::pow(10.0, std::floor(std::log10(extent)));
-  for (int i = 0; i < 64 && step * pixels_per_unit > 240.0; ++i) step /= 2.0;
-  for (int i = 0; i < 64 && step * pixels_per_unit > 48.0; ++i) step /= 5.0;
-  for (int i = 0; i < 64 && step * pixels_per_unit < 12.0; ++i) step *= 2.0;
-  const double major = step * 5.0;
   const double most_lines = 2.0 + static_cast<double>(std::max(canvas_max_.x - canvas_min_.x, canvas_max_.y - canvas_min_.y)) / 6.0;
   // The part of the world rectangle on the canvas: zoomed in, lines outside it are not counted
   // (or a 1 x 1 workspace at zoom 10 would have more lines than the cap, and none drawn).
   const Vec2 seen_a = to_world(canvas_min_), seen_b = to_world(canvas_max_);
   for (int axis = 0; axis < 2; ++axis) {
+    tick_labels_[axis].clear();
+    const Ticks t = ticks(axis, extent, pixels_per_unit);
     const double a0 = std::max(world_min_[axis], std::min(seen_a[axis], seen_b[axis]));
     const double a1 = std::min(world_max_[axis], std::max(seen_a[axis], seen_b[axis]));
     if (!(a0 <= a1)) continue;
-    const double first = std::ceil(a0 / step);
-    const double count = std::floor((a1 - first * step) / step + 1e-9) + 1.0;  // lines in [a0, a1]
+    // Lines are counted, not stepped to an end: at most one per 6 pixels of the canvas, whatever
+    // the scene's size or the float scale does (a step below the rounding of its values stepped
+    // forever, and a 1e-15 wide workspace drew ~1e8 lines into the draw list).
+    const double first = std::ceil(a0 / t.step - 1e-9);
+    const double count = std::floor((a1 - first * t.step) / t.step + 1e-9) + 1.0;  // lines in [a0, a1]
     if (!(count >= 1.0) || count > most_lines) continue;
     for (int k = 0; k < static_cast<int>(count); ++k) {
-      const double v = (first + k) * step;
-      const bool is_major = std::fabs(v / major - std::round(v / major)) < 1e-6;
+      const double index = first + k;  // the line's multiple of the step
+      const double v = index * t.step;
+      const bool is_major = std::fmod(std::fabs(index), static_cast<double>(t.major_every)) < 0.5;
       Vec2 p = world_min_, q = world_max_;
       p[axis] = q[axis] = v;
       dl->AddLine(to_screen(p), to_screen(q), is_major ? theme::kGridMajor : theme::kGridMinor, 1.0f);
       if (!is_major) continue;
       char text[32];
-      std::snprintf(text, sizeof text, "%g", std::fabs(v) < 1e-12 * extent ? 0.0 : v);
+      if (t.angular) {
+        angle_label(static_cast<long long>(std::llround(index / t.major_every)), t.denominator, text, sizeof text);
+      } else {
+        std::snprintf(text, sizeof text, "%g", std::fabs(v) < 1e-12 * extent ? 0.0 : v);
+      }
+      tick_labels_[axis].emplace_back(text);
       ImFont* font = fonts().small;
       const float fs = font->FontSize * ImGui::GetIO().FontGlobalScale;
       const ImVec2 ts = font->CalcTextSizeA(fs, 1e9f, 0.0f, text);
@@ -128,16 +197,6 @@ void WorkspaceView::draw_grid(const char* x_label, const char* y_label) const {
     }
   }
   dl->AddRect(ImVec2(lo.x, hi.y), ImVec2(hi.x + 1, lo.y + 1), theme::kFrame, 0.0f, 0, 1.0f);
-  if (zoom_ != 1.0 || pan_ != Vec2(0, 0)) {
-    // Zoomed or panned: say how to get the whole picture back.
-    const char* hint = "F: fit the view";
-    ImFont* small = fonts().small;
-    const float size = small->FontSize * ImGui::GetIO().FontGlobalScale;
-    const ImVec2 ts = small->CalcTextSizeA(size, 1e9f, 0.0f, hint);
-    const ImVec2 at(canvas_max_.x - ts.x - 8.0f, canvas_min_.y + 4.0f);
-    dl->AddRectFilled(ImVec2(at.x - 4, at.y - 1), ImVec2(at.x + ts.x + 4, at.y + ts.y + 1), theme::rgba(255, 255, 255, 220), 3.0f);
-    dl->AddText(small, size, at, theme::kLabel, hint);
-  }
   // Axis names beside the frame.
   ImFont* font = fonts().small;
   const float fs = font->FontSize * ImGui::GetIO().FontGlobalScale;
