@@ -3,7 +3,9 @@
 // answer typed and checked.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { withPage, chord, worldToPage, click, waitFrames, screenshot, inspectPng, api, cli, refusal } from './lib/harness.mjs';
+import { withPage, chord, worldToPage, click, waitFrames, screenshot, inspectPng, api, cli, refusal,
+         expectView, expectGolden } from './lib/harness.mjs';
+import { boundProbes, p9Probes } from './lib/probes.mjs';
 import { p9RightArea } from '../lib/p9.mjs';
 
 test('PRM analysis: an experiment, and P9 by clicking', () => withPage(async ({ page, browser }) => {
@@ -22,8 +24,8 @@ test('PRM analysis: an experiment, and P9 by clicking', () => withPage(async ({ 
     assert.ok(row.ci_low <= row.failure_rate && row.failure_rate <= row.ci_high);
   }
   assert.ok(s.experiment.rows[0].failures >= s.experiment.rows[1].failures);
-  const shot1 = await screenshot(page, 'analysis-bound.png');
-  assert.ok((await inspectPng(browser, shot1.png)).colours > 30);
+  // The plot: each bound drawn where its formula, written here, puts it.
+  await expectView(page, browser, 'analysis-bound.png', boundProbes(s), 'bound');
 
   // P9: click a point in the square; the exact probability is the CLI's.
   await api(page, 'set_params', { params: { tab: 'visibility' } });
@@ -36,9 +38,7 @@ test('PRM analysis: an experiment, and P9 by clicking', () => withPage(async ({ 
   const v = cli('visibility', '--x', String(s.visibility.x), '--y', String(s.visibility.y), '--gap', String(s.visibility.gap));
   assert.equal(s.visibility.exact, v.exact);
   assert.ok(Math.abs(s.visibility.monte_carlo - v.exact) < 5 * Math.sqrt(v.exact * (1 - v.exact) / s.visibility.trials));
-  await page.mouse.move(5, 5);
-  const shot2 = await screenshot(page, 'analysis-p9.png');
-  assert.ok((await inspectPng(browser, shot2.png)).colours > 20);
+  await expectView(page, browser, 'analysis-p9.png', p9Probes(s.visibility), 'p9', { misses: 5 });
 
   // Each point, gap and sample count gets its own samples (a function of them and mc_seed).
   const here = (await api(page, 'state')).visibility;
@@ -143,10 +143,7 @@ test('PRM analysis: P8 as the handout has it, then refined, against the path bou
   // The wall-gap scene's numbers: about 2304 balls, p = 1% at about 8900 samples (17600 refined).
   assert.equal(s.handout.m, 2304);
   assert.ok(s.handout.n_for_target > 8800 && s.handout.n_for_target < 9000, `${s.handout.n_for_target}`);
-  await page.mouse.move(5, 5);
-  await waitFrames(page, 3);
-  const shot = await screenshot(page, 'analysis-p8.png');
-  assert.ok((await inspectPng(browser, shot.png)).colours > 30);
+  await expectView(page, browser, 'analysis-p8.png', boundProbes(s), 'bound');
 
   // Another target, another clearance: the numbers follow. A bad target changes nothing.
   await api(page, 'set_params', { params: { target: 0.001, clearance: 0.1 } });
@@ -176,10 +173,7 @@ test('PRM analysis: P9 by cases, and the default draw holds the exact value', ()
   assert.ok(v.ci_low <= v.exact && v.exact <= v.ci_high, `default draw [${v.ci_low}, ${v.ci_high}] against ${v.exact}`);
   assert.equal(v.within_ci, true);
   assert.equal(v.case, 'top/right edge');
-  await page.mouse.move(5, 5);
-  await waitFrames(page, 3);
-  const shot = await screenshot(page, 'analysis-p9-cases.png');
-  assert.ok((await inspectPng(browser, shot.png)).colours > 20);
+  await expectView(page, browser, 'analysis-p9-cases.png', p9Probes(v), 'p9', { misses: 5 });
 
   // Every case, clicked with the mouse: the breakdown's rays, areas and probability against
   // what is computed here.
@@ -223,15 +217,10 @@ test('PRM analysis: P8 and P9 in a 900 px embed', () => withPage({ viewport: { w
   open: 'embed.html?lesson=analysis&tab=tiling' }, async ({ page, browser }) => {
   let s = await api(page, 'state');
   assert.equal(s.tab, 'tiling');
-  await page.mouse.move(5, 5);
-  await waitFrames(page, 3);
-  const p8 = await screenshot(page, 'analysis-p8-embed.png');
-  assert.ok((await inspectPng(browser, p8.png)).colours > 20);
+  await expectView(page, browser, 'analysis-p8-embed.png', boundProbes(s), 'bound');
   await api(page, 'set_params', { params: { tab: 'visibility' } });
-  await waitFrames(page, 3);
-  const p9 = await screenshot(page, 'analysis-p9-embed.png');
-  assert.ok((await inspectPng(browser, p9.png)).colours > 20);
   s = await api(page, 'state');
+  await expectView(page, browser, 'analysis-p9-embed.png', p9Probes(s.visibility), 'p9', { misses: 5 });
   assert.equal(s.visibility.within_ci, true);
 }));
 
@@ -266,6 +255,7 @@ test('C-space notation: build a robot, then answer an exercise with the keyboard
   s = await answer(page, 'T^3');
   assert.equal(s.answer, 'T^3');
   assert.equal(s.check.correct, true);
-  const shot = await screenshot(page, 'notation.png');
-  assert.ok((await inspectPng(browser, shot.png)).colours > 30);
+  // The 3R arm of the exercise, and the surfaces beside it, against references.
+  await expectGolden(page, browser, 'notation-practice-3r', 'notation-picture');
+  await expectGolden(page, browser, 'notation-surfaces', 'notation-surfaces');
 }));

@@ -4,9 +4,9 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { withBrowser, withPage, drawDisk, collectErrors, openLab, click, waitFrames, api, pageButton,
-         screenshot } from './lib/harness.mjs';
+         screenshot, expectView, sceneProbes } from './lib/harness.mjs';
 
-test('reload restores a drawn scene; reset asks first and can be undone', () => withPage(async ({ page }) => {
+test('reload restores a drawn scene; reset asks first and can be undone', () => withPage(async ({ page, browser }) => {
   await api(page, 'select_lesson', { id: 'collision' });
   await api(page, 'set_params', { params: { grid_n: 7 } });
   await api(page, 'run_to', { steps: 2 });
@@ -46,7 +46,14 @@ test('reload restores a drawn scene; reset asks first and can be undone', () => 
   // Reset: File, then the menu item, then the modal's Reset (Cancel first: nothing changes).
   await click(page, await pageButton(page, 'file'));
   await click(page, await pageButton(page, 'reset'));
-  await screenshot(page, 'autosave-reset-modal.png');
+  // The modal dims the lab behind it: the workspace's disks and free space alike lie under ImGui's
+  // veil (dark grey at 35 %), so a disk is darker than the free space but neither as it was.
+  const veiled = ([r, g, b]) => Math.max(r, g, b) - Math.min(r, g, b) <= 16 && r >= 150 && r <= 200;
+  const under = ([r, g, b]) => Math.max(r, g, b) - Math.min(r, g, b) <= 16 && r >= 70 && r < 110;
+  await expectView(page, browser, 'autosave-reset-modal.png',
+                   sceneProbes(drawn, { free: 0, markers: false }).map((p) => ({ ...p, look: under, why: 'a disk under the veil' }))
+                     .concat([[0.1, 0.9], [0.5, 0.1], [0.9, 0.6]].map((at) => ({ at, look: veiled, why: 'free space under the veil' }))),
+                   'workspace', { keepMouse: true });
   await click(page, await pageButton(page, 'reset-cancel'));
   assert.deepEqual(await api(page, 'get_scene'), drawn, 'Cancel keeps the work');
   await click(page, await pageButton(page, 'file'));
@@ -68,7 +75,8 @@ test('reload restores a drawn scene; reset asks first and can be undone', () => 
   await page.waitForFunction(() => window.cspacelab.getScene().obstacles.length === 2);
   assert.deepEqual(await api(page, 'get_scene'), drawn);
   assert.equal((await api(page, 'state')).roadmap_hash, before.roadmap_hash);
-  await screenshot(page, 'autosave-restored.png');
+  // And drawn: the two disks where they were drawn, S and G (the roadmap fills the free space).
+  await expectView(page, browser, 'autosave-restored.png', sceneProbes(drawn, { free: 0 }));
 }));
 
 test('storage that cannot be read is reported and replaced, not trusted',

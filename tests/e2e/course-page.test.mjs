@@ -4,7 +4,8 @@
 // zooms a focused one, and each keeps its own autosave across a reload.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { withBrowser, collectErrors, openLabs, drag, click, keys, waitFrames, screenshot } from './lib/harness.mjs';
+import { withBrowser, collectErrors, openLabs, drag, click, keys, waitFrames, screenshot, expectView,
+         sceneProbes } from './lib/harness.mjs';
 
 const A = '#lab-collision';
 const B = '#lab-prm';
@@ -36,9 +37,13 @@ test('two labs on a course page work and do not interfere', () => withBrowser(as
   assert.equal((await call(page, B, 'status')).notice, '');
   assert.equal(await page.evaluate(() => document.activeElement === document.body), true, 'no lab takes focus on its own');
 
-  // The wheel over an unfocused lab scrolls the page, and the lab's view stays put.
+  // The wheel over an unfocused lab scrolls the page, and the lab's view stays put. (First, lab A
+  // is drawn as its scene says, at its place on the page: before the wheel brings the page's
+  // hint "Click the lab first" over it.)
   await page.evaluate(() => window.scrollTo(0, document.querySelector('#lab-collision').offsetTop - 120));
-  await waitFrames(page, 3);
+  const sceneA = await call(page, A, 'getScene');
+  await expectView(page, browser, 'course-page-lab.png',
+                   sceneProbes(sceneA, { free: 8, avoid: [[sceneA.start, sceneA.goal]] }), 'workspace', { lab: A });
   const scaleA = (await call(page, A, 'view')).scale;
   let [over] = await toPage(page, A, [[0.5, 0.3]]);
   const y0 = await page.evaluate(() => window.scrollY);
@@ -81,7 +86,10 @@ test('two labs on a course page work and do not interfere', () => withBrowser(as
   assert.equal((await call(page, A, 'getScene')).obstacles.length, 1, 'the other scene is untouched');
   assert.equal((await call(page, A, 'state')).shown, 2, 'and its step too');
   assert.equal((await call(page, B, 'view')).scale > 0, true);
-  await screenshot(page, 'course-page-prm.png');
+  // Lab B with the disk drawn into it (and its P9 walls; 5 steps: the endpoints and 3 samples).
+  const vertices = (await call(page, B, 'state', { roadmap: true })).vertices;
+  await expectView(page, browser, 'course-page-prm.png',
+                   sceneProbes(sceneB, { free: 6, avoid: vertices.map((v) => [v, v]) }), 'workspace', { lab: B });
 
   // Each lab saves under its own id, and a reload brings both back.
   await page.evaluate(() => { for (const a of window.CSpaceLab.instances) a.shell.saveNow(); });

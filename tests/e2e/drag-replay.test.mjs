@@ -5,7 +5,7 @@
 // (which may stop short of the end: the new scene's run can take more steps).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { withPage, worldToPage, waitFrames, keys, api, screenshot, hold, chord } from './lib/harness.mjs';
+import { withPage, worldToPage, waitFrames, keys, api, screenshot, hold, chord, expectView } from './lib/harness.mjs';
 
 const DISK = { type: 'disk', center: [0.5, 0.5], radius: 0.1 };
 const SCENE = { version: 1, start: [0.05, 0.05], goal: [0.95, 0.95], obstacles: [DISK] };
@@ -39,7 +39,7 @@ async function startTorusRun(page) {
 }
 
 test('after a large run, a drag keeps the old roadmap until the release, then replays once',
-  () => withPage({ viewport: { width: 1100, height: 720 } }, async ({ page }) => {
+  () => withPage({ viewport: { width: 1100, height: 720 } }, async ({ page, browser }) => {
   const before = await startRun(page, { samples: 6000, neighbors: 'k:10', seed: 3 });
   assert.equal(before.done, true);
   assert.equal(before.replay_pending, false);
@@ -51,7 +51,17 @@ test('after a large run, a drag keeps the old roadmap until the release, then re
     const centre = (await api(page, 'get_scene')).obstacles[0].center;
     assert.ok(Math.abs(centre[0] - (0.5 + 0.12 * i / 4)) < 0.01, `the disk follows the mouse: ${centre}`);
   } });
-  await screenshot(page, 'drag-replay-pending.png');
+  // The picture while the button is held: the old roadmap under a white veil, the disk drawn
+  // where it is now (over the veil), and where it was, nothing (the roadmap went round it).
+  const old = (await api(page, 'state', { roadmap: true })).vertices.slice(2)
+    .filter((v) => Math.hypot(v[0] - 0.62, v[1] - 0.55) > 0.16 && Math.hypot(v[0] - 0.5, v[1] - 0.5) > 0.13 && v[1] < 0.85)
+    .filter((_, i) => i % 97 === 0).slice(0, 12);
+  assert.ok(old.length >= 8);
+  await expectView(page, browser, 'drag-replay-pending.png', [
+    { at: [0.62, 0.55], look: ([r, g, b]) => Math.min(r, g, b) < 170, why: 'the disk, where the mouse has it' },
+    { at: [0.44, 0.47], look: 'canvas', why: 'where the disk was: no roadmap there' },
+    ...old.map((v) => ({ at: v, look: 'faded', why: 'a vertex of the old roadmap, faded' })),
+  ], 'workspace', { keepMouse: true });
   await page.mouse.up();
   await waitFrames(page, 2);
 
@@ -127,7 +137,7 @@ test('the torus lesson: the C-obstacles follow the drag, the replay waits for th
 // that does not move changes nothing, and coming back to the press point restores the scene bit
 // for bit, so the planner that ran in it is kept rather than replayed.
 test('a press without a move, or a drag back to where it was pressed, replays nothing',
-  () => withPage({ viewport: { width: 1100, height: 720 } }, async ({ page }) => {
+  () => withPage({ viewport: { width: 1100, height: 720 } }, async ({ page, browser }) => {
   const before = await startRun(page, { samples: 6000, neighbors: 'k:10', seed: 3 });
   // Off the centre: the old editor moved a pressed disk's centre to the cursor.
   const [from, to] = await worldToPage(page, [[0.53, 0.48], [0.62, 0.55]]);

@@ -3,7 +3,8 @@
 // and script tag), pasted into a page, show the lab as it was.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { withBrowser, collectErrors, openLab, click, waitFrames, api, pageButton, screenshot } from './lib/harness.mjs';
+import { withBrowser, collectErrors, openLab, click, waitFrames, api, pageButton, screenshot, expectView,
+         sceneProbes } from './lib/harness.mjs';
 
 // A page of the same site made up on the spot (playwright answers the request).
 async function hostPage(page, url, body) {
@@ -39,7 +40,13 @@ test('embed.html in an iframe: fits, follows resizes, no scroll hijack, minimal 
   const size = () => frame.evaluate(() => [window.cspacelab.module.canvas.width, window.cspacelab.module.canvas.height]);
   assert.deepEqual(await size(), [600, 380], 'the canvas fills the iframe');
   await page.evaluate(() => window.scrollTo(0, 400));
-  await screenshot(page, 'embed-iframe.png');
+  // The P12 scene in the iframe, as its geometry says: the disk, p and q, free space off the line.
+  const p12 = await frame.evaluate(() => window.cspacelab.getScene());
+  await expectView(page, browser, 'embed-iframe.png', [
+    // (the disk above the line: across its centre lies the grid's tick at t = 0.2, in collision)
+    ...sceneProbes(p12, { free: 8, avoid: [[p12.start, p12.goal]] }).filter((p) => p.why !== 'inside a disk'),
+    { at: [0.2, 0.12], look: 'obstacle', why: 'the disk above the line' },
+  ], 'workspace', { frame });
 
   // The container grows: the lab follows.
   await page.evaluate(() => Object.assign(document.getElementById('f').style, { width: '820px', height: '460px' }));
@@ -105,7 +112,13 @@ test('the Embed button\'s snippets reproduce the lab in another page', () => wit
     }
     assert.equal(state.roadmap_hash, want.roadmap_hash, 'the same roadmap');
     assert.equal(state.steps, 33, 'at the same step');
-    await screenshot(other, snippet.startsWith('<iframe') ? 'embed-snippet-iframe.png' : 'embed-snippet-script.png');
+    // The scene drawn in the other page: the disk and the markers (33 steps in: samples, no edges
+    // yet, so free space may hold vertices; only the disk and markers are certain).
+    const frame = snippet.startsWith('<iframe') ? await (await other.$('iframe')).contentFrame() : null;
+    await (frame ? other.locator('iframe') : other.locator('[data-lab]')).scrollIntoViewIfNeeded();
+    const shown = await (frame || other).evaluate(() => window.cspacelab.getScene());
+    await expectView(other, browser, snippet.startsWith('<iframe') ? 'embed-snippet-iframe.png' : 'embed-snippet-script.png',
+                     sceneProbes(shown, { free: 0 }), 'workspace', { frame });
     assert.deepEqual(otherErrors, []);
     await other.close();
   }

@@ -84,3 +84,41 @@ test('F fits the view after zooming and panning; a scene of another size is show
               `corner (${px}, ${py}) on the canvas`);
   }
 }));
+
+// The same, with the mouse alone (issue 21 asks for a visible command): zoomed in, the view shows
+// a "Fit view (F)" button, and pressing it fits the view; the press is the button's, not the
+// editor's (with the disk tool on, a press on the canvas would start a disk).
+test('a zoomed view shows a Fit button that fits it, and the press draws nothing',
+  () => withPage({ viewport: { width: 1280, height: 800 } }, async ({ page }) => {
+  await page.evaluate(() => window.cspacelab.selectLesson('step-prm'));
+  await waitFrames(page, 2);
+  const fitted = await page.evaluate(() => window.cspacelab.view([[0, 0], [1, 1]]));
+  assert.equal(fitted.fit_button, false, 'no button while the view is whole');
+  const before = (await page.evaluate(() => window.cspacelab.getScene())).obstacles.length;
+  const box = await page.locator('canvas').boundingBox();
+  const [x, y] = fitted.points[1];
+  await page.mouse.move(box.x + x - 120, box.y + y + 160);
+  await waitFrames(page, 2);
+  for (let i = 0; i < 3; ++i) { await page.mouse.wheel(0, -200); await waitFrames(page, 1); }
+  const zoomed = await page.evaluate(() => window.cspacelab.view([[0, 0], [1, 1]]));
+  assert.ok(zoomed.scale > fitted.scale * 1.3 && zoomed.fit_button, `zoomed, with its button: ${zoomed.scale}`);
+  await page.keyboard.press('d');  // the disk tool: a press on the canvas would begin a disk
+  await waitFrames(page, 2);
+  const fit = await page.evaluate(() => {
+    const r = window.cspacelab.pageState().buttons['fit##prm-workspace'];
+    const b = window.cspacelab.module.canvas.getBoundingClientRect();
+    return r && { x: b.left + (r[0] + r[2]) / 2, y: b.top + (r[1] + r[3]) / 2 };
+  });
+  assert.ok(fit, 'the button is on screen');
+  await page.mouse.move(fit.x, fit.y);
+  await waitFrames(page, 2);
+  await page.mouse.down();
+  await waitFrames(page, 2);
+  await page.mouse.up();
+  await waitFrames(page, 3);
+  const after = await page.evaluate(() => window.cspacelab.view([[0, 0], [1, 1]]));
+  assert.deepEqual(after.points, fitted.points, 'fitted again');
+  assert.equal(after.scale, fitted.scale);
+  assert.equal(after.fit_button, false);
+  assert.equal((await page.evaluate(() => window.cspacelab.getScene())).obstacles.length, before, 'no disk was drawn');
+}));

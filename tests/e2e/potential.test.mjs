@@ -11,7 +11,7 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { withPage, withBrowser, collectErrors, worldToPage, drag, click, waitFrames, screenshot, inspectPng, api,
-         cli, tempJson } from './lib/harness.mjs';
+         cli, tempJson, pageButton, expectView, sceneProbes } from './lib/harness.mjs';
 
 // --- P13 by hand: the field at the rectangle's vertices, independent of the lab's code.
 
@@ -379,7 +379,14 @@ test('potential fields: forces, dragging, heat map, descent, local minimum and e
   assert.equal(s.descent.outcome, 'local_minimum');
   const stuck = s.descent.trajectory.at(-1);
   assert.ok(stuck[1] > 0.4 && stuck[1] < 0.6 && stuck[0] > 0.4 && stuck[0] < 0.6, `stuck inside the cup at ${stuck}`);
-  await screenshot(page, 'potential-cup-stuck.png');
+  // Drawn there: the robot (the lab's blue) in the cup, the cup's walls filled (over the heat map).
+  await expectView(page, browser, 'potential-cup-stuck.png', [
+    ...sceneProbes(cup, { free: 0, markers: false }),
+    // (its control point: a dark dot, 3 px across its centre, in a blue ring; the heat map is
+    // nowhere as dark)
+    { at: stuck, look: 'dark', why: 'the robot where the descent stopped' },
+    { at: stuck, dx: 2, look: 'dark', why: 'the robot where the descent stopped' },
+  ]);
   await api(page, 'set_params', { params: { escapes: 5, seed: 1 } });
   await api(page, 'run_to', { steps: 100000 });
   s = await api(page, 'state');
@@ -465,4 +472,27 @@ test('potential fields: the forces table in a 900 px embed', () => withBrowser(a
   assert.ok(layout.rows.every((r) => r[3] <= 700), 'every row on screen');
   await screenshot(page, 'potential-embed-900.png');
   assert.deepEqual(errors, []);
+}));
+
+// "Descend from the start" descends (issue 21): pressed with the mouse it puts the robot back at
+// the start and plays the descent, as the button says; it used to move the robot and wait.
+test('potential fields: "Descend from the start" starts the descent', () => withPage(async ({ page }) => {
+  await api(page, 'select_lesson', { id: 'potential' });
+  await waitFrames(page, 2);
+  const scene = await api(page, 'get_scene');
+  // Somewhere else first, as a student who dragged the robot away.
+  await api(page, 'set_params', { params: { from: [scene.start[0] + 0.05, scene.start[1] - 0.05, scene.start[2]] } });
+  await waitFrames(page, 2);
+  const before = await api(page, 'state');
+  assert.notDeepEqual(before.from, scene.start);
+  assert.equal(before.steps, 0);
+  await click(page, await pageButton(page, 'potential-descend'));
+  await page.waitForFunction(() => window.cspacelab.call('state', {}).steps >= 10, null, { timeout: 20000 });
+  const s = await api(page, 'state');
+  assert.deepEqual(s.from, scene.start, 'from the scene\'s start');
+  assert.deepEqual(s.descent.trajectory[0], scene.start);
+  // It went downhill: the potential where it stands is below the start's.
+  await api(page, 'set_params', { params: { from: scene.start } });
+  const atStart = (await api(page, 'state')).U;
+  assert.ok(s.descent.U < atStart, `U ${s.descent.U} after ${s.descent.steps} steps, ${atStart} at the start`);
 }));

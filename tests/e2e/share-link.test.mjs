@@ -4,7 +4,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { withBrowser, withPage, collectErrors, openLab, click, waitFrames, api, pageButton,
-         screenshot } from './lib/harness.mjs';
+         screenshot, expectView, sceneProbes } from './lib/harness.mjs';
 
 const SCENE = {
   version: 1,
@@ -54,6 +54,15 @@ test('a share link reproduces the identical roadmap and step in a new page',
   assert.match(u.searchParams.get('scene'), /^z\.[A-Za-z0-9_-]+$/, 'a custom scene is deflated and base64url-encoded');
   assert.ok(link.length < 2000, `a compact link (${link.length} characters)`);
   await screenshot(page, 'share-dialog.png');
+  // The dialog is on screen, in front, and shows the link whole.
+  const dialog = await page.evaluate(() => {
+    const d = document.querySelector('.lab-dialog'), r = d.getBoundingClientRect();
+    const top = document.elementFromPoint(r.left + r.width / 2, r.top + 8);
+    return { w: r.width, h: r.height, inside: r.left >= 0 && r.top >= 0 && r.right <= innerWidth && r.bottom <= innerHeight,
+             front: d.contains(top), text: d.querySelector('textarea').value };
+  });
+  assert.ok(dialog.w > 200 && dialog.h > 80 && dialog.inside && dialog.front, JSON.stringify(dialog));
+  assert.equal(dialog.text, link);
 
   // A new page in a fresh profile: the identical state.
   const fresh = await browser.newContext({ viewport: { width: 1280, height: 800 } });
@@ -68,6 +77,8 @@ test('a share link reproduces the identical roadmap and step in a new page',
   assert.deepEqual(reproduced.params, original.params);
   assert.deepEqual(await api(other, 'get_scene'), originalScene, 'same scene, to the last digit');
   assert.equal((await api(other, 'status')).notice, '', 'no complaint about a good link');
+  // And it draws that scene: the disk, the polygon, S and G (the roadmap covers the free space).
+  await expectView(other, browser, 'share-opened.png', sceneProbes(originalScene, { free: 0 }));
   await other.close();
   await fresh.close();
 
@@ -88,7 +99,7 @@ test('a share link reproduces the identical roadmap and step in a new page',
   await click(second, await pageButton(second, 'restore-previous'));
   await second.waitForFunction(() => window.cspacelab.getScene().obstacles.length === 4);
   assert.equal((await api(second, 'state')).steps, 20, 'the previous work, at its step');
-  await screenshot(second, 'share-restored-previous.png');
+  await expectView(second, browser, 'share-restored-previous.png', sceneProbes(await api(second, 'get_scene'), { free: 0 }));
   // ...and the link's state is now the previous work: nothing was lost either way.
   await click(second, await pageButton(second, 'restore-previous'));
   await second.waitForFunction(() => window.cspacelab.getScene().obstacles.length === 3);

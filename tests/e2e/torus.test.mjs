@@ -7,7 +7,8 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { withPage, worldToPage, drag, click, keys, waitFrames, screenshot, inspectPng, api, cli,
-         tempJson } from './lib/harness.mjs';
+         tempJson, pageButton, expectView, sceneProbes } from './lib/harness.mjs';
+import { cspaceProbes } from './lib/probes.mjs';
 
 test('the arm and its torus: linked views, live C-obstacles, PRM across seams',
   () => withPage(async ({ page, browser }) => {
@@ -72,6 +73,69 @@ test('the arm and its torus: linked views, live C-obstacles, PRM across seams',
   await page.mouse.move(5, 5);
   await waitFrames(page, 20);
   assert.equal((await api(page, 'state')).exercise, 'around');
-  const { png } = await screenshot(page, 'torus.png');
-  assert.ok((await inspectPng(browser, png)).colours > 40);
+  // The square: the C-obstacles where the map has them, under the roadmap (whose edges are free),
+  // off the markers and the loop's trail (a row at the loop's theta2, through the C-obstacles).
+  const last = await api(page, 'state');
+  await expectView(page, browser, 'torus.png',
+                   await cspaceProbes(page, { free: false, avoid: [last.start, last.goal], rows: [last.q[1]] }), 'cspace');
+}));
+
+// What a new student meets first (issue 21): the arm's dot, S and G apart in the square, so that
+// "drag in the square to pose the arm" from the dot poses the arm and leaves the start alone;
+// axes read in multiples of pi; the loop around the torus says it is not a path.
+test('the torus at load: markers apart, a drag from the dot poses the arm, axes in pi, the loop is not a path',
+  () => withPage(async ({ page, browser }) => {
+  await api(page, 'select_lesson', { id: 'torus' });
+  await waitFrames(page, 3);
+  const s = await api(page, 'state');
+  const [dot, start, goal] = await worldToPage(page, [s.q, s.start, s.goal], 'cspace');
+  const apart = (a, b) => Math.hypot(a.x - b.x, a.y - b.y);
+  // A marker is 9 px in radius and the dot 6: 24 px leaves both whole and pressable.
+  assert.ok(apart(dot, start) >= 24, `the dot ${JSON.stringify(dot)} and S ${JSON.stringify(start)} overlap`);
+  assert.ok(apart(dot, goal) >= 24, 'the dot and G overlap');
+  assert.equal(s.q_free, true, 'the arm stands free');
+
+  // The square shows the exact C-obstacles, as the map (state's blocked_at) has them.
+  const cprobes = await cspaceProbes(page, { avoid: [s.q, s.start, s.goal] });
+  assert.ok(cprobes.length >= 60, `${cprobes.length} probes`);
+  await expectView(page, browser, 'torus-cspace-at-load.png', cprobes, 'cspace');
+  // The workspace: the obstacles, and free space away from the three arms drawn (start, goal, now).
+  const scene0 = await api(page, 'get_scene');
+  const arm = (q) => {
+    const [bx, by] = scene0.robot.base, [l1, l2] = scene0.robot.lengths;
+    const elbow = [bx + l1 * Math.cos(q[0]), by + l1 * Math.sin(q[0])];
+    return [[[bx, by], elbow], [elbow, [elbow[0] + l2 * Math.cos(q[0] + q[1]), elbow[1] + l2 * Math.sin(q[0] + q[1])]]];
+  };
+  await expectView(page, browser, 'torus-workspace-at-load.png',
+                   sceneProbes(scene0, { markers: false, avoid: [s.q, s.start, s.goal].flatMap(arm) }));
+
+  // From the dot, a drag poses the arm; the start stays where it was.
+  const target = [s.q[0] - 0.6, s.q[1] + 0.9];
+  const [to] = await worldToPage(page, [target], 'cspace');
+  await drag(page, dot, to);
+  const after = await api(page, 'state');
+  const { scale } = await page.evaluate(() => window.cspacelab.view([], 'cspace'));
+  assert.ok(Math.hypot(after.q[0] - target[0], after.q[1] - target[1]) <= 3 / scale, `posed at ${after.q}`);
+  assert.deepEqual(after.start, s.start, 'the start did not move');
+  assert.equal(after.prm.planner_builds, s.prm.planner_builds, 'nothing was replanned');
+
+  // The square's axes are angles: labelled in multiples of pi, as a student thinks of them.
+  const { ticks } = await page.evaluate(() => window.cspacelab.view([], 'cspace'));
+  for (const axis of ['x', 'y']) {
+    assert.ok(ticks[axis].includes('π') && ticks[axis].includes('−π') && ticks[axis].includes('0'), `${axis}: ${ticks[axis]}`);
+    for (const label of ticks[axis]) assert.match(label, /^(0|−?\d*π(\/\d+)?)$/, `${axis}: "${label}"`);
+  }
+  // The workspace's axes are lengths, in decimals.
+  const workspace = (await page.evaluate(() => window.cspacelab.view([], 'workspace'))).ticks;
+  assert.ok(workspace.x.includes('0.5') && !workspace.x.some((l) => l.includes('π')), `workspace: ${workspace.x}`);
+
+  // The loop around the torus, pressed with the mouse: the workspace says it is no path.
+  const around = await pageButton(page, 'torus-loop-around');
+  await click(page, around);
+  await waitFrames(page, 3);
+  const looping = await api(page, 'state');
+  assert.equal(looping.exercise, 'around');
+  assert.match(looping.workspace_caption, /not a (planned )?path/);
+  // In this scene the loop crosses C-obstacles, and the caption says where the arm would hit.
+  assert.match(looping.workspace_caption, /hits/);
 }));

@@ -253,3 +253,207 @@ export async function openLabs(page, url, selectors) {
     return el && el.cspacelab && el.cspacelab.status().frames >= 2;
   }), selectors, { timeout: 30000 });
 }
+
+// ---- pictures checked against the geometry ------------------------------------------------
+
+/**
+ * The colours a view's pixels take (src/app/theme.hpp, as they land on the white canvas), each
+ * a test of one [r, g, b]: a probe names one of these, or gives [r, g, b] (within 24 a channel).
+ */
+export const LOOKS = {
+  // The canvas, or a grid line over it: light and grey.
+  canvas: ([r, g, b]) => Math.min(r, g, b) >= 190 && Math.max(r, g, b) - Math.min(r, g, b) <= 12,
+  // An obstacle's fill, rgba(96, 96, 104, 200) over white (130, 130, 136) or a grid line, or
+  // opaque over a heat map (the potential lesson): a blue-grey between (90, 90, 98) and (150, ...).
+  obstacle: ([r, g, b]) => r >= 90 && r <= 150 && Math.abs(r - g) <= 6 && b >= r && b - r <= 14,
+  // The torus's C-obstacles, rgba(96, 96, 104, 210) over white.
+  cobstacle: ([r, g, b]) => r >= 105 && r <= 145 && Math.abs(r - g) <= 6 && b >= r && b - r <= 14,
+  // A roadmap under the white veil of a pending replay: light, but tinted.
+  faded: ([r, g, b]) => Math.min(r, g, b) >= 140 && Math.max(r, g, b) - Math.min(r, g, b) >= 20,
+  start: near([0, 158, 115]),
+  goal: near([213, 94, 0]),
+  dark: ([r, g, b]) => Math.max(r, g, b) <= 110,
+};
+function near(rgb, tolerance = 24) {
+  return (c) => c.every((v, k) => Math.abs(v - rgb[k]) <= tolerance);
+}
+
+/**
+ * A look for a thin anti-aliased line of colour `rgb` over the white canvas: at a point on the
+ * line the pixel is at least half the colour (each channel the same mix of the colour and white,
+ * within 0.2), whatever fraction of the pixel the line covers.
+ */
+export function stroke(rgb) {
+  return (c) => {
+    const mixes = [0, 1, 2].filter((k) => 255 - rgb[k] > 40).map((k) => (255 - c[k]) / (255 - rgb[k]));
+    const mean = mixes.reduce((a, b) => a + b, 0) / mixes.length;
+    return mean >= 0.5 && mixes.every((m) => Math.abs(m - mean) <= 0.2) &&
+      [0, 1, 2].every((k) => 255 - rgb[k] > 40 || c[k] >= 200);
+  };
+}
+
+/**
+ * Looks at a view as the geometry says it must be. `probes`: [{at: [x, y] (world units of the
+ * view), look: a name in LOOKS, [r, g, b] or a test of one, dx, dy (CSS px, optional), why}]. Takes a screenshot
+ * (under `name`), maps every point through the app's own world->canvas mapping and fails naming
+ * each probe that shows something else. Returns the screenshot. Options: `keepMouse`, leave the
+ * mouse where it is (a drag held down; else it moves off the canvas first); `frame`, the lab is in
+ * this iframe of the page; `lab`, the CSS selector of its [data-lab] element on a page of several;
+ * `misses`, how many probes may show something else (where small marks, a Monte Carlo run's
+ * dots, lie scattered over the picture: say why at the call).
+ */
+export async function expectView(page, browser, name, probes, view = 'workspace',
+                                 { keepMouse = false, frame = null, lab = null, misses = 0 } = {}) {
+  // No hover highlight or ghost in the picture (unless the mouse is in the middle of a drag).
+  if (!keepMouse) await page.mouse.move(2, 2);
+  await waitFrames(frame || page, 3);
+  // The lab's own world->canvas mapping, to page coordinates (through its iframe, if any).
+  const inLab = await (frame || page).evaluate(([pts, v, sel]) => {
+    const api = sel ? document.querySelector(sel).cspacelab : window.cspacelab;
+    const box = api.module.canvas.getBoundingClientRect();
+    return api.view(pts, v).points.map(([x, y]) => ({ x: box.left + x, y: box.top + y }));
+  }, [probes.map((p) => p.at), view, lab]);
+  const offset = frame ? await (await frame.frameElement()).boundingBox() : { x: 0, y: 0 };
+  const points = inLab.map((p) => ({ x: p.x + offset.x, y: p.y + offset.y }));
+  const viewport = page.viewportSize();
+  const off = points.filter((p) => p.x < 0 || p.y < 0 || p.x >= viewport.width || p.y >= viewport.height);
+  assert.equal(off.length, 0, `${name}: ${off.length} probes off the screen (scroll the lab into view)`);
+  const shot = await screenshot(page, name);
+  const scale = await page.evaluate(() => window.devicePixelRatio);
+  const { at } = await inspectPng(browser, shot.png,
+    points.map((p, i) => [(p.x + (probes[i].dx || 0)) * scale, (p.y + (probes[i].dy || 0)) * scale]));
+  const wrong = [];
+  probes.forEach((p, i) => {
+    const test = Array.isArray(p.look) ? near(p.look) : typeof p.look === 'function' ? p.look : LOOKS[p.look];
+    if (!test) throw new Error(`no look "${p.look}"`);
+    const want = Array.isArray(p.look) ? `rgb(${p.look})` : typeof p.look === 'function' ? 'what it should' : p.look;
+    if (!test(at[i])) wrong.push(`${p.why || p.look} at (${p.at}) shows rgb(${at[i]}), not ${want}`);
+  });
+  if (wrong.length > misses) assert.deepEqual(wrong, [], `${name}: ${wrong.length} of ${probes.length} probes (${misses} may miss)`);
+  return shot;
+}
+
+/**
+ * Probes a scene's picture must pass, computed from its JSON: a point well inside every disk
+ * and polygon (obstacle), the start and goal markers (beside their letter), and `free` points of
+ * the workspace at least `margin` from every obstacle, marker and `avoid` segment (canvas).
+ * `markers: false` leaves the markers out (a lesson that draws the robot there instead); a robot
+ * other than a point has none in the workspace (its start and goal are configurations).
+ */
+export function sceneProbes(scene, { free = 12, margin = 0.04, markers = true, avoid = [] } = {}) {
+  const [x0, y0] = scene.workspace.min, [x1, y1] = scene.workspace.max;
+  const span = Math.max(x1 - x0, y1 - y0);
+  const probes = [];
+  const segDist = (p, a, b) => {
+    const dx = b[0] - a[0], dy = b[1] - a[1], len2 = dx * dx + dy * dy;
+    const t = len2 ? Math.max(0, Math.min(1, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2)) : 0;
+    return Math.hypot(p[0] - a[0] - t * dx, p[1] - a[1] - t * dy);
+  };
+  const inside = (p, poly) => {
+    let inn = false;
+    for (let i = 0, j = poly.length - 1; i < poly.length; j = i++)
+      if ((poly[i][1] > p[1]) !== (poly[j][1] > p[1]) &&
+          p[0] < (poly[j][0] - poly[i][0]) * (p[1] - poly[i][1]) / (poly[j][1] - poly[i][1]) + poly[i][0]) inn = !inn;
+    return inn;
+  };
+  const edges = (poly) => poly.map((a, i) => [a, poly[(i + 1) % poly.length]]);
+  // The distance from p to an obstacle's outline (0 inside a filled one).
+  const distance = (p, o) => {
+    if (o.type === 'disk') return Math.max(0, Math.hypot(p[0] - o.center[0], p[1] - o.center[1]) - o.radius);
+    if (o.type === 'segment' || o.type === 'wall') return segDist(p, o.a, o.b);
+    return inside(p, o.vertices) ? 0 : Math.min(...edges(o.vertices).map(([a, b]) => segDist(p, a, b)));
+  };
+  for (const o of scene.obstacles) {
+    if (o.type === 'disk') {
+      if (o.radius >= 0.02 * span) probes.push({ at: o.center, look: 'obstacle', why: 'inside a disk' });
+    } else if (o.type === 'polygon') {
+      // The point of a grid over its box deepest inside it (away from its outline's dark edge).
+      const xs = o.vertices.map((v) => v[0]), ys = o.vertices.map((v) => v[1]);
+      let best = null, depth = 0;
+      for (let i = 1; i < 20; ++i) for (let j = 1; j < 20; ++j) {
+        const p = [Math.min(...xs) + (Math.max(...xs) - Math.min(...xs)) * i / 20, Math.min(...ys) + (Math.max(...ys) - Math.min(...ys)) * j / 20];
+        if (!inside(p, o.vertices)) continue;
+        const d = Math.min(...edges(o.vertices).map(([a, b]) => segDist(p, a, b)));
+        if (d > depth) [best, depth] = [p, d];
+      }
+      if (best && depth >= 0.01 * span) probes.push({ at: best, look: 'obstacle', why: 'inside a polygon' });
+    }
+  }
+  const ends = [];
+  if (markers && (!scene.robot || scene.robot.type === 'point')) {  // (an arm's start is two angles)
+    // Left of centre, off the white letter: the marker is 9 px in radius.
+    probes.push({ at: scene.start, look: 'start', dx: -6, why: 'the start marker' });
+    probes.push({ at: scene.goal, look: 'goal', dx: -6, why: 'the goal marker' });
+    ends.push(scene.start, scene.goal);
+  }
+  const n = Math.ceil(Math.sqrt(free * 4));
+  const candidates = [];
+  for (let i = 0; i < n; ++i) for (let j = 0; j < n; ++j) {
+    const p = [x0 + (x1 - x0) * (i + 0.5) / n, y0 + (y1 - y0) * (j + 0.5) / n];
+    const clear = scene.obstacles.every((o) => distance(p, o) > margin * span) &&
+      ends.every((e) => Math.hypot(p[0] - e[0], p[1] - e[1]) > 2 * margin * span) &&
+      avoid.every(([a, b]) => segDist(p, a, b) > margin * span);
+    if (clear) candidates.push(p);
+  }
+  const every = Math.max(1, Math.floor(candidates.length / free));
+  candidates.filter((_, k) => k % every === 0).slice(0, free)
+    .forEach((p) => probes.push({ at: p, look: 'canvas', why: 'free space' }));
+  return probes;
+}
+
+export const GOLDEN = path.resolve(here, '../golden');
+
+/**
+ * Compares the part of the page under one of the app's controls (page_state's name for it, e.g.
+ * 'notation-picture') with a reference picture, tests/e2e/golden/<name>.png, for pictures whose
+ * every pixel matters and that no geometry describes as well (a robot drawn in parts). At most
+ * `share` of the pixels may differ, and by no more than `levels` in any channel: what a change of
+ * anti-aliasing may do, not a part moved or missing. CSPACELAB_UPDATE_GOLDEN=1 writes the reference
+ * instead (look at it before committing it). The picture taken is saved under ARTIFACTS as always.
+ */
+export async function expectGolden(page, browser, name, control, { share = 0.01, levels = 48 } = {}) {
+  await page.mouse.move(2, 2);
+  await waitFrames(page, 3);
+  const rect = await page.evaluate((c) => {
+    const r = window.cspacelab.pageState().buttons[c];
+    const box = window.cspacelab.module.canvas.getBoundingClientRect();
+    return r && { x: box.left + r[0], y: box.top + r[1], width: r[2] - r[0], height: r[3] - r[1] };
+  }, control);
+  assert.ok(rect && rect.width > 50 && rect.height > 50, `${control} is on screen`);
+  fs.mkdirSync(ARTIFACTS, { recursive: true });
+  const png = await page.screenshot({ path: path.join(ARTIFACTS, `${name}.png`), clip: rect });
+  const reference = path.join(GOLDEN, `${name}.png`);
+  if (process.env.CSPACELAB_UPDATE_GOLDEN) {
+    fs.mkdirSync(GOLDEN, { recursive: true });
+    fs.writeFileSync(reference, png);
+    return;
+  }
+  assert.ok(fs.existsSync(reference), `no reference ${reference} (CSPACELAB_UPDATE_GOLDEN=1 writes one)`);
+  const compare = await browser.newPage();
+  try {
+    const result = await compare.evaluate(async ({ a, b, levels }) => {
+      const pixels = async (b64) => {
+        const img = new Image();
+        img.src = 'data:image/png;base64,' + b64;
+        await img.decode();
+        const c = new OffscreenCanvas(img.width, img.height).getContext('2d');
+        c.drawImage(img, 0, 0);
+        return { w: img.width, h: img.height, data: c.getImageData(0, 0, img.width, img.height).data };
+      };
+      const [x, y] = [await pixels(a), await pixels(b)];
+      if (x.w !== y.w || x.h !== y.h) return { size: `${x.w} x ${x.h} against ${y.w} x ${y.h}` };
+      let differ = 0, worst = 0;
+      for (let i = 0; i < x.data.length; i += 4) {
+        const d = Math.max(Math.abs(x.data[i] - y.data[i]), Math.abs(x.data[i + 1] - y.data[i + 1]), Math.abs(x.data[i + 2] - y.data[i + 2]));
+        worst = Math.max(worst, d);
+        if (d > levels) ++differ;
+      }
+      return { differ: differ / (x.w * x.h), worst };
+    }, { a: png.toString('base64'), b: fs.readFileSync(reference).toString('base64'), levels });
+    assert.ok(!result.size, `${name}: ${result.size}`);
+    assert.ok(result.differ <= share, `${name}: ${(100 * result.differ).toFixed(2)} % of the pixels differ by more than ${levels} ` +
+              `(at most ${100 * share} %); see ${path.join(ARTIFACTS, name + '.png')} against ${reference}`);
+  } finally {
+    await compare.close();
+  }
+}
