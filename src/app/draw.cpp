@@ -13,13 +13,14 @@ namespace csl::app {
 void draw_robot(const WorkspaceView& view, const Robot& robot, const Config& q, ImU32 color, float thickness) {
   ImDrawList* dl = view.draw_list();
   if (const auto* arm = std::get_if<ArmRobot>(&robot)) {
-    const ArmPose pose = arm_pose(*arm, q);
-    const ImVec2 b = view.to_screen(pose.base), e = view.to_screen(pose.elbow), t = view.to_screen(pose.tip);
-    dl->AddLine(b, e, color, thickness);
-    dl->AddLine(e, t, color, thickness);
-    dl->AddCircleFilled(b, thickness + 2.0f, theme::kBlack, 16);
-    dl->AddCircleFilled(e, thickness + 1.0f, color, 16);
-    dl->AddCircle(t, thickness, color, 12, 1.5f);
+    // Its links, the base black, each joint between links a dot, the tip a ring.
+    Vec2 joints[ArmRobot::kMaxLinks + 1];
+    arm_joints(*arm, q, joints);
+    const int n = arm->links();
+    for (int i = 0; i < n; ++i) dl->AddLine(view.to_screen(joints[i]), view.to_screen(joints[i + 1]), color, thickness);
+    dl->AddCircleFilled(view.to_screen(joints[0]), thickness + 2.0f, theme::kBlack, 16);
+    for (int i = 1; i < n; ++i) dl->AddCircleFilled(view.to_screen(joints[i]), thickness + 1.0f, color, 16);
+    dl->AddCircle(view.to_screen(joints[n]), thickness, color, 12, 1.5f);
   } else if (const auto* poly = std::get_if<PolygonRobot>(&robot)) {
     Polygon world;
     polygon_pose(*poly, q, world);

@@ -230,7 +230,11 @@ class PotentialLesson : public Lesson {
 
   Scene* scene() override { return &scene_; }
   bool accept_scene(const Scene& s, std::string& why) override {
-    (void)why;  // every robot type has control points
+    // Every robot type has control points; the arm's C-space view is the torus square (2 links).
+    if (std::holds_alternative<ArmRobot>(s.robot) && !is_two_link_arm(s.robot)) {
+      why = "this lesson shows the 2-link arm on its torus; the scene's arm has " + std::to_string(robot_dof(s.robot)) + " links";
+      return false;
+    }
     editor_.replace(scene_, s);
     load(s);
     return true;

@@ -155,8 +155,9 @@ class TorusLesson : public PlannerLesson {
 
   Scene* scene() override { return &scene_; }
   bool accept_scene(const Scene& s, std::string& why) override {
-    if (!std::holds_alternative<ArmRobot>(s.robot)) {
-      why = "this lesson is about the 2-link arm (robot type 'arm2')";
+    if (!is_two_link_arm(s.robot)) {
+      why = std::string("this lesson is about the 2-link arm (robot type 'arm2'); the scene has a '") +
+            robot_type_name(s.robot) + "' robot with " + std::to_string(robot_dof(s.robot)) + " coordinates";
       return false;
     }
     // The parameters were priced in the old scene: a denser one may cost past the lab's budget.

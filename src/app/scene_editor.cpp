@@ -6,6 +6,7 @@
 
 #include "app/theme.hpp"
 #include "app/ui.hpp"
+#include "core/overloaded.hpp"
 #include <nlohmann/json.hpp>
 
 namespace csl::app {
@@ -18,22 +19,22 @@ bool key_pressed(ImGuiKey key) { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(k
 
 // Whether world point p hits obstacle o (inside it, or within `tolerance` of a wall).
 bool hits(const Obstacle& o, const Vec2& p, double tolerance) {
-  if (const auto* d = std::get_if<Disk>(&o)) return length(p - d->center) <= d->radius + tolerance;
-  if (const auto* g = std::get_if<PolygonObstacle>(&o)) return point_polygon_distance(p, g->vertices) <= tolerance;
-  const Wall& w = std::get<Wall>(o);
-  return point_segment_distance(p, w.a, w.b) <= tolerance;
+  return std::visit(Overloaded{[&](const Disk& d) { return length(p - d.center) <= d.radius + tolerance; },
+                               [&](const PolygonObstacle& g) { return point_polygon_distance(p, g.vertices) <= tolerance; },
+                               [&](const Wall& w) { return point_segment_distance(p, w.a, w.b) <= tolerance; }},
+                    o);
 }
 
 void translate(Obstacle& o, const Vec2& by) {
-  if (auto* d = std::get_if<Disk>(&o)) {
-    d->center += by;
-  } else if (auto* g = std::get_if<PolygonObstacle>(&o)) {
-    for (Vec2& v : g->vertices) v += by;
-  } else {
-    Wall& w = std::get<Wall>(o);
-    w.a += by;
-    w.b += by;
-  }
+  std::visit(Overloaded{[&](Disk& d) { d.center += by; },
+                        [&](PolygonObstacle& g) {
+                          for (Vec2& v : g.vertices) v += by;
+                        },
+                        [&](Wall& w) {
+                          w.a += by;
+                          w.b += by;
+                        }},
+             o);
 }
 
 Vec2 endpoint(const Config& q) { return Vec2(q[0], q[1]); }
@@ -208,10 +209,9 @@ bool SceneEditor::begin_drag(WorkspaceView& view, Scene& scene, const Options& o
       for (std::size_t i = 0; i < g->vertices.size(); ++i)
         if (length(g->vertices[i] - m) <= grab)
           return target_ = selected_, handle_ = static_cast<int>(i), drag_ = Drag::Vertex, true;
-    } else {
-      const Wall& w = std::get<Wall>(o);
-      if (length(w.a - m) <= grab) return target_ = selected_, handle_ = 0, drag_ = Drag::WallEnd, true;
-      if (length(w.b - m) <= grab) return target_ = selected_, handle_ = 1, drag_ = Drag::WallEnd, true;
+    } else if (const auto* w = std::get_if<Wall>(&o)) {
+      if (length(w->a - m) <= grab) return target_ = selected_, handle_ = 0, drag_ = Drag::WallEnd, true;
+      if (length(w->b - m) <= grab) return target_ = selected_, handle_ = 1, drag_ = Drag::WallEnd, true;
     }
   }
   for (int i = static_cast<int>(scene.obstacles.size()) - 1; i >= 0; --i)
@@ -373,17 +373,20 @@ void SceneEditor::draw_overlays(WorkspaceView& view, const Scene& scene) const {
       dl->AddRectFilled(ImVec2(s.x - 4, s.y - 4), ImVec2(s.x + 4, s.y + 4), theme::rgba(255, 255, 255));
       dl->AddRect(ImVec2(s.x - 4, s.y - 4), ImVec2(s.x + 4, s.y + 4), theme::kSelectedEdge, 0.0f, 0, 1.5f);
     };
-    if (const auto* d = std::get_if<Disk>(&o)) {
-      handle(d->center + Vec2(d->radius, 0));
-      char text[48];
-      std::snprintf(text, sizeof text, "r = %.3f", d->radius);
-      view.draw_label(d->center + Vec2(d->radius, 0), text, theme::kSelectedEdge, ImVec2(8, -8));
-    } else if (const auto* g = std::get_if<PolygonObstacle>(&o)) {
-      for (const Vec2& v : g->vertices) handle(v);
-    } else {
-      handle(std::get<Wall>(o).a);
-      handle(std::get<Wall>(o).b);
-    }
+    std::visit(Overloaded{[&](const Disk& d) {
+                            handle(d.center + Vec2(d.radius, 0));
+                            char text[48];
+                            std::snprintf(text, sizeof text, "r = %.3f", d.radius);
+                            view.draw_label(d.center + Vec2(d.radius, 0), text, theme::kSelectedEdge, ImVec2(8, -8));
+                          },
+                          [&](const PolygonObstacle& g) {
+                            for (const Vec2& v : g.vertices) handle(v);
+                          },
+                          [&](const Wall& w) {
+                            handle(w.a);
+                            handle(w.b);
+                          }},
+               o);
   }
   if (drag_ == Drag::NewDisk) {
     const double r = length(m - grab_);

@@ -9,6 +9,7 @@
 #include "app/theme.hpp"
 #include "app/web_bridge.hpp"
 #include "core/angles.hpp"
+#include "core/overloaded.hpp"
 
 namespace csl::app {
 
@@ -247,14 +248,10 @@ void WorkspaceView::draw_polygon(const Polygon& poly, ImU32 fill, ImU32 edge, fl
 void WorkspaceView::draw_obstacle(const Obstacle& o, bool highlighted) const {
   const ImU32 fill = highlighted ? theme::kSelectedFill : theme::kObstacleFill;
   const ImU32 edge = highlighted ? theme::kSelectedEdge : theme::kObstacleEdge;
-  if (const auto* d = std::get_if<Disk>(&o)) {
-    draw_disk(d->center, d->radius, fill, edge, highlighted ? 2.5f : 1.5f);
-  } else if (const auto* g = std::get_if<PolygonObstacle>(&o)) {
-    draw_polygon(g->vertices, fill, edge, highlighted ? 2.5f : 1.5f);
-  } else {
-    const Wall& w = std::get<Wall>(o);
-    draw_segment(w.a, w.b, edge, highlighted ? 4.0f : 3.0f);
-  }
+  std::visit(Overloaded{[&](const Disk& d) { draw_disk(d.center, d.radius, fill, edge, highlighted ? 2.5f : 1.5f); },
+                        [&](const PolygonObstacle& g) { draw_polygon(g.vertices, fill, edge, highlighted ? 2.5f : 1.5f); },
+                        [&](const Wall& w) { draw_segment(w.a, w.b, edge, highlighted ? 4.0f : 3.0f); }},
+             o);
 }
 
 void WorkspaceView::draw_circle(const Vec2& center, double radius, ImU32 edge, float thickness) const {

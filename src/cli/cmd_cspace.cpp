@@ -22,9 +22,10 @@ int run_cspace(Args& args, std::ostream& os) {
 
   const Scene scene = load_scene(path);
   const auto* arm = std::get_if<ArmRobot>(&scene.robot);
-  if (!arm)
+  if (!arm || arm->links() != 2)
     throw UsageError(path + ": the C-space map needs an arm2 robot, the scene's robot is '" +
-                     robot_type_name(scene.robot) + "'");
+                     robot_type_name(scene.robot) + "'" +
+                     (arm ? " with " + std::to_string(arm->links()) + " links (the map is of T^2)" : ""));
 
   // The computation alone is timed: building the map and rasterising it, not the file.
   std::vector<std::uint8_t> pixels;

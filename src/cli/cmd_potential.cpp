@@ -107,7 +107,8 @@ const Command kPotentialCommand{
     "                           [--eta E] [--rho0 R]\n\n"
     "Evaluates the potential field toward --goal (default: the scene's goal) at --at Q,\n"
     "control point by control point (homework P13). Q is comma-separated numbers: x,y\n"
-    "(point), theta1,theta2 (arm2, radians, theta2 relative to link 1), x,y,theta (polygon).\n\n"
+    "(point), theta1,theta2 (arm2, radians, theta2 relative to link 1; an N-link arm: N angles),\n"
+    "x,y,theta (polygon).\n\n"
     CSPACELAB_POTENTIAL_OPTIONS_HELP
     "\nWhere rho has no gradient: on or inside an obstacle rho = 0 and grad rho points the\n"
     "quickest way out (on the boundary: the outward normal; a wall: its left normal; a disk's\n"

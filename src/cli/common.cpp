@@ -50,7 +50,7 @@ Config parse_config(const std::string& text, const Scene& scene, const std::stri
   if (q[0] < scene.workspace_min.x() || q[0] > scene.workspace_max.x() || q[1] < scene.workspace_min.y() ||
       q[1] > scene.workspace_max.y())
     throw UsageError(what + ": (" + text + ") lies outside the workspace");
-  if (dof == 3) q[2] = wrap_angle(q[2]);
+  if (robot_kind(scene.robot) == RobotKind::RigidPolygon) q[2] = wrap_angle(q[2]);
   return q;
 }
 

@@ -53,7 +53,7 @@ class CollisionWorld {
   /// robot that is lambda itself, bit for bit (the square root of the same sum of the same
   /// squares), so it is not computed again; the other robots compute theirs.
   double motion_bound(const Config& p, const Config& q, double distance) const {
-    return robot_.index() == 0 ? distance : csl::motion_bound(robot_, p, q);
+    return kind_ == RobotKind::Point ? distance : csl::motion_bound(robot_, p, q);
   }
 
  private:
@@ -72,23 +72,26 @@ class CollisionWorld {
   // The robot's shape at q, in scratch storage (the world is not for concurrent use).
   void pose(const Config& q) const;
   // Point robot and arm: squared distance from c to the robot (its point or its links).
+  // Called for the robot kinds without an area (point, arm): the polygon's is polygon_.
   double skeleton_squared_distance(const Vec2& c) const;
   double disk_clearance(const DiskData& d) const;
   double clearance_to(const Obstacle& o) const;
 
   Robot robot_;
+  RobotKind kind_;  // robot_kind(robot_), switched on in the hot loops (no default: each kind)
+  int links_ = 0;   // the arm's
   std::vector<Obstacle> obstacles_;
   std::vector<DiskData> disks_;
   // The disks' centres and radii again, each in an array of its own: clearance() of the point
   // robot measures all of them in a loop the compiler vectorises (two square roots at once).
   std::vector<double> disk_x_, disk_y_, disk_r_;
   std::vector<ShapeData> shapes_;
-  bool is_polygon_ = false;
+
   Space space_;
   double scale_ = 0.0;
   double evaluation_cost_ = 1.0;
   mutable Vec2 point_;           // point robot
-  mutable Vec2 joints_[3];       // arm: base, elbow, tip
+  mutable Vec2 joints_[ArmRobot::kMaxLinks + 1];  // arm: base, the end of each link
   mutable Polygon polygon_;      // polygon robot
   mutable Box robot_box_;
 };

@@ -50,9 +50,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "core/angles.hpp"
 #include "core/detmath.hpp"
+#include "core/overloaded.hpp"
 
 namespace csl {
 namespace {
@@ -136,6 +138,7 @@ double cspace_pixel_angle(int index, int resolution) {
 }
 
 ArmCSpaceMap::ArmCSpaceMap(const ArmRobot& arm, const std::vector<Obstacle>& obstacles) : arm_(arm) {
+  if (arm.links() != 2) throw std::invalid_argument("the exact C-space map is of the 2-link arm (T^2)");
   auto add_chain = [&](int first, Chain::Containment containment, int shape) {
     const int count = static_cast<int>(vertices_.size()) - first;
     Box box{vertices_[static_cast<std::size_t>(first)], vertices_[static_cast<std::size_t>(first)]};
@@ -148,30 +151,29 @@ ArmCSpaceMap::ArmCSpaceMap(const ArmRobot& arm, const std::vector<Obstacle>& obs
     for (int k = first; k < first + count; ++k) r2 = std::max(r2, squared_length(vertices_[static_cast<std::size_t>(k)] - center));
     chains_.push_back({first, count, containment, shape, center, std::sqrt(r2) * kSafe});
   };
-  for (const Obstacle& o : obstacles) {
-    if (const auto* d = std::get_if<Disk>(&o)) {
-      disks_.push_back({d->center.x(), d->center.y(), d->radius});
-    } else if (const auto* g = std::get_if<PolygonObstacle>(&o)) {
-      const int first = static_cast<int>(vertices_.size());
-      vertices_.insert(vertices_.end(), g->vertices.begin(), g->vertices.end());
-      polygons_.push_back(g->vertices);
-      add_chain(first, Chain::Containment::InPolygon, static_cast<int>(polygons_.size()) - 1);
-    } else {
-      const Wall& w = std::get<Wall>(o);
-      walls_.push_back(w);
-      disks_.push_back({w.a.x(), w.a.y(), kWallTolerance});
-      const double gx = w.b.x() - w.a.x(), gy = w.b.y() - w.a.y();
-      const double len = std::sqrt(gx * gx + gy * gy);
-      if (!(len > 0.0)) continue;  // a point: the capsule is the one disk
-      disks_.push_back({w.b.x(), w.b.y(), kWallTolerance});
-      const Vec2 n(-gy / len * kWallTolerance, gx / len * kWallTolerance);
-      const int first = static_cast<int>(vertices_.size());
-      vertices_.insert(vertices_.end(), {w.a + n, w.b + n, w.b - n, w.a - n});
-      add_chain(first, Chain::Containment::InCapsule, static_cast<int>(walls_.size()) - 1);
-    }
-  }
+  for (const Obstacle& o : obstacles)
+    std::visit(Overloaded{[&](const Disk& d) { disks_.push_back({d.center.x(), d.center.y(), d.radius}); },
+                          [&](const PolygonObstacle& g) {
+                            const int first = static_cast<int>(vertices_.size());
+                            vertices_.insert(vertices_.end(), g.vertices.begin(), g.vertices.end());
+                            polygons_.push_back(g.vertices);
+                            add_chain(first, Chain::Containment::InPolygon, static_cast<int>(polygons_.size()) - 1);
+                          },
+                          [&](const Wall& w) {
+                            walls_.push_back(w);
+                            disks_.push_back({w.a.x(), w.a.y(), kWallTolerance});
+                            const double gx = w.b.x() - w.a.x(), gy = w.b.y() - w.a.y();
+                            const double len = std::sqrt(gx * gx + gy * gy);
+                            if (!(len > 0.0)) return;  // a point: the capsule is the one disk
+                            disks_.push_back({w.b.x(), w.b.y(), kWallTolerance});
+                            const Vec2 n(-gy / len * kWallTolerance, gx / len * kWallTolerance);
+                            const int first = static_cast<int>(vertices_.size());
+                            vertices_.insert(vertices_.end(), {w.a + n, w.b + n, w.b - n, w.a - n});
+                            add_chain(first, Chain::Containment::InCapsule, static_cast<int>(walls_.size()) - 1);
+                          }},
+               o);
   Scratch scratch(vertices_.size());
-  if (pivot_arcs(arm_.base, arm_.length1, 0.0, scratch, link1_))
+  if (pivot_arcs(arm_.base, arm_.length(0), 0.0, scratch, link1_))
     link1_.assign(1, {-kPi, kPi});
   else
     sort_and_merge(link1_);
@@ -265,8 +267,8 @@ void ArmCSpaceMap::link2_intervals(double theta1, Scratch& scratch, std::vector<
   double s1, c1;
   det::sincos(theta1, s1, c1);
   // The elbow exactly as arm_pose computes it.
-  const Vec2 elbow(arm_.base.x() + arm_.length1 * c1, arm_.base.y() + arm_.length1 * s1);
-  if (pivot_arcs(elbow, arm_.length2, theta1, scratch, out)) {
+  const Vec2 elbow(arm_.base.x() + arm_.length(0) * c1, arm_.base.y() + arm_.length(0) * s1);
+  if (pivot_arcs(elbow, arm_.length(1), theta1, scratch, out)) {
     out.assign(1, {-kPi, kPi});
     return;
   }

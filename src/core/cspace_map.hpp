@@ -29,7 +29,8 @@ double cspace_pixel_angle(int index, int resolution);
 
 class ArmCSpaceMap {
  public:
-  /// Precomputes the obstacles' pieces and link 1's blocked arcs (O(obstacle size)).
+  /// Precomputes the obstacles' pieces and link 1's blocked arcs (O(obstacle size)). The arm
+  /// must have 2 links (std::invalid_argument otherwise): its map is the torus square.
   ArmCSpaceMap(const ArmRobot& arm, const std::vector<Obstacle>& obstacles);
 
   const ArmRobot& arm() const { return arm_; }

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "core/overloaded.hpp"
+
 namespace csl {
 namespace {
 
@@ -73,10 +75,10 @@ ObstacleDistance segment_distance(const Vec2& a, const Vec2& b, const Vec2& x) {
 }
 
 ObstacleDistance obstacle_distance(const Obstacle& o, const Vec2& x) {
-  if (const auto* d = std::get_if<Disk>(&o)) return disk_distance(*d, x);
-  if (const auto* g = std::get_if<PolygonObstacle>(&o)) return polygon_distance(g->vertices, x);
-  const Wall& w = std::get<Wall>(o);
-  return segment_distance(w.a, w.b, x);
+  return std::visit(Overloaded{[&](const Disk& d) { return disk_distance(d, x); },
+                               [&](const PolygonObstacle& g) { return polygon_distance(g.vertices, x); },
+                               [&](const Wall& w) { return segment_distance(w.a, w.b, x); }},
+                    o);
 }
 
 }  // namespace csl

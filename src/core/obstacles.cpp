@@ -1,15 +1,8 @@
 #include "core/obstacles.hpp"
 
-namespace csl {
+#include "core/overloaded.hpp"
 
-namespace {
-template <class... F>
-struct Overloaded : F... {
-  using F::operator()...;
-};
-template <class... F>
-Overloaded(F...) -> Overloaded<F...>;
-}  // namespace
+namespace csl {
 
 const char* obstacle_type_name(const Obstacle& o) {
   return std::visit(Overloaded{[](const Disk&) { return "disk"; },

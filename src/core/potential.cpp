@@ -54,18 +54,34 @@ FieldValue repulsive_field(const ObstacleDistance& r, double eta, double rho0) {
 
 void control_points(const Robot& robot, const Config& q, std::vector<ControlPoint>& out) {
   if (const auto* arm = std::get_if<ArmRobot>(&robot)) {
-    double s1, c1, s12, c12;
-    det::sincos(q[0], s1, c1);
-    det::sincos(q[0] + q[1], s12, c12);  // link 2's absolute angle (as arm_pose)
-    const ArmPose pose = arm_pose(*arm, q);
-    out.resize(2);
-    out[0].position = pose.elbow;
-    out[0].jacobian.resize(2, 2);
-    out[0].jacobian << -arm->length1 * s1, 0.0, arm->length1 * c1, 0.0;
-    out[1].position = pose.tip;
-    out[1].jacobian.resize(2, 2);
-    out[1].jacobian << -arm->length1 * s1 - arm->length2 * s12, -arm->length2 * s12,
-        arm->length1 * c1 + arm->length2 * c12, arm->length2 * c12;
+    // The end of each link is a control point. Column j of its Jacobian: the sum over the links
+    // i = j .. k up to it of l_i (-sin A_i, cos A_i), A_i the link's absolute angle (as
+    // arm_joints turns it); summed from link j outwards, from 0 (two links: the 2-link arm's
+    // expressions, -l1 s1 - l2 s12 and so on, to the bit).
+    const int n = arm->links();
+    Vec2 joints[ArmRobot::kMaxLinks + 1];
+    arm_joints(*arm, q, joints);
+    double sine[ArmRobot::kMaxLinks], cosine[ArmRobot::kMaxLinks];
+    double angle = 0.0;
+    for (int i = 0; i < n; ++i) {
+      angle += q[i];
+      det::sincos(angle, sine[i], cosine[i]);
+    }
+    out.resize(static_cast<std::size_t>(n));
+    for (int k = 0; k < n; ++k) {
+      ControlPoint& p = out[static_cast<std::size_t>(k)];
+      p.position = joints[k + 1];
+      p.jacobian.setZero(2, n);
+      for (int j = 0; j <= k; ++j) {
+        double x = 0.0, y = 0.0;
+        for (int i = j; i <= k; ++i) {
+          x += -arm->length(i) * sine[i];
+          y += arm->length(i) * cosine[i];
+        }
+        p.jacobian(0, j) = x;
+        p.jacobian(1, j) = y;
+      }
+    }
     return;
   }
   if (const auto* poly = std::get_if<PolygonRobot>(&robot)) {
@@ -94,7 +110,10 @@ std::vector<ControlPoint> control_points(const Robot& robot, const Config& q) {
 }
 
 std::string control_point_name(const Robot& robot, int i) {
-  if (std::holds_alternative<ArmRobot>(robot)) return i == 0 ? "elbow" : "tip";
+  if (const auto* arm = std::get_if<ArmRobot>(&robot)) {
+    if (i + 1 == arm->links()) return "tip";
+    return arm->links() == 2 ? "elbow" : "joint " + std::to_string(i + 2);
+  }
   if (std::holds_alternative<PolygonRobot>(robot)) return "vertex " + std::to_string(i);
   return "point";
 }

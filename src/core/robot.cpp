@@ -5,6 +5,7 @@
 
 #include "core/angles.hpp"
 #include "core/detmath.hpp"
+#include "core/overloaded.hpp"
 
 namespace csl {
 
@@ -14,28 +15,64 @@ PolygonRobot make_polygon_robot(Polygon body) {
   return PolygonRobot{std::move(body), std::sqrt(r2)};
 }
 
-const char* robot_type_name(const Robot& r) {
-  static const char* const kNames[] = {"point", "arm2", "polygon"};
-  return kNames[r.index()];
+RobotKind robot_kind(const Robot& r) {
+  return std::visit(Overloaded{[](const PointRobot&) { return RobotKind::Point; },
+                               [](const ArmRobot&) { return RobotKind::Arm; },
+                               [](const PolygonRobot&) { return RobotKind::RigidPolygon; }},
+                    r);
 }
 
-int robot_dof(const Robot& r) { return std::holds_alternative<PolygonRobot>(r) ? 3 : 2; }
+bool is_two_link_arm(const Robot& r) {
+  const auto* arm = std::get_if<ArmRobot>(&r);
+  return arm && arm->links() == 2;
+}
+
+const char* robot_type_name(const Robot& r) {
+  switch (robot_kind(r)) {
+    case RobotKind::Point: return "point";
+    case RobotKind::Arm: return std::get<ArmRobot>(r).links() == 2 ? "arm2" : "arm";
+    case RobotKind::RigidPolygon: return "polygon";
+  }
+  return "";
+}
+
+int robot_dof(const Robot& r) {
+  switch (robot_kind(r)) {
+    case RobotKind::Point: return 2;
+    case RobotKind::Arm: return std::get<ArmRobot>(r).links();
+    case RobotKind::RigidPolygon: return 3;
+  }
+  return 0;
+}
 
 Space robot_space(const Robot& r, const Vec2& lo, const Vec2& hi) {
-  if (std::holds_alternative<ArmRobot>(r)) return Space::torus(2);
-  if (const auto* poly = std::get_if<PolygonRobot>(&r)) {
-    const double w = poly->radius;
-    return Space::se2(lo.x(), lo.y(), hi.x(), hi.y(), w > 0.0 ? w : 1.0);
+  switch (robot_kind(r)) {
+    case RobotKind::Point: return Space::box({lo.x(), lo.y()}, {hi.x(), hi.y()});
+    case RobotKind::Arm: return Space::torus(std::get<ArmRobot>(r).links());
+    case RobotKind::RigidPolygon: {
+      const double w = std::get<PolygonRobot>(r).radius;
+      return Space::se2(lo.x(), lo.y(), hi.x(), hi.y(), w > 0.0 ? w : 1.0);
+    }
   }
   return Space::box({lo.x(), lo.y()}, {hi.x(), hi.y()});
 }
 
+void arm_joints(const ArmRobot& arm, const Config& q, Vec2* out) {
+  out[0] = arm.base;
+  double angle = 0.0;  // 0 + theta1 is theta1 exactly: the 2-link arm's bits as they always were
+  for (int i = 0; i < arm.links(); ++i) {
+    angle += q[i];
+    double s, c;
+    det::sincos(angle, s, c);
+    const double l = arm.length(i);
+    out[i + 1] = Vec2(out[i].x() + l * c, out[i].y() + l * s);
+  }
+}
+
 ArmPose arm_pose(const ArmRobot& arm, const Config& q) {
-  double s1, c1, s12, c12;
-  det::sincos(q[0], s1, c1);
-  det::sincos(q[0] + q[1], s12, c12);  // link 2's absolute angle
-  const Vec2 elbow(arm.base.x() + arm.length1 * c1, arm.base.y() + arm.length1 * s1);
-  return {arm.base, elbow, Vec2(elbow.x() + arm.length2 * c12, elbow.y() + arm.length2 * s12)};
+  Vec2 joints[ArmRobot::kMaxLinks + 1];
+  arm_joints(arm, q, joints);
+  return {joints[0], joints[1], joints[arm.links()]};
 }
 
 void polygon_pose(const PolygonRobot& robot, const Config& q, Polygon& out) {
@@ -49,24 +86,47 @@ void polygon_pose(const PolygonRobot& robot, const Config& q, Polygon& out) {
 }
 
 double motion_bound(const Robot& r, const Config& p, const Config& q) {
-  if (const auto* arm = std::get_if<ArmRobot>(&r)) {
-    const double d1 = angle_difference(p[0], q[0]);
-    const double d2 = angle_difference(p[1], q[1]);
-    return arm->length1 * std::fabs(d1) + arm->length2 * std::fabs(d1 + d2);
+  switch (robot_kind(r)) {
+    case RobotKind::Arm: {
+      // sum_i l_i |d_1 + ... + d_i|, the running sum and the total from 0 (0 + x is x exactly:
+      // two links give l1|d1| + l2|d1 + d2| to the bit, as before).
+      const ArmRobot& arm = std::get<ArmRobot>(r);
+      double rate = 0.0, total = 0.0;
+      for (int i = 0; i < arm.links(); ++i) {
+        rate += angle_difference(p[i], q[i]);
+        total += arm.length(i) * std::fabs(rate);
+      }
+      return total;
+    }
+    case RobotKind::Point:
+    case RobotKind::RigidPolygon: {
+      const double dx = q[0] - p[0], dy = q[1] - p[1];
+      const double translation = std::sqrt(dx * dx + dy * dy);
+      if (const auto* poly = std::get_if<PolygonRobot>(&r))
+        return translation + poly->radius * std::fabs(angle_difference(p[2], q[2]));
+      return translation;
+    }
   }
-  const double dx = q[0] - p[0], dy = q[1] - p[1];
-  const double translation = std::sqrt(dx * dx + dy * dy);
-  if (const auto* poly = std::get_if<PolygonRobot>(&r))
-    return translation + poly->radius * std::fabs(angle_difference(p[2], q[2]));
-  return translation;
+  return 0.0;
 }
 
 double motion_lipschitz(const Robot& r) {
-  if (const auto* arm = std::get_if<ArmRobot>(&r)) {
-    const double a = arm->length1 + arm->length2, b = arm->length2;
-    return std::sqrt(a * a + b * b);
+  switch (robot_kind(r)) {
+    case RobotKind::Point: return 1.0;
+    case RobotKind::RigidPolygon: return std::sqrt(2.0);
+    case RobotKind::Arm: {
+      // |a|, a_j = l_j + ... + l_N, summed from the tip (two links: a = (l1 + l2, l2)) and
+      // squared from the base, as sqrt((l1 + l2)^2 + l2^2) always was.
+      const ArmRobot& arm = std::get<ArmRobot>(r);
+      double a[ArmRobot::kMaxLinks] = {};
+      double tail = 0.0;
+      for (int j = arm.links() - 1; j >= 0; --j) a[j] = tail = arm.length(j) + tail;
+      double sum = 0.0;
+      for (int j = 0; j < arm.links(); ++j) sum += a[j] * a[j];
+      return std::sqrt(sum);
+    }
   }
-  return std::holds_alternative<PolygonRobot>(r) ? std::sqrt(2.0) : 1.0;
+  return 1.0;
 }
 
 }  // namespace csl

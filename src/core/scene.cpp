@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/angles.hpp"
+#include "core/overloaded.hpp"
 #include "core/text.hpp"
 
 namespace csl {
@@ -107,21 +108,30 @@ Robot robot(const json& r) {
     expect_object(r, "robot", {"type"});
     return PointRobot{};
   }
-  if (type == "arm2") {
+  if (type == "arm2" || type == "arm") {
+    // "arm2": the 2-link arm of the lessons, two lengths; "arm": 1 to ArmRobot::kMaxLinks links.
     expect_object(r, "robot", {"type", "base", "lengths"});
     ArmRobot arm;
     arm.base = point(field(r, "base", "robot"), "robot.base");
-    const Vec2 l = point(field(r, "lengths", "robot"), "robot.lengths");
-    if (!(l.x() > 0.0 && l.y() > 0.0)) fail("robot.lengths", "link lengths must be > 0");
-    arm.length1 = l.x();
-    arm.length2 = l.y();
+    const json& l = field(r, "lengths", "robot");
+    const std::size_t most = type == "arm2" ? 2 : static_cast<std::size_t>(ArmRobot::kMaxLinks);
+    const std::size_t least = type == "arm2" ? 2 : 1;
+    if (!l.is_array() || l.size() < least || l.size() > most)
+      fail("robot.lengths", type == "arm2" ? std::string("must be an array of 2 numbers")
+                                           : "must be an array of 1 to " + std::to_string(most) + " numbers");
+    arm.lengths.clear();
+    for (std::size_t i = 0; i < l.size(); ++i) {
+      arm.lengths.push_back(number(l[i], "robot.lengths[" + std::to_string(i) + "]"));
+      if (!(arm.lengths.back() > 0.0)) fail("robot.lengths", "link lengths must be > 0");
+    }
+    // A 2-link "arm" is the "arm2" it writes back as (scene_to_json names it by its links).
     return arm;
   }
   if (type == "polygon") {
     expect_object(r, "robot", {"type", "vertices"});
     return make_polygon_robot(polygon(field(r, "vertices", "robot"), "robot.vertices", kMaxRobotVertices));
   }
-  fail("robot.type", "unknown robot type " + value_text(type) + " (point, arm2 or polygon)");
+  fail("robot.type", "unknown robot type " + value_text(type) + " (point, arm2, arm or polygon)");
 }
 
 Config configuration(const json& j, const char* name, const Robot& r, const Vec2& lo, const Vec2& hi) {
@@ -132,13 +142,16 @@ Config configuration(const json& j, const char* name, const Robot& r, const Vec2
                    robot_type_name(r) + "'");
   Config q(dof);
   for (int i = 0; i < dof; ++i) q[i] = number(j[static_cast<std::size_t>(i)], path + "[" + std::to_string(i) + "]");
-  if (std::holds_alternative<ArmRobot>(r)) {
-    q[0] = wrap_angle(q[0]);
-    q[1] = wrap_angle(q[1]);
-  } else {
-    if (q[0] < lo.x() || q[0] > hi.x() || q[1] < lo.y() || q[1] > hi.y())
-      fail(path, "must lie inside the workspace");
-    if (dof == 3) q[2] = wrap_angle(q[2]);
+  switch (robot_kind(r)) {
+    case RobotKind::Arm:
+      for (int i = 0; i < dof; ++i) q[i] = wrap_angle(q[i]);
+      break;
+    case RobotKind::Point:
+    case RobotKind::RigidPolygon:
+      if (q[0] < lo.x() || q[0] > hi.x() || q[1] < lo.y() || q[1] > hi.y())
+        fail(path, "must lie inside the workspace");
+      if (robot_kind(r) == RobotKind::RigidPolygon) q[2] = wrap_angle(q[2]);
+      break;
   }
   return q;
 }
@@ -161,12 +174,11 @@ json config_to_json(const Config& q) {
 }
 
 json obstacle_to_json(const Obstacle& o) {
-  if (const auto* d = std::get_if<Disk>(&o))
-    return {{"type", "disk"}, {"center", point_json(d->center)}, {"radius", d->radius}};
-  if (const auto* p = std::get_if<PolygonObstacle>(&o))
-    return {{"type", "polygon"}, {"vertices", polygon_json(p->vertices)}};
-  const Wall& w = std::get<Wall>(o);
-  return {{"type", "segment"}, {"a", point_json(w.a)}, {"b", point_json(w.b)}};
+  return std::visit(
+      Overloaded{[](const Disk& d) -> json { return {{"type", "disk"}, {"center", point_json(d.center)}, {"radius", d.radius}}; },
+                 [](const PolygonObstacle& p) -> json { return {{"type", "polygon"}, {"vertices", polygon_json(p.vertices)}}; },
+                 [](const Wall& w) -> json { return {{"type", "segment"}, {"a", point_json(w.a)}, {"b", point_json(w.b)}}; }},
+      o);
 }
 
 Scene scene_from_json(const json& j) {
@@ -199,14 +211,20 @@ Scene scene_from_json(const json& j) {
     for (std::size_t i = 0; i < obs->size(); ++i)
       s.obstacles.push_back(obstacle((*obs)[i], "obstacles[" + std::to_string(i) + "]"));
   }
-  if (std::holds_alternative<ArmRobot>(s.robot)) {
-    s.start = config({0.0, 0.0});
-    s.goal = config({kPi / 2, 0.0});
-  } else {
-    s.start = robot_dof(s.robot) == 3 ? config({s.workspace_min.x(), s.workspace_min.y(), 0.0})
-                                      : config({s.workspace_min.x(), s.workspace_min.y()});
-    s.goal = robot_dof(s.robot) == 3 ? config({s.workspace_max.x(), s.workspace_max.y(), 0.0})
-                                     : config({s.workspace_max.x(), s.workspace_max.y()});
+  switch (robot_kind(s.robot)) {
+    case RobotKind::Arm:  // all joints at 0, and the first turned a quarter
+      s.start = Config::Zero(robot_dof(s.robot));
+      s.goal = Config::Zero(robot_dof(s.robot));
+      s.goal[0] = kPi / 2;
+      break;
+    case RobotKind::Point:
+      s.start = config({s.workspace_min.x(), s.workspace_min.y()});
+      s.goal = config({s.workspace_max.x(), s.workspace_max.y()});
+      break;
+    case RobotKind::RigidPolygon:
+      s.start = config({s.workspace_min.x(), s.workspace_min.y(), 0.0});
+      s.goal = config({s.workspace_max.x(), s.workspace_max.y(), 0.0});
+      break;
   }
   if (auto st = j.find("start"); st != j.end())
     s.start = configuration(*st, "start", s.robot, s.workspace_min, s.workspace_max);
@@ -254,7 +272,7 @@ json scene_to_json(const Scene& s) {
   json robot_json{{"type", robot_type_name(s.robot)}};
   if (const auto* arm = std::get_if<ArmRobot>(&s.robot)) {
     robot_json["base"] = point_json(arm->base);
-    robot_json["lengths"] = json::array({arm->length1, arm->length2});
+    robot_json["lengths"] = arm->lengths;
   } else if (const auto* poly = std::get_if<PolygonRobot>(&s.robot)) {
     robot_json["vertices"] = polygon_json(poly->body);
   }

@@ -7,7 +7,7 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { withPage, worldToPage, drag, click, keys, waitFrames, screenshot, inspectPng, api, cli,
-         tempJson, pageButton, expectView, sceneProbes } from './lib/harness.mjs';
+         tempJson, pageButton, expectView, sceneProbes, refusal } from './lib/harness.mjs';
 import { cspaceProbes } from './lib/probes.mjs';
 
 test('the arm and its torus: linked views, live C-obstacles, PRM across seams',
@@ -138,4 +138,17 @@ test('the torus at load: markers apart, a drag from the dot poses the arm, axes 
   assert.match(looping.workspace_caption, /not a (planned )?path/);
   // In this scene the loop crosses C-obstacles, and the caption says where the arm would hit.
   assert.match(looping.workspace_caption, /hits/);
+}));
+
+// A 3-link arm is a scene the lab reads (issue 23), but this lesson's square is T^2: it says so
+// and keeps its scene; the collision and potential lessons likewise.
+test('an arm of 3 links is refused by the lessons of the 2-link arm, with the reason', () => withPage(async ({ page }) => {
+  const arm3 = { version: 1, robot: { type: 'arm', base: [0.5, 0.5], lengths: [0.2, 0.15, 0.1] }, start: [0, 0, 0], goal: [1, 0, 0] };
+  for (const [lesson, why] of [['torus', /2-link arm.*'arm' robot with 3 coordinates/], ['collision', /point robot and the 2-link arm/],
+                               ['potential', /2-link arm on its torus; the scene's arm has 3 links/]]) {
+    await api(page, 'select_lesson', { id: lesson });
+    const before = await api(page, 'get_scene');
+    assert.match(String(await refusal(page, 'setScene', arm3)), why, lesson);
+    assert.deepEqual(await api(page, 'get_scene'), before, `${lesson}: its scene kept`);
+  }
 }));

@@ -1,6 +1,7 @@
 // PRM: the homework's algorithm step by step, its neighbour rules, its graph, replay to any
 // step, and the same roadmap in every build (the pinned hash runs natively and in wasm).
 #include <doctest/doctest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -14,6 +15,7 @@
 #include "core/angles.hpp"
 #include "core/potential_connector.hpp"
 #include "core/prm.hpp"
+#include "core/scene.hpp"
 
 using csl::config;
 using csl::Prm;
@@ -79,13 +81,20 @@ bool segment_hits(const Seg& s, const csl::Obstacle& o) {
 }
 
 // The robot's parts at q as segments: a point robot's one (degenerate) segment, the arm's links
-// with std::cos and std::sin (the planner uses its own).
+// (any number) with std::cos and std::sin (the planner uses its own).
 std::vector<Seg> robot_segments(const csl::Robot& robot, const csl::Config& q) {
   if (std::holds_alternative<csl::PointRobot>(robot)) return {{csl::Vec2(q[0], q[1]), csl::Vec2(q[0], q[1])}};
   const auto& arm = std::get<csl::ArmRobot>(robot);
-  const csl::Vec2 elbow = arm.base + arm.length1 * csl::Vec2(std::cos(q[0]), std::sin(q[0]));
-  const csl::Vec2 tip = elbow + arm.length2 * csl::Vec2(std::cos(q[0] + q[1]), std::sin(q[0] + q[1]));
-  return {{arm.base, elbow}, {elbow, tip}};
+  std::vector<Seg> links;
+  csl::Vec2 at = arm.base;
+  double angle = 0;
+  for (std::size_t i = 0; i < arm.lengths.size(); ++i) {
+    angle += q[static_cast<Eigen::Index>(i)];
+    const csl::Vec2 next = at + arm.lengths[i] * csl::Vec2(std::cos(angle), std::sin(angle));
+    links.push_back({at, next});
+    at = next;
+  }
+  return links;
 }
 
 bool oracle_free(const csl::CollisionWorld& world, const csl::Config& q) {
@@ -106,7 +115,7 @@ bool oracle_edge_free(const csl::CollisionWorld& world, const csl::Config& a, co
     return true;
   }
   csl::Config d = b - a;
-  for (int i = 0; i < 2; ++i) d[i] = std::remainder(d[i], 2.0 * csl::kPi);  // the shorter turn
+  for (Eigen::Index i = 0; i < d.size(); ++i) d[i] = std::remainder(d[i], 2.0 * csl::kPi);  // the shorter turn
   for (int k = 0; k <= 2000; ++k)
     if (!oracle_free(world, a + (k / 2000.0) * d)) return false;
   return true;
@@ -533,4 +542,36 @@ TEST_CASE("edges a coarse grid let through a wall are caught when the path is re
   while (!prm.done()) removed += prm.step().kind == PrmEvent::Kind::PathEdgeRemoved;
   CHECK(removed > 0);
   CHECK_FALSE(prm.solved());  // the wall is closed: once the bad edges are gone, no path is left
+}
+
+TEST_CASE("a 3-link arm is a scene: PRM plans on T^3, each path edge free by the oracle") {
+  // Issue 23: a robot of another number of links is data, not a new type.
+  const nlohmann::json j = nlohmann::json::parse(R"({
+    "version": 1, "workspace": {"min": [0, 0], "max": [1, 1]},
+    "robot": {"type": "arm", "base": [0.5, 0.5], "lengths": [0.22, 0.16, 0.1]},
+    "obstacles": [{"type": "disk", "center": [0.85, 0.55], "radius": 0.07},
+                  {"type": "disk", "center": [0.3, 0.85], "radius": 0.08},
+                  {"type": "polygon", "vertices": [[0.15, 0.15], [0.35, 0.2], [0.25, 0.35]]}],
+    "start": [1.6, 0.3, -0.4], "goal": [2.6, -0.5, 1.0]})");
+  const csl::Scene scene = csl::scene_from_json(j);
+  REQUIRE(std::get<csl::ArmRobot>(scene.robot).links() == 3);
+  CHECK(csl::scene_to_json(scene)["robot"] == j["robot"]);  // written back as read
+  const csl::CollisionWorld world(scene);
+  CHECK(world.space().dim() == 3);
+  REQUIRE(world.is_free(scene.start));
+  REQUIRE(world.is_free(scene.goal));
+  Prm prm(world, scene.start, scene.goal, params(400, "k:10", "bisection", 5));
+  prm.run();
+  require_valid_path(prm);
+  // Roadmap edges too, by the oracle (a sample of them: each is 2000 arm poses).
+  int checked = 0;
+  for (std::size_t e = 0; e < prm.roadmap().edges.size(); e += 23, ++checked) {
+    const auto& edge = prm.roadmap().edges[e];
+    if (!edge.alive) continue;
+    REQUIRE(oracle_edge_free(world, prm.roadmap().vertices[static_cast<std::size_t>(edge.a)],
+                             prm.roadmap().vertices[static_cast<std::size_t>(edge.b)]));
+  }
+  CHECK(checked > 20);
+  // And the same roadmap in every build (the wasm unit tests run this file too).
+  CHECK(csl::roadmap_hash(prm.roadmap()) == 10840063105130579134ull);
 }

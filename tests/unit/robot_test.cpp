@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <string>
 
 #include "core/angles.hpp"
 #include "core/robot.hpp"
@@ -18,11 +19,14 @@ namespace {
 std::vector<Vec2> robot_points(const csl::Robot& robot, const csl::Config& q) {
   std::vector<Vec2> pts;
   if (const auto* arm = std::get_if<csl::ArmRobot>(&robot)) {
-    const auto pose = csl::arm_pose(*arm, q);
-    for (int i = 0; i <= 10; ++i) {
-      const double s = i / 10.0;
-      pts.push_back(pose.base + s * (pose.elbow - pose.base));
-      pts.push_back(pose.elbow + s * (pose.tip - pose.elbow));
+    // Its joints written out again here (std::cos and std::sin; the robot's own use det::sincos).
+    Vec2 at = arm->base;
+    double angle = 0.0;
+    for (std::size_t k = 0; k < arm->lengths.size(); ++k) {
+      angle += q[static_cast<Eigen::Index>(k)];
+      const Vec2 next = at + arm->lengths[k] * Vec2(std::cos(angle), std::sin(angle));
+      for (int i = 0; i <= 10; ++i) pts.push_back(at + (i / 10.0) * (next - at));
+      at = next;
     }
   } else if (const auto* poly = std::get_if<csl::PolygonRobot>(&robot)) {
     csl::Polygon world;
@@ -87,6 +91,8 @@ TEST_CASE("lambda is an upper bound on every point's travel (property, all robot
       csl::PointRobot{},
       csl::ArmRobot{{0.5, 0.5}, 0.35, 0.25},
       csl::ArmRobot{{0.0, 0.0}, 0.1, 0.9},
+      csl::ArmRobot{{0.5, 0.5}, {0.2, 0.15, 0.1}},
+      csl::ArmRobot{{0.2, 0.3}, {0.05, 0.3, 0.1, 0.2}},
       csl::make_polygon_robot({{-0.1, -0.05}, {0.12, -0.04}, {0.1, 0.06}, {0.0, 0.02}, {-0.1, 0.05}}),
   };
   for (const csl::Robot& robot : robots) {
@@ -119,6 +125,7 @@ TEST_CASE("the arm's lambda uses the wrapped joint differences") {
 TEST_CASE("lambda <= K d(p, q): the robots' Lipschitz constants bound their motion") {
   csl::Rng rng(31);
   const csl::Robot robots[] = {csl::PointRobot{}, csl::ArmRobot{{0, 0}, 0.7, 0.4},
+                               csl::ArmRobot{{0, 0}, {0.3, 0.2, 0.25}},
                                csl::make_polygon_robot({{-0.2, -0.1}, {0.3, -0.1}, {0.1, 0.2}})};
   for (const auto& robot : robots) {
     const auto space = csl::robot_space(robot, {0, 0}, {1, 1});
@@ -132,4 +139,33 @@ TEST_CASE("lambda <= K d(p, q): the robots' Lipschitz constants bound their moti
     }
     CHECK(worst > 0.97 * k);  // and K is (nearly) attained: not a loose constant
   }
+}
+
+TEST_CASE("an N-link arm: T^N, its joints, and the 2-link arm's numbers unchanged") {
+  const csl::ArmRobot three{{0.5, 0.5}, {0.3, 0.2, 0.1}};
+  CHECK(csl::robot_dof(three) == 3);
+  CHECK(csl::robot_space(three, {0, 0}, {1, 1}).notation() == "T^3");
+  CHECK(std::string(csl::robot_type_name(three)) == "arm");
+  CHECK(std::string(csl::robot_type_name(csl::ArmRobot{{0, 0}, 0.3, 0.2})) == "arm2");
+  CHECK(csl::robot_kind(three) == csl::RobotKind::Arm);
+  // Straight out along x, then each joint turned a quarter: a staircase up and back.
+  Vec2 j[csl::ArmRobot::kMaxLinks + 1];
+  csl::arm_joints(three, config({0.0, kPi / 2, kPi / 2}), j);
+  CHECK(j[1].x() == doctest::Approx(0.8));
+  CHECK(j[1].y() == doctest::Approx(0.5));
+  CHECK(j[2].x() == doctest::Approx(0.8));
+  CHECK(j[2].y() == doctest::Approx(0.7));
+  CHECK(j[3].x() == doctest::Approx(0.7));
+  CHECK(j[3].y() == doctest::Approx(0.7));
+  // lambda and K by the formulas: sum l_i |d_1 + ... + d_i|, |a| with a_j = l_j + ... + l_N.
+  const double d1 = 0.1, d2 = -0.3, d3 = 0.05;
+  CHECK(csl::motion_bound(three, config({0, 0, 0}), config({d1, d2, d3})) ==
+        doctest::Approx(0.3 * std::fabs(d1) + 0.2 * std::fabs(d1 + d2) + 0.1 * std::fabs(d1 + d2 + d3)));
+  CHECK(csl::motion_lipschitz(three) == doctest::Approx(std::sqrt(0.6 * 0.6 + 0.3 * 0.3 + 0.1 * 0.1)));
+  // The 2-link arm's expressions, to the bit (the roadmap hashes pinned elsewhere rest on them).
+  const csl::ArmRobot two{{0.1, 0.2}, 0.35, 0.25};
+  const auto p = config({0.3, -1.2}), q = config({-2.9, 2.8});
+  const double e1 = csl::angle_difference(p[0], q[0]), e2 = csl::angle_difference(p[1], q[1]);
+  CHECK(csl::motion_bound(two, p, q) == 0.35 * std::fabs(e1) + 0.25 * std::fabs(e1 + e2));
+  CHECK(csl::motion_lipschitz(two) == std::sqrt((0.35 + 0.25) * (0.35 + 0.25) + 0.25 * 0.25));
 }

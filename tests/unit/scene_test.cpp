@@ -208,3 +208,38 @@ TEST_CASE("same_scene: every field counts") {
   b.name = "renamed";
   CHECK_FALSE(csl::same_scene(a, b));
 }
+
+TEST_CASE("an arm of N links: 'arm' with 1 to 6 lengths, 'arm2' with two, each written back as read") {
+  const json three = json::parse(R"({"version": 1, "robot": {"type": "arm", "base": [0.5, 0.5], "lengths": [0.3, 0.2, 0.1]},
+                                     "start": [0.1, 0.2, 7.0], "goal": [1, 2, 3]})");
+  const Scene s = csl::scene_from_json(three);
+  const auto& arm = std::get<csl::ArmRobot>(s.robot);
+  CHECK(arm.lengths == std::vector<double>{0.3, 0.2, 0.1});
+  CHECK(s.start.size() == 3);
+  CHECK(s.start[2] == doctest::Approx(7.0 - csl::kTwoPi));  // angles wrap, all of them
+  const json back = csl::scene_to_json(s);
+  CHECK(back["robot"] == three["robot"]);
+  CHECK(csl::scene_from_json(back).start == s.start);
+  // The defaults for an arm: every joint at 0, the goal with the first turned a quarter.
+  const Scene d = csl::scene_from_json(json::parse(R"({"version": 1, "robot": {"type": "arm", "base": [0, 0], "lengths": [1, 1, 1, 1]}})"));
+  CHECK(d.start == csl::config({0, 0, 0, 0}));
+  CHECK(d.goal == csl::config({csl::kPi / 2, 0, 0, 0}));
+  // A 2-link "arm" is the arm2.
+  const json two = json::parse(R"({"version": 1, "robot": {"type": "arm", "base": [0, 0], "lengths": [0.3, 0.2]}})");
+  CHECK(csl::scene_to_json(csl::scene_from_json(two))["robot"]["type"] == "arm2");
+  // Refused, naming the field: no links, too many, an arm2 of three, a configuration of the wrong size.
+  json j = three;
+  j["robot"]["lengths"] = json::array();
+  CHECK(error_of(j) == "robot.lengths: must be an array of 1 to 6 numbers");
+  j["robot"]["lengths"] = json::array({0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1});
+  CHECK(error_of(j) == "robot.lengths: must be an array of 1 to 6 numbers");
+  j = three;
+  j["robot"]["type"] = "arm2";
+  CHECK(error_of(j) == "robot.lengths: must be an array of 2 numbers");
+  j = three;
+  j["start"] = json::array({0.1, 0.2});
+  CHECK(error_of(j).rfind("start: must be an array of 3 numbers for robot type 'arm'", 0) == 0);
+  j = three;
+  j["robot"]["lengths"][1] = 0;
+  CHECK(error_of(j) == "robot.lengths: link lengths must be > 0");
+}
