@@ -98,8 +98,6 @@ class StepPrmLesson : public PlannerLesson {
     const Roadmap& r = planner.roadmap();
     json path = json::array();
     for (int v : planner.path()) path.push_back(config_to_json(r.vertices[static_cast<std::size_t>(v)]));
-    char hash[32];
-    std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(roadmap_hash(r)));
     json out{{"params", prm_params_json(params_)},
              {"phase", phase_name(planner.phase())},
              {"steps", planner.steps()},
@@ -116,7 +114,7 @@ class StepPrmLesson : public PlannerLesson {
              {"running", running_json(session_)},
              {"path", path},
              {"path_length", planner.solved() ? json(planner.path_length()) : json(nullptr)},
-             {"roadmap_hash", hash},
+             {"roadmap_hash", roadmap_hash_text(r)},
              {"last_event", planner.steps() > 0 ? json(event_kind_name(planner.last_event().kind)) : json(nullptr)}};
     if (args.value("roadmap", false)) {
       json vertices = json::array(), edges = json::array();

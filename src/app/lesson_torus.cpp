@@ -6,7 +6,6 @@
 // loops that can and cannot be shrunk.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <deque>
 #include <memory>
 #include <optional>
@@ -176,8 +175,6 @@ class TorusLesson : public PlannerLesson {
     const Roadmap& r = planner.roadmap();
     json path = json::array();
     for (int v : planner.path()) path.push_back(config_to_json(r.vertices[static_cast<std::size_t>(v)]));
-    char hash[32];
-    std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(roadmap_hash(r)));
     json out{{"q", config_to_json(q_)},
              {"q_free", world().is_free(q_)},
              {"start", config_to_json(scene_.start)},
@@ -201,7 +198,7 @@ class TorusLesson : public PlannerLesson {
                {"running", running_json(session_)},
                {"path", path},
                {"path_length", planner.solved() ? json(planner.path_length()) : json(nullptr)},
-               {"roadmap_hash", hash}}}};
+               {"roadmap_hash", roadmap_hash_text(r)}}}};
     for (const AngleInterval& i : map_->link1_blocked()) out["link1_blocked"].push_back({i.lo, i.hi});
     if (args.contains("blocked_at")) {
       // The map's answer at given configurations: [[theta1, theta2], ...] -> [bool, ...].

@@ -47,8 +47,6 @@ int run_plan(Args& args, std::ostream& os) {
   const Roadmap& r = prm.roadmap();
   json path_json = json::array();
   for (const Config& q : prm.path_configurations()) path_json.push_back(config_to_json(q));
-  char hash[32];
-  std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(roadmap_hash(r)));
   json out{{"solved", prm.solved()},
            {"path", path_json},
            {"path_length", prm.solved() ? json(prm.path_length()) : json(nullptr)},
@@ -65,7 +63,7 @@ int run_plan(Args& args, std::ostream& os) {
            {"connector", connector},
            {"seed", params.seed},
            {"steps", prm.steps()},
-           {"roadmap_hash", hash}};
+           {"roadmap_hash", roadmap_hash_text(r)}};
   if (roadmap_out) {
     json vertices = json::array(), edges = json::array();
     for (const Config& q : r.vertices) vertices.push_back(config_to_json(q));

@@ -110,41 +110,6 @@ const char* event_kind_name(PrmEvent::Kind k) {
   return kNames[static_cast<int>(k)];
 }
 
-const std::vector<Config>& Roadmap::waypoints(const RoadmapEdge& e) const {
-  static const std::vector<Config> kStraight;
-  return e.path < 0 ? kStraight : paths.at(static_cast<std::size_t>(e.path));  // at: an edge of another roadmap throws
-}
-
-std::uint64_t roadmap_hash(const Roadmap& r) {
-  std::uint64_t h = 0xcbf29ce484222325ull;  // FNV-1a, 64 bit
-  const auto mix = [&h](std::uint64_t word) {
-    for (int i = 0; i < 8; ++i) {
-      h ^= (word >> (8 * i)) & 0xffu;
-      h *= 0x100000001b3ull;
-    }
-  };
-  const auto mix_config = [&mix](const Config& q) {
-    for (Eigen::Index i = 0; i < q.size(); ++i) {
-      std::uint64_t bits;
-      std::memcpy(&bits, &q[i], sizeof bits);
-      mix(bits);
-    }
-  };
-  mix(r.vertices.size());
-  for (const Config& q : r.vertices) mix_config(q);
-  mix(r.edges.size());
-  for (const RoadmapEdge& e : r.edges) {
-    mix(static_cast<std::uint64_t>(e.a));
-    mix(static_cast<std::uint64_t>(e.b));
-    mix(e.alive ? 1u : 0u);
-    const std::vector<Config>& waypoints = r.waypoints(e);
-    if (waypoints.empty()) continue;  // straight lines: the hash of before connectors existed
-    mix(waypoints.size());
-    for (const Config& w : waypoints) mix_config(w);
-  }
-  return h;
-}
-
 std::uint64_t pair_seed(std::uint64_t seed, int a, int b) {
   // splitmix64's finaliser over the seed and the pair packed into one word.
   std::uint64_t z = seed + 0x9E3779B97F4A7C15ull * (1u + ((static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
