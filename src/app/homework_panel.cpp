@@ -204,8 +204,8 @@ void HomeworkPanel::menu_button() {
 void HomeworkPanel::card(const std::string& lesson_id) {
   if (web::page().welcome && problem_.empty()) {
     boxed(theme::rgba(232, 242, 255), [&] {
-    ImGui::TextWrapped("Welcome! Working on the motion-planning homework? Every problem, P1 to P13, has a tool here and an "
-                       "exercise with your own numbers that the lab checks.");
+    // Short: a first visit's panel must still fit 1280 x 800 with it (tests/e2e/panel-layout).
+    ImGui::TextWrapped("Welcome! Homework P1 to P13: each has a tool here, and an exercise the lab checks.");
     if (ImGui::Button("Open the homework map")) {
       web::dismiss_welcome();
       want_map_ = true;  // opened by menu_button(), where the map's popup lives

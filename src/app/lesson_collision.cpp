@@ -320,7 +320,8 @@ class CollisionLesson : public Lesson {
       ImGui::Text("without p and q: no N up to %d", kInteractiveMaxGrid);
     if (min_grid_ && min_interior_ && one_end()) {
       ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-      ImGui::TextWrapped("So the handout's N is %d with both ends, %d with one (t = i/N), %d with neither.",
+      // (The handout's question, read three ways; its numbers are this edge's, wherever p and q are.)
+      ImGui::TextWrapped("So the least N is %d counting both ends, %d with one (t = i/N), %d with neither.",
                          *min_grid_, *one_end(), *min_interior_);
       ImGui::PopStyleColor();
     }
@@ -556,7 +557,7 @@ class CollisionLesson : public Lesson {
     ImGui::PopFont();
     // What the rows mean, once, under the table.
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    ImGui::TextUnformatted("<: proven free;  ≥: split at the midpoint t");
+    ImGui::TextUnformatted("#: as in the view;  <: proven free;  ≥: split at t");
     ImGui::PopStyleColor();
   }
 

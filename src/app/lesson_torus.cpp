@@ -75,9 +75,9 @@ class TorusLesson : public PlannerLesson {
   }
 
   void panel(LabContext& ctx) override {
-    ImGui::TextWrapped("Two joint angles fix the arm: its C-space is the torus T² = S¹ × S¹, drawn flat as a "
-                       "square whose opposite edges are glued. Drag in the square to pose the arm, or drag the "
-                       "arm's links; drag obstacles and watch their C-obstacles change.");
+    ImGui::TextWrapped("Two joint angles fix the arm: its C-space is the torus T² = S¹ × S¹, a square whose "
+                       "opposite edges are glued. Drag in the square to pose the arm, or drag its links or the "
+                       "obstacles.");
     ImGui::Text("q = (%.3f, %.3f)  %s", q_[0], q_[1], world().is_free(q_) ? "free" : "in collision");
     ImGui::Checkbox("animate the path / loop", &animate_);
     ui::flow(ui::button_width("clear trail"));
@@ -94,9 +94,9 @@ class TorusLesson : public PlannerLesson {
 
     if (panel::fold("PRM on the torus")) {
       if (prm_controls(params_, world(), ctx, 5000)) rebuild(0);
-      ImGui::Text("|V| = %zu  |E| = %ld  components %d", prm().roadmap().vertices.size(), prm().edges_alive(),
-                  session_.prm().components());
-      ImGui::Text("edges across a seam: %d", seam_edges());
+      const int parts = session_.prm().components();
+      ui::text_flow(ui::format("|V| = %zu  |E| = %ld (%d across a seam), %d component%s", prm().roadmap().vertices.size(),
+                               prm().edges_alive(), seam_edges(), parts, parts == 1 ? "" : "s"));
       if (prm().solved()) ImGui::TextColored(ImVec4(0.0f, 0.45f, 0.3f, 1.0f), "path found, length %.3f rad", prm().path_length());
       else if (prm().done()) ImGui::TextColored(ImVec4(0.7f, 0.25f, 0.0f, 1.0f), "no path found");
       if (replay_pending()) {
@@ -131,7 +131,9 @@ class TorusLesson : public PlannerLesson {
         if (scroll_to_exercise_ > 0 && --scroll_to_exercise_ == 0) ImGui::SetScrollHereY(1.0f);
       }
     }
-    if (panel::fold("Obstacles")) {
+    // Folded at first: posing the arm and its torus come first (and a first visit's panel, with
+    // the welcome above it, fits 1280 x 800); the keys D, P, W, V edit with it folded too.
+    if (panel::fold("Obstacles", false)) {
       if (editor_.toolbar(scene_, ctx)) rebuild(session_.wanted_steps());
     }
   }
@@ -411,7 +413,8 @@ class TorusLesson : public PlannerLesson {
 
   const char* workspace_caption() const {
     if (exercise_ == Exercise::None || !animate_) return nullptr;
-    return loop_blocked() ? "a loop in C-space, not a path: red where the arm hits" : "a loop in C-space, not a planned path";
+    return loop_blocked() ? "a loop in C-space, not a path (red-orange: the arm hits)"
+                          : "a loop in C-space, not a planned path";
   }
 
   // 1 or 2 if the mouse is on link 1 or 2 of the posed arm, else 0.

@@ -27,6 +27,15 @@ test('every lesson\'s first state fits the panel at 1280 x 800', () => withPage(
   }
 }));
 
+// A student's very first visit: the welcome above the lesson's panel, and still everything in view.
+test('a first visit, with its welcome, fits the panel too', () => withPage({ welcome: true }, async ({ page }) => {
+  await page.mouse.move(2, 2);
+  await waitFrames(page, 4);
+  assert.equal((await api(page, 'homework_state')).welcome, true, 'the welcome is shown');
+  const p = await panel(page);
+  assert.ok(p.scroll_max <= 0.5 && !p.cue, `${p.content} px of content in ${p.height}`);
+}));
+
 test('what grows past the panel shows the cue, and the cue scrolls to it',
   () => withPage(async ({ page, browser }) => {
   await api(page, 'select_lesson', { id: 'torus' });
