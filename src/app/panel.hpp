@@ -1,7 +1,8 @@
 #pragma once
 // The side panel's layout, shared by every lesson: sections that fold, and a cue under the panel
-// when there is more to scroll to (an ImGui scrollbar alone is easy to miss). A panel's default state fits a 1280 x 800 window; what
-// grows (a run's numbers, an exercise's text) folds, or scrolls with the cue showing.
+// when there is more to scroll to (an ImGui scrollbar alone is easy to miss). A panel's default
+// state fits a 1280 x 800 window; what grows (a run's numbers, an exercise's text) folds, or
+// scrolls with the cue showing.
 //
 // The state JSON (status().panel) says how tall the panel and its content are and which sections
 // it holds, open or folded, for tests; each section's header is a control in page_state's

@@ -104,9 +104,10 @@ WorkspaceView::Ticks WorkspaceView::ticks(int axis, double extent, double pixels
   Ticks t;
   if (angular_[axis]) {
     // Multiples of pi: labels at pi/d (d = 1, 2, 4, 12, 24, 48: 180, 90, 45, 15, 7.5, 3.75
-    // degrees) at least ~56 px apart, and lines between them at least 12 px apart.
+    // degrees), the finest at least ~56 px apart (pi itself when none is), and lines between
+    // them at least 12 px apart.
     t.angular = true;
-    t.denominator = 48;
+    t.denominator = 1;
     for (int d : {1, 2, 4, 12, 24, 48})
       if (kPi / d * pixels_per_unit >= 56.0) t.denominator = d;
     const double major = kPi / t.denominator;
