@@ -23,12 +23,40 @@ using json = nlohmann::json;
 namespace {
 json vec_json(ImVec2 v) { return json::array({v.x, v.y}); }
 
-// Long work goes on over frames (Lesson::work); an API call finishes what it started before it
+// A lesson with nothing to step answers the stepping calls as a stepper at step 0 that is done.
+class NoStepper final : public Stepper {
+ public:
+  long steps() const override { return 0; }
+  bool finished() const override { return true; }
+  void step_forward() override {}
+  void step_back() override {}
+  void finish_phase() override {}
+  void run_all() override {}
+  void reset() override {}
+  void run_to(long) override {}
+};
+NoStepper no_stepper;
+
+Stepper& stepping(Lesson& lesson) {
+  Stepper* s = lesson.stepper();
+  return s ? *s : no_stepper;
+}
+const Stepper& stepping(const Lesson& lesson) {
+  const Stepper* s = lesson.stepper();
+  return s ? *s : no_stepper;
+}
+// Whether the panel shows the playback controls (and the event log) for the lesson.
+bool shows_controls(const Lesson& lesson) {
+  const Stepper* s = lesson.stepper();
+  return s && s->shows_controls();
+}
+
+// Long work goes on over frames (Stepper::work); an API call finishes what it started before it
 // returns, unless asked {background: true} (the page does, for links and restores, so that the
 // first frames come at once and the progress shows).
 constexpr double kFrameWorkMs = 25.0;
 void finish(Lesson& lesson, const json& args) {
-  if (!args.value("background", false)) lesson.work(std::numeric_limits<double>::infinity());
+  if (!args.value("background", false)) stepping(lesson).work(std::numeric_limits<double>::infinity());
 }
 
 long count_arg(const json& args, const char* key, long fallback, long max) {
@@ -77,7 +105,7 @@ void App::show_in_lesson(const std::string& id, const json& setup) {
       throw;
     }
   }
-  lesson.work(std::numeric_limits<double>::infinity());
+  stepping(lesson).work(std::numeric_limits<double>::infinity());
   select_lesson(id);
 }
 
@@ -132,37 +160,37 @@ void App::register_api() {
   });
   api.add("step", "forward {count} steps (default 1)", [this](const json& args) {
     const long n = count_arg(args, "count", 1, 10000000);
-    lesson_->cancel_work();
-    for (long i = 0; i < n && !lesson_->finished(); ++i) lesson_->step_forward();
-    return json(lesson_->steps());
+    stepping(*lesson_).cancel_work();
+    for (long i = 0; i < n && !stepping(*lesson_).finished(); ++i) stepping(*lesson_).step_forward();
+    return json(stepping(*lesson_).steps());
   });
   api.add("step_back", "back {count} steps (default 1; {background: true}: over frames)", [this](const json& args) {
-    lesson_->run_to(std::max(0L, lesson_->wanted_steps() - count_arg(args, "count", 1, 10000000)));
+    stepping(*lesson_).run_to(std::max(0L, stepping(*lesson_).wanted_steps() - count_arg(args, "count", 1, 10000000)));
     finish(*lesson_, args);
-    return json(lesson_->steps());
+    return json(stepping(*lesson_).steps());
   });
   api.add("run_to", "to step {steps} ({background: true}: over frames, see status().busy)", [this](const json& args) {
-    lesson_->run_to(count_arg(args, "steps", 0, 100000000));
+    stepping(*lesson_).run_to(count_arg(args, "steps", 0, 100000000));
     finish(*lesson_, args);
-    return json(lesson_->steps());
+    return json(stepping(*lesson_).steps());
   });
   api.add("run", "to the end ({background: true}: over frames)", [this](const json& args) {
-    lesson_->run_all();
+    stepping(*lesson_).run_all();
     finish(*lesson_, args);
-    return json(lesson_->steps());
+    return json(stepping(*lesson_).steps());
   });
   api.add("finish_phase", "to the end of the current phase", [this](const json& args) {
-    lesson_->finish_phase();
+    stepping(*lesson_).finish_phase();
     finish(*lesson_, args);
-    return json(lesson_->steps());
+    return json(stepping(*lesson_).steps());
   });
   api.add("cancel", "stop the lesson's running work (a run, a replay) where it is", [this](const json&) {
-    lesson_->cancel_work();
-    return json(lesson_->steps());
+    stepping(*lesson_).cancel_work();
+    return json(stepping(*lesson_).steps());
   });
   api.add("reset", "back to step 0", [this](const json&) {
-    lesson_->reset();
-    return json(lesson_->steps());
+    stepping(*lesson_).reset();
+    return json(stepping(*lesson_).steps());
   });
   api.add("get_scene", "the lesson's scene (schema version 1)", [this](const json&) {
     if (!lesson_->scene()) throw ApiError("this lesson has no scene");
@@ -225,7 +253,7 @@ void App::register_api() {
             return json{{"lesson", id},
                         {"scene", l.scene() ? scene_to_json(*l.scene()) : json(nullptr)},
                         {"params", l.params()},
-                        {"steps", l.wanted_steps()}};
+                        {"steps", stepping(l).wanted_steps()}};
           });
   api.add("restore", "restore a snapshot: {lesson, scene?, params?, steps?, background?}; all checked before anything changes",
           [this](const json& args) {
@@ -240,11 +268,11 @@ void App::register_api() {
             std::string why;
             if (scene && !trial->accept_scene(*scene, why)) throw ApiError("scene: " + why);
             if (args.contains("params")) trial->set_params(args["params"]);
-            trial->run_to(steps);
+            stepping(*trial).run_to(steps);
             finish(*trial, args);
             instances_[id] = std::move(trial);
             select_lesson(id);
-            return json{{"lesson", lesson_id_}, {"steps", lesson_->steps()}};
+            return json{{"lesson", lesson_id_}, {"steps", stepping(*lesson_).steps()}};
           });
   homework_.register_api(api);
   web::register_api(api, ctx_);  // notify, page_state, bundled_scenes: the page around the app
@@ -257,18 +285,18 @@ void App::register_api() {
 
 json App::busy_json() const {
   for (const auto& [id, lesson] : instances_)
-    if (lesson && lesson->busy())
-      return json{{"lesson", id}, {"text", lesson->busy_text()}, {"progress", lesson->progress()},
-                  {"steps", lesson->steps()}};
+    if (lesson && stepping(*lesson).busy())
+      return json{{"lesson", id}, {"text", stepping(*lesson).busy_text()}, {"progress", stepping(*lesson).progress()},
+                  {"steps", stepping(*lesson).steps()}};
   return nullptr;
 }
 
 void App::work() {
   // The lesson on screen first; when it has nothing to do, a lesson restored in the background
   // (a saved state of several lessons comes back while the student looks at one).
-  if (lesson_->busy()) return lesson_->work(kFrameWorkMs);
+  if (stepping(*lesson_).busy()) return stepping(*lesson_).work(kFrameWorkMs);
   for (auto& [id, lesson] : instances_)
-    if (lesson && lesson->busy()) return lesson->work(kFrameWorkMs);
+    if (lesson && stepping(*lesson).busy()) return stepping(*lesson).work(kFrameWorkMs);
 }
 
 void App::top_bar() {
@@ -343,46 +371,46 @@ void App::top_bar() {
 }
 
 void App::playback_controls() {
-  if (!lesson_->steppable()) return;
+  if (!shows_controls(*lesson_)) return;
   Playback& pb = ctx_.playback;
-  if (lesson_->busy()) {
+  if (stepping(*lesson_).busy()) {
     // Long work runs over frames: what it is, how far, and a way out.
     pb.playing = false;
-    ImGui::TextWrapped("%s", lesson_->busy_text().c_str());
+    ImGui::TextWrapped("%s", stepping(*lesson_).busy_text().c_str());
     const float cancel_w = ui::button_width("Cancel");
-    ImGui::ProgressBar(static_cast<float>(lesson_->progress()), ImVec2(-cancel_w - ImGui::GetStyle().ItemSpacing.x, 0));
+    ImGui::ProgressBar(static_cast<float>(stepping(*lesson_).progress()), ImVec2(-cancel_w - ImGui::GetStyle().ItemSpacing.x, 0));
     ImGui::SameLine();
-    if (ImGui::Button("Cancel")) lesson_->cancel_work();
+    if (ImGui::Button("Cancel")) stepping(*lesson_).cancel_work();
     web::record_control("cancel");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("stop here (Esc)");
     ImGui::Spacing();
     return;
   }
-  ImGui::BeginDisabled(lesson_->steps() == 0);
-  if (ImGui::Button("\xE2\x97\x80 Back")) lesson_->step_back();  // ◀
+  ImGui::BeginDisabled(stepping(*lesson_).steps() == 0);
+  if (ImGui::Button("\xE2\x97\x80 Back")) stepping(*lesson_).step_back();  // ◀
   web::record_control("back");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("step back (,)");
   ImGui::EndDisabled();
   ui::flow(ui::button_width("Step \xE2\x96\xB6"));
-  ImGui::BeginDisabled(lesson_->finished());
-  if (ImGui::Button("Step \xE2\x96\xB6")) lesson_->step_forward();  // ▶
+  ImGui::BeginDisabled(stepping(*lesson_).finished());
+  if (ImGui::Button("Step \xE2\x96\xB6")) stepping(*lesson_).step_forward();  // ▶
   web::record_control("step");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("one step (.)");
   ui::flow(ui::button_width("Finish phase"));
-  if (ImGui::Button("Finish phase")) lesson_->finish_phase();
+  if (ImGui::Button("Finish phase")) stepping(*lesson_).finish_phase();
   web::record_control("finish-phase");
   ui::flow(ui::button_width("Run all"));
-  if (ImGui::Button("Run all")) lesson_->run_all();
+  if (ImGui::Button("Run all")) stepping(*lesson_).run_all();
   web::record_control("run-all");
   ImGui::EndDisabled();
-  ImGui::BeginDisabled(lesson_->finished() && !pb.playing);
+  ImGui::BeginDisabled(stepping(*lesson_).finished() && !pb.playing);
   if (ImGui::Button(pb.playing ? "Pause " : "\xE2\x96\xB6 Play")) pb.playing = !pb.playing;
   web::record_control("play");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("play or pause (Space)");
   ImGui::EndDisabled();
   ImGui::SameLine();
   if (ImGui::Button("Reset")) {
-    lesson_->reset();
+    stepping(*lesson_).reset();
     pb.playing = false;
   }
   ImGui::SameLine();
@@ -394,17 +422,17 @@ void App::playback_controls() {
 
 void App::shortcuts() {
   const ImGuiIO& io = ImGui::GetIO();
-  if (lesson_->busy() && !io.WantTextInput && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) lesson_->cancel_work();
+  if (stepping(*lesson_).busy() && !io.WantTextInput && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) stepping(*lesson_).cancel_work();
   if (io.WantTextInput || io.KeyCtrl || io.KeyAlt) return;
   // F: every view of the lesson back to its whole rectangle (after zooming and panning).
   for (ImWchar c : io.InputQueueCharacters)
     if (c == 'f' || c == 'F')
       for (auto& [name, view] : ctx_.views) view->reset_view();
-  if (!lesson_->steppable()) return;
+  if (!shows_controls(*lesson_)) return;
   for (ImWchar c : io.InputQueueCharacters) {
-    if (c == ' ') ctx_.playback.playing = !ctx_.playback.playing && !lesson_->finished();
-    if (c == '.') lesson_->step_forward();
-    if (c == ',') lesson_->step_back();
+    if (c == ' ') ctx_.playback.playing = !ctx_.playback.playing && !stepping(*lesson_).finished();
+    if (c == '.') stepping(*lesson_).step_forward();
+    if (c == ',') stepping(*lesson_).step_back();
   }
 }
 
@@ -447,7 +475,7 @@ void App::frame() {
   ImGui::SameLine();
   ImGui::BeginChild("main", ImVec2(0, 0), false, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
   // The event log, for lessons that step through an algorithm or report progress.
-  const bool log = lesson_->steppable() || !ctx_.log.lines().empty();
+  const bool log = shows_controls(*lesson_) || !ctx_.log.lines().empty();
   const float log_h = log ? std::clamp(ImGui::GetContentRegionAvail().y * 0.18f, 70.0f, 150.0f) : 0.0f;
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   lesson_->views(ctx_, ImVec2(avail.x, avail.y - (log ? log_h + ImGui::GetStyle().ItemSpacing.y : 0.0f)));

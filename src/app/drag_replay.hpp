@@ -8,7 +8,7 @@
 #include <string>
 
 #include "app/workspace_view.hpp"
-#include "core/prm.hpp"
+#include "core/planner.hpp"
 
 namespace csl::app {
 
@@ -18,10 +18,8 @@ namespace csl::app {
 /// machine, and tests can say when it happens.
 inline constexpr long kLiveReplayWork = 20000;
 
-/// Whether replaying `prm` to its current step is cheap enough for every frame of a drag.
-inline bool replay_is_live(const Prm& prm) {
-  return static_cast<long>(prm.samples_drawn()) + prm.edge_checks() <= kLiveReplayWork;
-}
+/// Whether replaying `planner` to its current step is cheap enough for every frame of a drag.
+inline bool replay_is_live(const Planner& planner) { return planner.replay_work() <= kLiveReplayWork; }
 
 /// Fades what is drawn in `view` so far (the stale roadmap) and says why at its top left: the
 /// drag's reason, or `text` (a replay catching up). Call between view.push_clip() and

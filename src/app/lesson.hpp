@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "app/context.hpp"
+#include "app/stepper.hpp"
 #include "core/scene.hpp"
 
 namespace csl::app {
@@ -47,28 +48,10 @@ class Lesson {
   /// The parameters set_params() takes, as they are now (for share links and autosave).
   virtual nlohmann::json params() const = 0;
 
-  /// Stepping, for lessons that run an algorithm (the shared playback controls call these).
-  virtual bool steppable() const { return false; }
-  virtual long steps() const { return 0; }
-  virtual bool finished() const { return true; }
-  virtual void step_forward() {}
-  virtual void step_back() {}
-  virtual void finish_phase() {}
-  virtual void run_all() {}
-  virtual void reset() {}
-  virtual void run_to(long) {}
-
-  /// Long work (a run to the end, a replay after an edit) goes on over several frames, so that
-  /// no frame waits for it: work() advances it for about `ms` milliseconds, once a frame (an
-  /// infinite `ms`: to its end, as the API does unless asked not to).
-  virtual bool busy() const { return false; }
-  virtual void work(double /*ms*/) {}
-  virtual void cancel_work() {}
-  /// How far the work is, in [0, 1], and what it is ("replaying to step 1200").
-  virtual double progress() const { return 1.0; }
-  virtual std::string busy_text() const { return ""; }
-  /// The step a snapshot holds: where running work heads, else steps().
-  virtual long wanted_steps() const { return steps(); }
+  /// The algorithm the lesson steps (the shared playback controls, keys and API drive it), or
+  /// nullptr for a lesson with nothing to step.
+  virtual Stepper* stepper() { return nullptr; }
+  const Stepper* stepper() const { return const_cast<Lesson*>(this)->stepper(); }
 };
 
 struct LessonInfo {

@@ -50,7 +50,7 @@ class LabelRow {
 
 constexpr int kInteractiveMaxGrid = 2000;
 
-class CollisionLesson : public Lesson {
+class CollisionLesson : public Lesson, private Stepper {
  public:
   CollisionLesson() { load(false); }
 
@@ -239,7 +239,9 @@ class CollisionLesson : public Lesson {
     return {{"grid_n", grid_n_}, {"p", config_to_json(scene_.start)}, {"q", config_to_json(scene_.goal)}};
   }
 
-  bool steppable() const override { return true; }
+  Stepper* stepper() override { return this; }
+
+  // ---- Stepper
   long steps() const override { return shown_; }
   bool finished() const override { return shown_ >= static_cast<int>(bisection_.trace.size()); }
   void step_forward() override { shown_ = std::min(shown_ + 1, static_cast<int>(bisection_.trace.size())); }

@@ -21,7 +21,7 @@
 #include "app/js_api.hpp"
 #include "app/lesson.hpp"
 #include "app/panel.hpp"
-#include "app/prm_text.hpp"
+#include "core/prm_text.hpp"
 #include "app/scene_editor.hpp"
 #include "app/theme.hpp"
 #include "app/web_bridge.hpp"
@@ -130,7 +130,7 @@ std::string describe(const DescentEvent& e) {
   return "";
 }
 
-class PotentialLesson : public Lesson {
+class PotentialLesson : public Lesson, private Stepper {
  public:
   PotentialLesson() { load(bundled_scene("p13")); }
 
@@ -377,7 +377,9 @@ class PotentialLesson : public Lesson {
             {"point", chosen_}};
   }
 
-  bool steppable() const override { return true; }
+  Stepper* stepper() override { return this; }
+
+  // ---- Stepper
   long steps() const override { return descent_ ? descent_->steps() : 0; }
   bool finished() const override { return !descent_ || descent_->done(); }
   void step_forward() override {

@@ -7,11 +7,11 @@
 #include "app/drag_replay.hpp"
 #include "app/draw.hpp"
 #include "app/js_api.hpp"
-#include "app/planner_lesson.hpp"
 #include "app/planner_session.hpp"
 #include "app/lesson.hpp"
 #include "app/prm_controls.hpp"
-#include "app/prm_text.hpp"
+#include "core/planner_json.hpp"
+#include "core/prm_text.hpp"
 #include "app/scene_editor.hpp"
 #include "app/theme.hpp"
 
@@ -20,17 +20,17 @@ namespace {
 
 using json = nlohmann::json;
 
-class StepPrmLesson : public PlannerLesson {
+class StepPrmLesson : public Lesson {
  public:
   StepPrmLesson() : scene_(bundled_scene("prm-demo")), session_(scene_, params_) {}
 
-  void on_show() override { logged_version_ = -1; }
+  void on_show() override { session_.forget_log(); }
 
   void update(LabContext& ctx) override {
     const int due = ctx.playback.due(static_cast<double>(ImGui::GetIO().DeltaTime));
     for (int i = 0; i < due && !prm().done() && !session_.busy(); ++i) session_.step_forward();
     if (prm().done()) ctx.playback.playing = false;
-    log_new_steps(ctx);
+    session_.log_steps(ctx.log, "ready: press Step or Play");
   }
 
   void panel(LabContext& ctx) override {
@@ -94,36 +94,11 @@ class StepPrmLesson : public PlannerLesson {
   bool redo() override { return editor_.redo(scene_) && (rebuild(session_.wanted_steps()), true); }
 
   json state(const json& args) const override {
-    const Prm& planner = prm();
-    const Roadmap& r = planner.roadmap();
-    json path = json::array();
-    for (int v : planner.path()) path.push_back(config_to_json(r.vertices[static_cast<std::size_t>(v)]));
-    json out{{"params", prm_params_json(params_)},
-             {"phase", phase_name(planner.phase())},
-             {"steps", planner.steps()},
-             {"done", planner.done()},
-             {"nodes", r.vertices.size()},
-             {"edges", planner.edges_alive()},
-             {"components", const_cast<Prm&>(planner).components()},
-             {"edge_checks", planner.edge_checks()},
-             {"evaluations", planner.evaluations()},
-             {"samples_drawn", planner.samples_drawn()},
-             {"solved", planner.solved()},
-             {"replay_pending", replay_pending()},
-             {"planner_builds", session_.builds()},
-             {"running", running_json(session_)},
-             {"path", path},
-             {"path_length", planner.solved() ? json(planner.path_length()) : json(nullptr)},
-             {"roadmap_hash", roadmap_hash_text(r)},
-             {"last_event", planner.steps() > 0 ? json(event_kind_name(planner.last_event().kind)) : json(nullptr)}};
-    if (args.value("roadmap", false)) {
-      json vertices = json::array(), edges = json::array();
-      for (const Config& q : r.vertices) vertices.push_back(config_to_json(q));
-      for (const RoadmapEdge& e : r.edges)
-        if (e.alive) edges.push_back(json::array({e.a, e.b}));
-      out["vertices"] = vertices;
-      out["edge_list"] = edges;
-    }
+    json out = planner_state_json(prm(), args.value("roadmap", false));
+    out["params"] = prm_params_json(params_);
+    out["replay_pending"] = replay_pending();
+    out["planner_builds"] = session_.builds();
+    out["running"] = running_json(session_);
     return out;
   }
 
@@ -134,12 +109,11 @@ class StepPrmLesson : public PlannerLesson {
 
   json params() const override { return prm_params_json(params_); }
 
- protected:
-  PlannerSession& planner() override { return session_; }
-  const PlannerSession& planner() const override { return session_; }
+ public:
+  Stepper* stepper() override { return &session_; }
 
  private:
-  const Prm& prm() const { return session_.prm(); }
+  const Prm& prm() const { return session_.shown_as<Prm>(); }
   // A new planner for the current scene and parameters, replayed to `steps` (an edit keeps the
   // student at the same step, with the same seed).
   void rebuild(long steps) {
@@ -147,31 +121,17 @@ class StepPrmLesson : public PlannerLesson {
     keep_within_budget(params_, robot_space(scene_.robot, scene_.workspace_min, scene_.workspace_max));
     session_.rebuild(scene_, params_, steps);
     labels_at_ = -1;
-    logged_through_ = -1;
     check_at_ = -1;
+    session_.forget_log();
   }
   bool replay_pending() const { return session_.replay_pending(); }
 
   void refresh_labels() {
     if (labels_at_ == session_.version()) return;
-    labels_ = session_.prm().component_labels();
+    labels_ = prm().component_labels();
     labels_at_ = session_.version();
   }
 
-  // The event log follows the planner: after a replay it says where we are, then each new step.
-  void log_new_steps(LabContext& ctx) {
-    const Prm& p = prm();
-    if (logged_version_ == session_.version()) return;
-    const bool same_planner = (logged_version_ >> 32) == (session_.version() >> 32);
-    if (!same_planner || logged_through_ < 0 || p.steps() < logged_through_ || p.steps() > logged_through_ + 1) {
-      ctx.log.clear();
-      ctx.log.add(0, p.steps() == 0 ? std::string("ready: press Step or Play")
-                                    : "at step " + std::to_string(p.steps()) + " (" + phase_name(p.phase()) + ")");
-    }
-    if (p.steps() > 0) ctx.log.add(p.steps(), describe(p.last_event(), p, session_.planned_scene()));
-    logged_through_ = p.steps();
-    logged_version_ = session_.version();
-  }
 
   void draw_current_step() {
     const Prm& planner = prm();
@@ -222,7 +182,7 @@ class StepPrmLesson : public PlannerLesson {
   }
 
   void stats() {
-    Prm& planner = session_.prm();
+    const Prm& planner = prm();
     const Roadmap& r = planner.roadmap();
     ImGui::Text("step %ld   phase: %s", planner.steps(), phase_name(planner.phase()));
     ImGui::Text("|V| = %zu   |E| = %ld   components: %d", r.vertices.size(), planner.edges_alive(), planner.components());
@@ -249,8 +209,6 @@ class StepPrmLesson : public PlannerLesson {
   long long labels_at_ = -1;
   EdgeCheckResult check_;
   long long check_at_ = -1;
-  long logged_through_ = -1;
-  long long logged_version_ = -1;
   RoadmapLayer roadmap_layer_;
   RedrawThrottle throttle_;
 };

@@ -17,10 +17,10 @@
 #include "app/js_api.hpp"
 #include "app/lesson.hpp"
 #include "app/panel.hpp"
-#include "app/planner_lesson.hpp"
 #include "app/planner_session.hpp"
 #include "app/prm_controls.hpp"
-#include "app/prm_text.hpp"
+#include "core/planner_json.hpp"
+#include "core/prm_text.hpp"
 #include "app/scene_editor.hpp"
 #include "app/surface_view.hpp"
 #include "app/theme.hpp"
@@ -40,31 +40,20 @@ const ImU32 kCObstacle = theme::rgba(96, 96, 104, 210);
 
 enum class Exercise { None, Around, Shrink };
 
-class TorusLesson : public PlannerLesson {
+class TorusLesson : public Lesson {
  public:
   TorusLesson() : scene_(bundled_scene("arm-2link")), session_(scene_, params_) {
     q_ = pose_beside_markers();
     rebuild_map();
   }
 
-  void on_show() override { logged_version_ = -1; }
+  void on_show() override { session_.forget_log(); }
 
   void update(LabContext& ctx) override {
     const int due = ctx.playback.due(static_cast<double>(ImGui::GetIO().DeltaTime));
     for (int i = 0; i < due && !prm().done() && !session_.busy(); ++i) session_.step_forward();
     if (prm().done()) ctx.playback.playing = false;
-    if (logged_version_ != session_.version()) {
-      const Prm& p = prm();
-      const bool same_planner = (logged_version_ >> 32) == (session_.version() >> 32);
-      if (!same_planner || p.steps() == 0 || p.steps() < logged_ || p.steps() > logged_ + 1) {
-        ctx.log.clear();  // as the step-prm lesson does: where the planner stands, then each step
-        ctx.log.add(0, p.steps() == 0 ? std::string("ready: press Step or Play to grow a roadmap on the torus")
-                                      : "at step " + std::to_string(p.steps()) + " (" + phase_name(p.phase()) + ")");
-      }
-      if (p.steps() > 0) ctx.log.add(p.steps(), describe(p.last_event(), p, session_.planned_scene()));
-      logged_ = p.steps();
-      logged_version_ = session_.version();
-    }
+    session_.log_steps(ctx.log, "ready: press Step or Play to grow a roadmap on the torus");
     // The arm walks along the found path, or along the exercise's loop, again and again.
     const double dt = static_cast<double>(ImGui::GetIO().DeltaTime);
     if (animate_ && (prm().solved() || exercise_ != Exercise::None)) {
@@ -94,7 +83,7 @@ class TorusLesson : public PlannerLesson {
 
     if (panel::fold("PRM on the torus")) {
       if (prm_controls(params_, world(), ctx, 5000)) rebuild(0);
-      const int parts = session_.prm().components();
+      const int parts = prm().components();
       ui::text_flow(ui::format("|V| = %zu  |E| = %ld (%d across a seam), %d component%s", prm().roadmap().vertices.size(),
                                prm().edges_alive(), seam_edges(), parts, parts == 1 ? "" : "s"));
       if (prm().solved()) ImGui::TextColored(ImVec4(0.0f, 0.45f, 0.3f, 1.0f), "path found, length %.3f rad", prm().path_length());
@@ -173,10 +162,6 @@ class TorusLesson : public PlannerLesson {
   bool redo() override { return editor_.redo(scene_) && (rebuild(session_.wanted_steps()), true); }
 
   json state(const json& args) const override {
-    const Prm& planner = prm();
-    const Roadmap& r = planner.roadmap();
-    json path = json::array();
-    for (int v : planner.path()) path.push_back(config_to_json(r.vertices[static_cast<std::size_t>(v)]));
     json out{{"q", config_to_json(q_)},
              {"q_free", world().is_free(q_)},
              {"start", config_to_json(scene_.start)},
@@ -187,20 +172,12 @@ class TorusLesson : public PlannerLesson {
              {"view", right_view_ == 0 ? "square" : right_view_ == 1 ? "torus" : "both"},
              {"exercise", exercise_ == Exercise::None ? "none" : exercise_ == Exercise::Around ? "around" : "shrink"},
              {"workspace_caption", workspace_caption() ? json(workspace_caption()) : json(nullptr)},
-             {"prm",
-              {{"params", prm_params_json(params_)},
-               {"phase", phase_name(planner.phase())},
-               {"steps", planner.steps()},
-               {"nodes", r.vertices.size()},
-               {"edges", planner.edges_alive()},
-               {"seam_crossing_edges", seam_edges()},
-               {"solved", planner.solved()},
-               {"replay_pending", replay_pending()},
-               {"planner_builds", session_.builds()},
-               {"running", running_json(session_)},
-               {"path", path},
-               {"path_length", planner.solved() ? json(planner.path_length()) : json(nullptr)},
-               {"roadmap_hash", roadmap_hash_text(r)}}}};
+             {"prm", planner_state_json(prm(), false)}};
+    out["prm"]["params"] = prm_params_json(params_);
+    out["prm"]["seam_crossing_edges"] = seam_edges();
+    out["prm"]["replay_pending"] = replay_pending();
+    out["prm"]["planner_builds"] = session_.builds();
+    out["prm"]["running"] = running_json(session_);
     for (const AngleInterval& i : map_->link1_blocked()) out["link1_blocked"].push_back({i.lo, i.hi});
     if (args.contains("blocked_at")) {
       // The map's answer at given configurations: [[theta1, theta2], ...] -> [bool, ...].
@@ -258,12 +235,11 @@ class TorusLesson : public PlannerLesson {
     return p;
   }
 
- protected:
-  PlannerSession& planner() override { return session_; }
-  const PlannerSession& planner() const override { return session_; }
+ public:
+  Stepper* stepper() override { return &session_; }
 
  private:
-  const Prm& prm() const { return session_.prm(); }
+  const Prm& prm() const { return session_.shown_as<Prm>(); }
   const CollisionWorld& world() const { return session_.world(); }
 
   // After any change of the scene or the parameters: the planner (replayed to `steps`) and the
@@ -272,7 +248,7 @@ class TorusLesson : public PlannerLesson {
     keep_within_budget(params_, robot_space(scene_.robot, scene_.workspace_min, scene_.workspace_max));
     session_.rebuild(scene_, params_, steps);
     rebuild_map();
-    logged_version_ = -1;
+    session_.forget_log();
   }
 
   void rebuild_map() {
@@ -497,7 +473,7 @@ class TorusLesson : public PlannerLesson {
 
   void refresh_labels() {
     if (labels_at_ == session_.version()) return;
-    labels_ = session_.prm().component_labels();
+    labels_ = prm().component_labels();
     labels_at_ = session_.version();
   }
 
@@ -558,8 +534,6 @@ class TorusLesson : public PlannerLesson {
   RedrawThrottle throttle_;
   std::vector<int> labels_;
   long long labels_at_ = -1;
-  long logged_ = -1;
-  long long logged_version_ = -1;
   Config q_;
   std::optional<Config> ghost_;
   std::deque<Config> trail_;

@@ -19,25 +19,24 @@ double now_ms() {
 }
 }  // namespace
 
-PlannerSession::PlannerSession(const Scene& scene, const PrmParams& params) : params_(params) {
+PlannerSession::PlannerSession(const Scene& scene, PlannerFactory make) : make_(std::move(make)) {
   world_ = std::make_shared<const CollisionWorld>(scene);
-  shown_ = make_run(world_, scene, params);
+  shown_ = make_run(world_, scene);
 }
 
-PlannerSession::Run PlannerSession::make_run(std::shared_ptr<const CollisionWorld> world, const Scene& scene,
-                                             const PrmParams& params) {
+PlannerSession::Run PlannerSession::make_run(std::shared_ptr<const CollisionWorld> world, const Scene& scene) {
   Run run;
-  run.prm = std::make_unique<Prm>(*world, scene.start, scene.goal, params);
+  run.planner = make_(*world, scene.start, scene.goal);
   run.world = std::move(world);
   run.scene = scene;
   run.id = ++builds_;
   return run;
 }
 
-void PlannerSession::rebuild(const Scene& scene, const PrmParams& params, long steps) {
-  params_ = params;
+void PlannerSession::rebuild(const Scene& scene, PlannerFactory make, long steps) {
+  make_ = std::move(make);
   world_ = std::make_shared<const CollisionWorld>(scene);
-  next_ = make_run(world_, scene, params);
+  next_ = make_run(world_, scene);
   desired_ = steps == kToEnd ? desired_ : steps;
   start(Job::Replay, steps);
   keep_on_cancel_ = true;  // the planner from before belongs to another scene or other parameters
@@ -55,7 +54,7 @@ void PlannerSession::edited(const Scene& scene, bool dragging) {
     }
     return;
   }
-  if (!dragging || replay_is_live(prm())) return rebuild(scene, params_, wanted_steps());
+  if (!dragging || replay_is_live(shown())) return rebuild(scene, make_, wanted_steps());
   // (A drag keeps the step the student asked for: wanted_steps() is not where the planner of
   // some frame of the drag ended.)
   if (next_) {  // a replay for a scene the drag has left behind
@@ -66,52 +65,53 @@ void PlannerSession::edited(const Scene& scene, bool dragging) {
 }
 
 void PlannerSession::step_forward() {
-  cancel();
-  if (!prm().done()) prm().step();
-  desired_ = prm().steps();
+  cancel_work();
+  if (!shown().done()) shown_.planner->step();
+  desired_ = shown().steps();
 }
 
 void PlannerSession::step_back() {
-  if (job_ == Job::Forward || job_ == Job::Phase) cancel();
-  go_to(wanted_steps() - 1);
+  if (wanted_steps() <= 0) return;
+  if (job_ == Job::Forward || job_ == Job::Phase) cancel_work();
+  run_to(wanted_steps() - 1);
 }
 
-void PlannerSession::go_to(long steps) {
+void PlannerSession::run_to(long steps) {
   steps = std::max(0L, steps);
   desired_ = steps;
-  if (next_ && (rebuilding() || steps < prm().steps())) {
+  if (next_ && (rebuilding() || steps < shown().steps())) {
     // A replay is running (for a new scene, or back in this one) and still the way there: it
     // heads for this step instead, from the start again only if it is already past it (a step
     // back pressed again keeps the replay's progress).
-    if (steps < next_->prm->steps()) next_ = make_run(next_->world, next_->scene, params_);
+    if (steps < next_->planner->steps()) next_ = make_run(next_->world, next_->scene);
     target_ = steps;
-    from_ = next_->prm->steps();
+    from_ = next_->planner->steps();
     return work(kRequestSliceMs);
   }
-  if (steps >= prm().steps()) {
+  if (steps >= shown().steps()) {
     start(Job::Forward, steps);
   } else {
     // Back: a replay from the start in a second planner; this one stays on screen meanwhile.
-    next_ = make_run(shown_.world, shown_.scene, params_);
+    next_ = make_run(shown_.world, shown_.scene);
     start(Job::Replay, steps);
   }
   work(kRequestSliceMs);
 }
 
-void PlannerSession::run_to_end() {
+void PlannerSession::run_all() {
   start(Job::Forward, kToEnd);
   work(kRequestSliceMs);
 }
 
 void PlannerSession::finish_phase() {
   start(Job::Phase, 0);
-  phase_ = prm().phase();
+  phase_ = shown().phase_label();
   work(kRequestSliceMs);
 }
 
 void PlannerSession::reset() {
-  cancel();
-  prm().reset();
+  cancel_work();
+  shown_.planner->reset();
   desired_ = 0;
 }
 
@@ -131,7 +131,7 @@ void PlannerSession::start(Job job, long target) {
 long PlannerSession::target() const {
   if (job_ == Job::Forward || job_ == Job::Replay) return target_;
   if (job_ == Job::Phase) return kToEnd;
-  return prm().steps();
+  return shown().steps();
 }
 
 long PlannerSession::wanted_steps() const {
@@ -141,34 +141,23 @@ long PlannerSession::wanted_steps() const {
 
 double PlannerSession::progress() const {
   if (!busy()) return 1.0;
-  const Prm& p = worked();
+  const Planner& p = worked();
   if ((job_ == Job::Forward || job_ == Job::Replay) && target_ != kToEnd) {
     const double span = static_cast<double>(target_ - from_);
     return span > 0 ? std::clamp(static_cast<double>(p.steps() - from_) / span, 0.0, 1.0) : 1.0;
   }
-  // To the end (or a phase's end): by where the planner is in its phases; the connecting phase,
-  // by the vertex it connects, takes most of the time.
-  const double vertices = std::max<double>(1.0, static_cast<double>(p.roadmap().vertices.size()));
-  switch (p.phase()) {
-    case PrmPhase::Endpoints:
-      return 0.0;
-    case PrmPhase::Sampling:
-      return 0.02 + 0.18 * p.samples_drawn() / std::max(1, p.params().samples);
-    case PrmPhase::Connecting:
-      return 0.2 + 0.77 * std::max(0, p.connecting_vertex()) / vertices;
-    default:
-      return 0.97;
-  }
+  // To the end (or a phase's end): the planner's own estimate.
+  return p.progress();
 }
 
-std::string PlannerSession::job_text() const {
+std::string PlannerSession::busy_text() const {
   switch (job_) {
     case Job::Replay:
       return target_ == kToEnd ? "replaying to the end" : "replaying to step " + std::to_string(target_);
     case Job::Forward:
       return target_ == kToEnd ? "running to the end" : "running to step " + std::to_string(target_);
     case Job::Phase:
-      return std::string("finishing the ") + phase_name(phase_) + " phase";
+      return "finishing the " + phase_ + " phase";
     case Job::None:
       break;
   }
@@ -176,14 +165,14 @@ std::string PlannerSession::job_text() const {
 }
 
 bool PlannerSession::job_done() const {
-  const Prm& p = worked();
+  const Planner& p = worked();
   if (p.done()) return true;
   switch (job_) {
     case Job::Forward:
     case Job::Replay:
       return target_ != kToEnd && p.steps() >= target_;
     case Job::Phase:
-      return p.phase() != phase_;
+      return p.phase_label() != phase_;
     case Job::None:
       break;
   }
@@ -197,7 +186,7 @@ void PlannerSession::finish_job() {
   }
   // A run to the end or to a phase's end asked for wherever it ended; a run to a step (or a
   // replay) for that step, even where the planner ended before it.
-  if (job_ == Job::Phase || target_ == kToEnd) desired_ = prm().steps();
+  if (job_ == Job::Phase || target_ == kToEnd) desired_ = shown().steps();
   job_ = Job::None;
 }
 
@@ -206,9 +195,9 @@ void PlannerSession::work(double ms) {
   if (!std::isfinite(ms)) {
     // All of it, at once (the API): the planner's own bulk paths, whose state is the one stepping
     // leaves (Prm::finish_phase()).
-    Prm& p = worked();
+    Planner& p = worked();
     if (job_ == Job::Phase) {
-      if (p.phase() == phase_) p.finish_phase();
+      if (p.phase_label() == phase_) p.finish_phase();
     } else if (target_ == kToEnd) {
       p.run();
     } else {
@@ -227,13 +216,13 @@ void PlannerSession::work(double ms) {
   const double start = now_ms();
   while (!job_done()) {
     if (now_ms() - start >= ms) return;
-    Prm& p = worked();
+    Planner& p = worked();
     for (int i = 0; i < steps_per_look && !job_done(); ++i) p.step();
   }
   finish_job();
 }
 
-void PlannerSession::cancel() {
+void PlannerSession::cancel_work() {
   if (job_ == Job::None) return;
   if (job_ == Job::Replay && next_) {
     if (keep_on_cancel_) shown_ = std::move(*next_);
@@ -241,8 +230,22 @@ void PlannerSession::cancel() {
   }
   // Stopped here: this is where the student is now (a step back's replay left the planner where
   // it was).
-  desired_ = prm().steps();
+  desired_ = shown().steps();
   job_ = Job::None;
+}
+
+void PlannerSession::log_steps(EventLog& log, const std::string& ready) {
+  if (logged_version_ == version()) return;
+  const Planner& p = shown();
+  const bool same_planner = (logged_version_ >> 32) == (version() >> 32);
+  if (!same_planner || logged_steps_ < 0 || p.steps() == 0 || p.steps() < logged_steps_ ||
+      p.steps() > logged_steps_ + 1) {
+    log.clear();
+    log.add(0, p.steps() == 0 ? ready : "at step " + std::to_string(p.steps()) + " (" + p.phase_label() + ")");
+  }
+  if (p.steps() > 0) log.add(p.steps(), p.describe(p.last_event(), shown_.scene));
+  logged_steps_ = p.steps();
+  logged_version_ = version();
 }
 
 nlohmann::json running_json(const PlannerSession& session) {
@@ -250,11 +253,11 @@ nlohmann::json running_json(const PlannerSession& session) {
   const long target = session.target();
   return {{"target", target == PlannerSession::kToEnd ? nlohmann::json(nullptr) : nlohmann::json(target)},
           {"progress", session.progress()},
-          {"text", session.job_text()}};
+          {"text", session.busy_text()}};
 }
 
 std::string replaying_text(const PlannerSession& session) {
-  return "the roadmap from before: " + session.job_text() + ", " +
+  return "the roadmap from before: " + session.busy_text() + ", " +
          std::to_string(static_cast<int>(100.0 * session.progress())) + "% (Esc cancels)";
 }
 

@@ -2,6 +2,7 @@
 #include <chrono>
 
 #include "cli/commands.hpp"
+#include "core/planner_json.hpp"
 #include "core/potential_connector.hpp"
 
 namespace csl::cli {
@@ -36,42 +37,24 @@ int run_plan(Args& args, std::ostream& os) {
   if (connector == "potential") params.connector = std::make_shared<const PotentialConnector>();
   require_work_budget(world, options, params);
   Prm prm(world, scene.start, scene.goal, params);
+  Planner& planner = prm;
 
   const auto t0 = std::chrono::steady_clock::now();
-  while (!prm.done() && prm.phase() != PrmPhase::Query) prm.step();
+  while (!planner.done() && prm.phase() != PrmPhase::Query) planner.step();
   const double build = seconds_since(t0);
   const auto t1 = std::chrono::steady_clock::now();
-  prm.run();
+  planner.run();
   const double query = seconds_since(t1);
 
-  const Roadmap& r = prm.roadmap();
-  json path_json = json::array();
-  for (const Config& q : prm.path_configurations()) path_json.push_back(config_to_json(q));
-  json out{{"solved", prm.solved()},
-           {"path", path_json},
-           {"path_length", prm.solved() ? json(prm.path_length()) : json(nullptr)},
-           {"nodes", r.vertices.size()},
-           {"edges", prm.edges_alive()},
-           {"components", prm.components()},
-           {"edge_checks", prm.edge_checks()},
-           {"evaluations", prm.evaluations()},
-           {"build_seconds", build},
-           {"query_seconds", query},
-           {"samples", params.samples},
-           {"neighbors", params.neighbors.name()},
-           {"checker", params.checker.name()},
-           {"connector", connector},
-           {"seed", params.seed},
-           {"steps", prm.steps()},
-           {"roadmap_hash", roadmap_hash_text(r)}};
-  if (roadmap_out) {
-    json vertices = json::array(), edges = json::array();
-    for (const Config& q : r.vertices) vertices.push_back(config_to_json(q));
-    for (const RoadmapEdge& e : r.edges)
-      if (e.alive) edges.push_back(json::array({e.a, e.b}));
-    out["vertices"] = vertices;
-    out["edge_list"] = edges;
-  }
+  // The planner's state as the lab reports it (core/planner_json.hpp), and how this run went.
+  json out = planner_state_json(planner, roadmap_out);
+  out["build_seconds"] = build;
+  out["query_seconds"] = query;
+  out["samples"] = params.samples;
+  out["neighbors"] = params.neighbors.name();
+  out["checker"] = params.checker.name();
+  out["connector"] = connector;
+  out["seed"] = params.seed;
   print_json(os, out);
   return 0;
 }
@@ -102,7 +85,9 @@ const Command kPlanCommand{
     "  (evaluations: configurations the collision checker tested; with grid:N or step:D a roadmap\n"
     "  edge skips those its endpoints' clearances prove free, which changes no verdict),\n"
     "  \"samples\", \"neighbors\", \"checker\", \"connector\", \"seed\",\n"
-    "  \"steps\": the planner's step count, \"roadmap_hash\": 16 hex digits (FNV-1a of V and E)}\n"
+    "  \"steps\": the planner's step count, \"roadmap_hash\": 16 hex digits (FNV-1a of V and E),\n"
+    "  \"phase\": \"done\", \"done\": true, \"samples_drawn\": int (accepted and rejected),\n"
+    "  \"last_event\": \"path_found\" or \"no_path\"} (the fields the lab's state() reports)\n"
     "With --roadmap also \"vertices\": [Q, ...] and \"edge_list\": [[a, b], ...] (indices into\n"
     "vertices; 0 is the start, 1 the goal).\n"
     "A start or goal in collision is an error (exit status 2) naming the obstacle.\n"

@@ -6,11 +6,9 @@
 #include <string>
 
 #include "core/rng.hpp"
+#include "core/space.hpp"  // unit_ball_volume
 
 namespace csl {
-
-/// mu(B_1): volume of the unit ball in R^d, pi^(d/2) / Gamma(d/2 + 1) (d >= 1).
-double unit_ball_volume(int d);
 
 /// The path-tiling bound of section 2.1. A free path of length L with clearance r is tiled by
 /// m = ceil(L / (r/2)) balls of radius r/2; PRM fails only if some ball gets no sample, so

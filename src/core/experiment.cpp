@@ -187,15 +187,22 @@ void Experiment::step() {
     return;
   }
   ExperimentRow& row = rows_[next_row_];
-  PrmParams p;
-  p.samples = row.samples;
-  p.neighbors = params_.neighbors;
-  p.checker = params_.checker;
-  p.seed = trial_seed(next_row_, next_trial_);
-  Prm prm(*world_, start_, goal_, p);
-  prm.run();
+  const std::uint64_t seed = trial_seed(next_row_, next_trial_);
+  PlannerFactory make;
+  if (params_.planner) {
+    make = params_.planner(row.samples, seed);
+  } else {
+    PrmParams p;
+    p.samples = row.samples;
+    p.neighbors = params_.neighbors;
+    p.checker = params_.checker;
+    p.seed = seed;
+    make = prm_factory(p);
+  }
+  const std::unique_ptr<Planner> planner = make(*world_, start_, goal_);
+  planner->run();
   ++row.trials;
-  row.failures += !prm.solved();
+  row.failures += !planner->solved();
   row.failure_rate = wilson_interval(row.failures, row.trials);
   if (++next_trial_ == params_.trials) {
     next_trial_ = 0;

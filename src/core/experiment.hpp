@@ -9,9 +9,11 @@
 // the robot's Lipschitz constant K (robot.hpp), which makes it a true lower bound up to that
 // sampling.
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "core/analysis.hpp"
+#include "core/planner.hpp"
 #include "core/prm.hpp"
 
 namespace csl {
@@ -28,6 +30,10 @@ struct ExperimentParams {
   EdgeCheckerSpec checker;
   int reference_samples = 0;     ///< 0: max(2000, 4 x the largest n)
   long volume_samples = 100000;  ///< Monte Carlo samples for mu(F)
+  /// The planner under test, for a trial with n samples and its seed; null: PRM with
+  /// `neighbors` and `checker`. (The reference run that measures L and r is always PRM's: it
+  /// measures the scene, not the planner.)
+  std::function<PlannerFactory(int samples, std::uint64_t seed)> planner;
 };
 
 struct ExperimentReference {

@@ -1,6 +1,6 @@
 #include "core/prm.hpp"
 
-#include "core/analysis.hpp"
+#include "core/prm_text.hpp"
 #include "core/text.hpp"
 
 #include <algorithm>
@@ -103,13 +103,6 @@ const char* phase_name(PrmPhase p) {
   return kNames[static_cast<int>(p)];
 }
 
-const char* event_kind_name(PrmEvent::Kind k) {
-  static const char* const kNames[] = {"add_endpoint", "endpoint_in_collision", "sample_accepted", "sample_rejected",
-                                       "neighbors",    "edge_added",            "edge_rejected",   "path_edge_removed",
-                                       "path_found",   "no_path"};
-  return kNames[static_cast<int>(k)];
-}
-
 std::uint64_t pair_seed(std::uint64_t seed, int a, int b) {
   // splitmix64's finaliser over the seed and the pair packed into one word.
   std::uint64_t z = seed + 0x9E3779B97F4A7C15ull * (1u + ((static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
@@ -157,10 +150,6 @@ void Prm::reset() {
   edge_checks_ = evaluations_ = edges_alive_ = 0;
 }
 
-void Prm::run() {
-  while (!done()) finish_phase();
-}
-
 void Prm::finish_phase() {
   if (done()) return;
   const PrmPhase phase = phase_;
@@ -187,11 +176,6 @@ void Prm::finish_phase() {
     }
   }
   while (!done() && phase_ == phase) step();
-}
-
-void Prm::run_to(long steps) {
-  if (steps < steps_) reset();
-  while (steps_ < steps && !done()) step();
 }
 
 const PrmEvent& Prm::step() {
@@ -503,7 +487,7 @@ void Prm::query() {
   phase_ = PrmPhase::Done;
 }
 
-std::vector<int> Prm::component_labels() {
+std::vector<int> Prm::component_labels() const {
   std::vector<int> label(roadmap_.vertices.size(), -1), by_root(roadmap_.vertices.size(), -1);
   int next = 0;
   for (std::size_t v = 0; v < label.size(); ++v) {
@@ -512,6 +496,30 @@ std::vector<int> Prm::component_labels() {
     label[v] = by_root[root];
   }
   return label;
+}
+
+std::string Prm::describe(const PlannerEvent& e, const Scene& scene) const { return describe_prm_event(e, *this, scene); }
+
+double Prm::progress() const {
+  if (done()) return 1.0;
+  // By phase; the connecting phase, by the vertex it connects, takes most of the time.
+  const double vertices = std::max<double>(1.0, static_cast<double>(roadmap_.vertices.size()));
+  switch (phase_) {
+    case PrmPhase::Endpoints:
+      return 0.0;
+    case PrmPhase::Sampling:
+      return 0.02 + 0.18 * samples_drawn_ / std::max(1, params_.samples);
+    case PrmPhase::Connecting:
+      return 0.2 + 0.77 * std::max(0, p_) / vertices;
+    default:
+      return 0.97;
+  }
+}
+
+PlannerFactory prm_factory(PrmParams params) {
+  return [params](const CollisionWorld& world, const Config& start, const Config& goal) {
+    return std::make_unique<Prm>(world, start, goal, params);
+  };
 }
 
 }  // namespace csl

@@ -21,6 +21,7 @@
 #include "core/local_connector.hpp"
 #include "core/nearest.hpp"
 #include "core/nearest_grid.hpp"
+#include "core/planner.hpp"
 #include "core/roadmap.hpp"
 
 namespace csl {
@@ -71,83 +72,54 @@ std::uint64_t pair_seed(std::uint64_t seed, int a, int b);
 enum class PrmPhase { Endpoints, Sampling, Connecting, Query, Done };
 const char* phase_name(PrmPhase p);
 
-/// What one step did.
-struct PrmEvent {
-  enum class Kind {
-    AddEndpoint,          ///< vertex (0 = q_init, 1 = q_final) added
-    EndpointInCollision,  ///< q_init or q_final is not free: no path; obstacle = which
-    SampleAccepted,       ///< sample (1..n) q is free: became `vertex`
-    SampleRejected,       ///< sample q is in collision with `obstacle`
-    Neighbors,            ///< `vertex` is being connected: `candidates` new pairs to check
-    EdgeAdded,            ///< (vertex, other) proven free and added to E
-    EdgeRejected,         ///< (vertex, other) in collision at collision_t (NaN: the local
-                          ///< connector found no path)
-    PathEdgeRemoved,      ///< an edge of the found path failed the exact re-check: removed
-                          ///< (collision_t: on the failing straight piece of the edge)
-    PathFound,            ///< q_init and q_final connected: path_length
-    NoPath,               ///< not connected: PRM declares no path
-  };
-  Kind kind = Kind::AddEndpoint;
-  long step = 0;      ///< 1-based number of this step
-  int sample = -1;    ///< 1..n for sample events
-  int vertex = -1;
-  int other = -1;
-  Config q;           ///< the sample or endpoint
-  int obstacle = -1;  ///< the obstacle hit (rejected sample, endpoint in collision)
-  int candidates = 0;
-  int seen = 0;         ///< Neighbors: close pairs left out, checked already from the other vertex
-  int evaluations = 0;  ///< configurations the edge check (or the connector) evaluated
-  int skipped = 0;      ///< grid checkers: configurations the endpoints' clearances prove free, untested
-  double collision_t = std::numeric_limits<double>::quiet_NaN();
-  double path_length = 0.0;
-};
-const char* event_kind_name(PrmEvent::Kind k);
+/// PRM's events are the planners' (core/planner.hpp).
+using PrmEvent = PlannerEvent;
 
-class Prm {
+class Prm final : public Planner {
  public:
   /// The world must outlive the planner (it is referenced, not copied).
   Prm(const CollisionWorld& world, Config start, Config goal, PrmParams params);
   Prm(CollisionWorld&&, Config, Config, PrmParams) = delete;
 
-  bool done() const { return phase_ == PrmPhase::Done; }
+  const char* name() const override { return "prm"; }
+  bool done() const override { return phase_ == PrmPhase::Done; }
   /// One step (see the file comment); the event stays valid until the next step.
-  const PrmEvent& step();
-  /// Steps to the end (phase by phase, see finish_phase()).
-  void run();
+  const PrmEvent& step() override;
   /// Steps to the end of the current phase: the state and step count of step() repeated until
   /// the phase changes (or done()), and last_event() that of its last step, but the steps before
   /// the last build no events (roadmaps of many thousands of samples: the CLI, experiments).
-  void finish_phase();
+  void finish_phase() override;
   /// Back to the state before step 1.
-  void reset();
-  /// To the state after `steps` steps (replaying from the start if that is behind us).
-  void run_to(long steps);
+  void reset() override;
 
-  long steps() const { return steps_; }
+  long steps() const override { return steps_; }
   PrmPhase phase() const { return phase_; }
+  const char* phase_label() const override { return phase_name(phase_); }
   const PrmParams& params() const { return params_; }
-  const CollisionWorld& world() const { return *world_; }
-  const Roadmap& roadmap() const { return roadmap_; }
-  const PrmEvent& last_event() const { return event_; }
+  const CollisionWorld& world() const override { return *world_; }
+  const Roadmap& roadmap() const override { return roadmap_; }
+  const PrmEvent& last_event() const override { return event_; }
+  double progress() const override;
+  std::string describe(const PlannerEvent& e, const Scene& scene) const override;
 
-  bool solved() const { return !path_.empty(); }
+  bool solved() const override { return !path_.empty(); }
   /// Vertex indices from q_init to q_final (empty unless solved()).
-  const std::vector<int>& path() const { return path_; }
+  const std::vector<int>& path() const override { return path_; }
   /// The roadmap edges of the path, in order from q_init (empty unless solved()).
   const std::vector<int>& path_edges() const { return path_edges_; }
   /// The path as configurations: its vertices with each edge's waypoints in between, in order
   /// from q_init to q_final (the straight pieces between consecutive ones are all free).
-  std::vector<Config> path_configurations() const;
-  double path_length() const { return path_length_; }
+  std::vector<Config> path_configurations() const override;
+  double path_length() const override { return path_length_; }
   /// Number of connected components of (V, E).
-  int components() { return components_.sets(); }
+  int components() const override { return components_.sets(); }
   /// A dense component number per vertex, ordered by each component's smallest vertex.
-  std::vector<int> component_labels();
-  long edge_checks() const { return edge_checks_; }
-  long evaluations() const { return evaluations_; }
-  long edges_alive() const { return edges_alive_; }
+  std::vector<int> component_labels() const;
+  long edge_checks() const override { return edge_checks_; }
+  long evaluations() const override { return evaluations_; }
+  long edges_alive() const override { return edges_alive_; }
   /// Samples drawn so far (accepted + rejected).
-  int samples_drawn() const { return samples_drawn_; }
+  int samples_drawn() const override { return samples_drawn_; }
   /// The vertex being connected and its candidate neighbours (Connecting phase).
   int connecting_vertex() const { return p_; }
   const std::vector<Neighbor>& candidates() const { return candidates_; }
@@ -184,7 +156,7 @@ class Prm {
   PrmEvent event_;
   long steps_ = 0;
   Roadmap roadmap_;
-  UnionFind components_;
+  mutable UnionFind components_;  // find() compresses paths: a cache, not state
   int samples_drawn_ = 0;
   int k_ = 0;                     // neighbours per vertex for the k rules
   std::vector<NearNeighbor> knn_;  // the k_ nearest of every vertex (flat; index -1 pads short rows)
@@ -200,5 +172,8 @@ class Prm {
   double path_length_ = 0.0;
   long edge_checks_ = 0, evaluations_ = 0, edges_alive_ = 0;
 };
+
+/// Makes Prm planners with `params`.
+PlannerFactory prm_factory(PrmParams params);
 
 }  // namespace csl

@@ -7,6 +7,14 @@
 
 namespace csl {
 
+double unit_ball_volume(int d) {
+  if (d < 1) throw std::invalid_argument("unit_ball_volume: d >= 1");
+  // V_d = 2 pi / d * V_{d-2}, with V_0 = 1 and V_1 = 2: exact recurrences, no Gamma function.
+  double v = d % 2 == 0 ? 1.0 : 2.0;
+  for (int k = d % 2 == 0 ? 2 : 3; k <= d; k += 2) v *= kTwoPi / k;
+  return v;
+}
+
 Space Space::box(const std::vector<double>& lo, const std::vector<double>& hi) {
   if (lo.size() != hi.size() || lo.empty() || lo.size() > static_cast<std::size_t>(kMaxDim))
     throw std::invalid_argument("Space::box: bounds of equal size 1.." + std::to_string(kMaxDim) + " needed");

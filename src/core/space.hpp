@@ -16,6 +16,10 @@
 
 namespace csl {
 
+/// mu(B_1): volume of the unit ball in R^d, pi^(d/2) / Gamma(d/2 + 1) (d >= 1). (The bounds of
+/// core/analysis.hpp and PRM's neighbour budgets both measure balls against a space's volume.)
+double unit_ball_volume(int d);
+
 struct Coordinate {
   bool angular = false;  ///< S^1 (wraps at +-pi) or an interval of R
   double lo = 0.0;       ///< bounds of a linear coordinate (angular: -pi)

@@ -1,8 +1,10 @@
-#include "app/prm_text.hpp"
+#include "core/prm_text.hpp"
+
+#include "core/prm.hpp"
 
 #include <cstdio>
 
-namespace csl::app {
+namespace csl {
 namespace {
 
 // What an edge check cost: its evaluations, and for the grid checkers in a roadmap, which test
@@ -54,7 +56,7 @@ std::string obstacle_label(const Scene& scene, int index) {
   return type + " " + std::to_string(index + 1);
 }
 
-std::string describe(const PrmEvent& e, const Prm& prm, const Scene& scene) {
+std::string describe_prm_event(const PlannerEvent& e, const Prm& prm, const Scene& scene) {
   char buf[256];
   const std::string q = format_config(e.q);
   switch (e.kind) {
@@ -100,4 +102,4 @@ std::string describe(const PrmEvent& e, const Prm& prm, const Scene& scene) {
   return buf;
 }
 
-}  // namespace csl::app
+}  // namespace csl
