@@ -17,43 +17,83 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 }  // namespace
 
-void NeighborIndex::build(const std::vector<Config>& points) {
+NeighborIndex::NeighborIndex(const Space& space) : space_(space) {
   dim_ = static_cast<std::size_t>(space_.dim());
-  count_ = points.size();
   plain_ = torus_ = true;
   for (int a = 0; a < space_.dim(); ++a) {
     plain_ = plain_ && !space_.coordinate(a).angular && space_.coordinate(a).weight == 1.0;
     torus_ = torus_ && space_.coordinate(a).angular && space_.coordinate(a).weight == 1.0;
   }
+}
+
+void NeighborIndex::build(const std::vector<Config>& points) {
+  count_ = points.size();
   ids_.resize(count_);
   std::iota(ids_.begin(), ids_.end(), 0);
-  // Coordinates in input order while building; reordered into leaf order at the end.
+  // Coordinates in input order here; build_tree() reorders them into leaf order.
   pts_.resize(count_ * dim_);
   for (std::size_t i = 0; i < count_; ++i)
     for (std::size_t a = 0; a < dim_; ++a) pts_[i * dim_ + a] = points[i][static_cast<Eigen::Index>(a)];
+  trees_.clear();
   nodes_.clear();
   box_.clear();
   nodes_.reserve(2 * count_ / kLeafSize + 2);
   box_.reserve(nodes_.capacity() * 2 * dim_);
-  if (count_ > 0) {
-    std::vector<double> cell(2 * dim_);
-    for (std::size_t a = 0; a < dim_; ++a) {
-      const Coordinate& c = space_.coordinate(static_cast<int>(a));
-      cell[a] = c.lo;
-      cell[dim_ + a] = c.hi;
-    }
-    build_node(0, static_cast<int>(count_), cell);
-  }
-  std::vector<double> ordered(count_ * dim_);
-  for (std::size_t i = 0; i < count_; ++i)
-    std::copy_n(&pts_[static_cast<std::size_t>(ids_[i]) * dim_], dim_, &ordered[i * dim_]);
-  pts_.swap(ordered);
+  buffer_begin_ = 0;
+  build_tree(0);
 }
 
-int NeighborIndex::build_node(int begin, int end, std::vector<double>& cell) {
+int NeighborIndex::insert(const Config& q) {
+  const int index = static_cast<int>(count_);
+  for (std::size_t a = 0; a < dim_; ++a) pts_.push_back(q[static_cast<Eigen::Index>(a)]);
+  ids_.push_back(index);
+  ++count_;
+  if (static_cast<int>(count_) - buffer_begin_ < kBufferSize) return index;
+  // The full buffer becomes a tree with the trees behind it that are less than twice what is
+  // merged so far: then each tree is at least twice the one behind it (O(log n) trees), and a
+  // point that is rebuilt lands in a tree at least 1.5 times its old one (O(log n) rebuilds).
+  // The trees behind are the last built, so their points and nodes are the arrays' tails.
+  int begin = buffer_begin_;
+  while (!trees_.empty() && begin - trees_.back().begin < 2 * (static_cast<int>(count_) - begin)) {
+    begin = trees_.back().begin;
+    nodes_.resize(static_cast<std::size_t>(trees_.back().root));
+    box_.resize(nodes_.size() * 2 * dim_);
+    trees_.pop_back();
+  }
+  build_tree(begin);
+  return index;
+}
+
+void NeighborIndex::build_tree(int begin) {
+  buffer_begin_ = static_cast<int>(count_);
+  if (begin == buffer_begin_) return;
+  trees_.push_back({begin, static_cast<int>(nodes_.size())});
+  // perm: the positions in leaf order once built (nth_element permutes it, the points stay).
+  std::vector<int> perm(count_ - static_cast<std::size_t>(begin));
+  std::iota(perm.begin(), perm.end(), begin);
+  std::vector<double> cell(2 * dim_);
+  for (std::size_t a = 0; a < dim_; ++a) {
+    const Coordinate& c = space_.coordinate(static_cast<int>(a));
+    cell[a] = c.lo;
+    cell[dim_ + a] = c.hi;
+  }
+  build_node(begin, static_cast<int>(count_), cell, perm, begin);
+  // The points and their indices into leaf order.
+  std::vector<double> ordered(perm.size() * dim_);
+  std::vector<int> ids(perm.size());
+  for (std::size_t i = 0; i < perm.size(); ++i) {
+    std::copy_n(&pts_[static_cast<std::size_t>(perm[i]) * dim_], dim_, &ordered[i * dim_]);
+    ids[i] = ids_[static_cast<std::size_t>(perm[i])];
+  }
+  std::copy(ordered.begin(), ordered.end(), pts_.begin() + static_cast<std::ptrdiff_t>(begin * dim_));
+  std::copy(ids.begin(), ids.end(), ids_.begin() + begin);
+}
+
+int NeighborIndex::build_node(int begin, int end, std::vector<double>& cell, std::vector<int>& perm, int first) {
   // `cell` holds the region this node splits (dim_ lows, dim_ highs): its widest side, in
   // metric units, is the split axis. The node's tight bounding box, used for pruning, is built
-  // bottom up from its children's, so building costs O(n log n).
+  // bottom up from its children's, so building costs O(n log n). perm[i - first]: the position
+  // (in pts_) of the point that goes to position i; positions break ties between equal keys.
   const int id = static_cast<int>(nodes_.size());
   nodes_.emplace_back();
   box_.resize(box_.size() + 2 * dim_);
@@ -72,17 +112,18 @@ int NeighborIndex::build_node(int begin, int end, std::vector<double>& cell) {
     }
     const int mid = begin + (end - begin) / 2;
     const auto key = [&](int idx) { return pts_[static_cast<std::size_t>(idx) * dim_ + axis]; };
-    std::nth_element(ids_.begin() + begin, ids_.begin() + mid, ids_.begin() + end,
+    const auto at = [&](int i) { return perm.begin() + (i - first); };
+    std::nth_element(at(begin), at(mid), at(end),
                      [&](int x, int y) { return key(x) < key(y) || (key(x) == key(y) && x < y); });
-    const double split = key(ids_[static_cast<std::size_t>(mid)]);
+    const double split = key(*at(mid));
     node.axis = static_cast<int>(axis);
     node.split = split;
     const double saved_hi = cell[dim_ + axis], saved_lo = cell[axis];
     cell[dim_ + axis] = split;
-    node.left = build_node(begin, mid, cell);
+    node.left = build_node(begin, mid, cell, perm, first);
     cell[dim_ + axis] = saved_hi;
     cell[axis] = split;
-    node.right = build_node(mid, end, cell);
+    node.right = build_node(mid, end, cell, perm, first);
     cell[axis] = saved_lo;
     double* box = &box_[static_cast<std::size_t>(id) * 2 * dim_];
     const double* l = &box_[static_cast<std::size_t>(node.left) * 2 * dim_];
@@ -97,7 +138,7 @@ int NeighborIndex::build_node(int begin, int end, std::vector<double>& cell) {
     std::fill(lo, lo + dim_, kInf);
     std::fill(hi, hi + dim_, -kInf);
     for (int i = begin; i < end; ++i) {
-      const double* p = &pts_[static_cast<std::size_t>(ids_[static_cast<std::size_t>(i)]) * dim_];
+      const double* p = &pts_[static_cast<std::size_t>(perm[static_cast<std::size_t>(i - first)]) * dim_];
       for (std::size_t a = 0; a < dim_; ++a) {
         lo[a] = std::min(lo[a], p[a]);
         hi[a] = std::max(hi[a], p[a]);
@@ -188,22 +229,29 @@ void NeighborIndex::search(int node, const double* q, Visit& visit) const {
   if (box_bound<kMetric, kDim>(far, q) <= visit.bound() * kPruneSafety) search<kMetric, kDim>(far, q, visit);
 }
 
+// Every tree, the largest first (its near points bound the smaller trees' searches soonest),
+// then the buffer, all into the one visitor: its best-so-far list (or its list within r) is
+// the merge, so the answer is brute force's whichever part holds each point.
 template <class Visit>
 void NeighborIndex::search(const double* q, Visit& visit) const {
-  if (nodes_.empty()) return;
-  if (plain_ && dim_ == 2)
-    search<1, 2>(0, q, visit);
-  else if (plain_)
-    search<1, 0>(0, q, visit);
-  else if (torus_ && dim_ == 2)
-    search<2, 2>(0, q, visit);
-  else
-    search<0, 0>(0, q, visit);
+  for (const Tree& tree : trees_) {
+    if (plain_ && dim_ == 2)
+      search<1, 2>(tree.root, q, visit);
+    else if (plain_)
+      search<1, 0>(tree.root, q, visit);
+    else if (torus_ && dim_ == 2)
+      search<2, 2>(tree.root, q, visit);
+    else
+      search<0, 0>(tree.root, q, visit);
+  }
+  // Computed as brute force computes them, so equal distances tie alike.
+  for (std::size_t i = static_cast<std::size_t>(buffer_begin_); i < count_; ++i)
+    visit(ids_[i], space_.squared_distance(q, point(static_cast<int>(i))));
 }
 
 void NeighborIndex::k_nearest(const Config& q, int k, int exclude, std::vector<Neighbor>& out) const {
   out.clear();
-  if (k <= 0 || nodes_.empty()) return;
+  if (k <= 0 || count_ == 0) return;
   out.resize(static_cast<std::size_t>(k));  // the best so far, in out's storage
   KBest visitor{out.data(), static_cast<std::size_t>(k), exclude};
   search(q.data(), visitor);
@@ -212,7 +260,7 @@ void NeighborIndex::k_nearest(const Config& q, int k, int exclude, std::vector<N
 
 void NeighborIndex::within(const Config& q, double r, int exclude, std::vector<Neighbor>& out) const {
   out.clear();
-  if (nodes_.empty()) return;
+  if (count_ == 0) return;
   struct Visitor {
     std::vector<Neighbor>& found;
     double r2;
