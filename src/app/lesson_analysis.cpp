@@ -25,6 +25,7 @@
 #include "app/draw.hpp"
 #include "app/js_api.hpp"
 #include "app/lesson.hpp"
+#include "app/param_widgets.hpp"
 #include "app/panel.hpp"
 #include "app/plot.hpp"
 #include "app/scene_editor.hpp"
@@ -217,16 +218,15 @@ class AnalysisLesson : public Lesson, private Stepper {
       else if (k == "clearance") clearance = positive(v, "clearance");
       else if (k == "free_volume") volume = positive(v, "free_volume");
       else if (k == "sample_counts") {
-        if (!v.is_array() || v.empty() || v.size() > 20) throw ApiError("sample_counts: 1 to 20 integers");
+        if (!v.is_array() || v.empty() || v.size() > kLabMaxSampleCounts)
+          throw ApiError("sample_counts: 1 to " + std::to_string(kLabMaxSampleCounts) + " integers");
         counts.clear();
         for (const json& n : v) {
-          if (!n.is_number_integer() || n.get<long long>() < 0 || n.get<long long>() > 20000)
-            throw ApiError("sample_counts: integers in [0, 20000]");
-          counts.push_back(n.get<int>());
+          api_param(kExperimentSamples, n);  // the CLI's range, then the lab's budget
+          counts.push_back(static_cast<int>(api_param(kLabExperimentSamples, n)));
         }
       } else if (k == "trials") {
-        if (!v.is_number_integer() || v.get<int>() < 1 || v.get<int>() > 1000) throw ApiError("trials: 1..1000");
-        trials = v.get<int>();
+        trials = static_cast<int>(api_param(kLabExperimentTrials, v));
       } else if (k == "tab") {
         if (v != "bound" && v != "visibility" && v != "tiling")
           throw ApiError("tab: \"bound\", \"tiling\" or \"visibility\"");
@@ -243,12 +243,10 @@ class AnalysisLesson : public Lesson, private Stepper {
         if (!v.is_number()) throw ApiError("gap: a number in [0, 1]");
         gap = v.get<double>();
       } else if (k == "mc_seed") {
-        if (!v.is_number_unsigned() || v.get<std::uint64_t>() > 9007199254740991ull) throw ApiError("mc_seed: 0..2^53-1");
-        mc_seed = v.get<std::uint64_t>();
+        mc_seed = static_cast<std::uint64_t>(api_param(kMcSeed, v));
       } else if (k == "mc_trials") {
-        if (!v.is_number_integer() || v.get<long long>() < 1 || v.get<long long>() > 1000000)
-          throw ApiError("mc_trials: 1..1000000");
-        mc = v.get<long long>();
+        api_param(kVisibilityTrials, v);  // the CLI's range, then the lab's budget
+        mc = static_cast<long long>(api_param(kLabVisibilityTrials, v));
       } else if (k == "run") run = v.is_boolean() && v.get<bool>();
       else if (k == "cancel") cancel = v.is_boolean() && v.get<bool>();
       else throw ApiError("unknown parameter \"" + k + "\"");
@@ -461,7 +459,7 @@ class AnalysisLesson : public Lesson, private Stepper {
   void experiment_section(LabContext& ctx) {
     ImGui::PushItemWidth(-110);
     ImGui::InputText("n values", counts_text_, sizeof counts_text_);
-    ImGui::SliderInt("runs per n", &trials_, 1, 200);
+    param_slider(kLabExperimentTrials, "runs per n", trials_, 1, 200);  // the API takes more
     ImGui::PopItemWidth();
     const bool running = experiment_ && !experiment_->done();
     if (!running && ImGui::Button("Run experiment")) {
@@ -472,11 +470,12 @@ class AnalysisLesson : public Lesson, private Stepper {
       while (std::getline(in, item, ',')) {
         char* end = nullptr;
         const long n = std::strtol(item.c_str(), &end, 10);
-        if (end == item.c_str() || n < 0 || n > 20000) ok = false;
+        if (end == item.c_str() || !in_range(kLabExperimentSamples, static_cast<double>(n))) ok = false;
         else counts.push_back(static_cast<int>(n));
       }
-      if (!ok || counts.empty() || counts.size() > 20) {
-        ctx.notify("n values: up to 20 integers in [0, 20000], separated by commas");
+      if (!ok || counts.empty() || counts.size() > static_cast<std::size_t>(kLabMaxSampleCounts)) {
+        ctx.notify("n values: up to " + std::to_string(kLabMaxSampleCounts) + " values, each " +
+                   range_text(kLabExperimentSamples) + ", separated by commas");
       } else if (const std::string problem = experiment_problem(counts, trials_); !problem.empty()) {
         ctx.notify(problem, 10);
       } else {
@@ -702,11 +701,7 @@ class AnalysisLesson : public Lesson, private Stepper {
       p9_gap_ = static_cast<double>(gap);
       sample_p9();
     }
-    int trials = static_cast<int>(mc_trials_);
-    if (ImGui::SliderInt("samples", &trials, 100, 100000, "%d", ImGuiSliderFlags_Logarithmic)) {
-      mc_trials_ = trials;
-      sample_p9();
-    }
+    if (param_slider(kLabVisibilityTrials, "samples", mc_trials_, 100, 100000)) sample_p9();
     ImGui::PopItemWidth();
     ImGui::Text("(x1, y1) = (%.3f, %.3f), d = %.3f", p9_x_, p9_y_, p9_gap_);
     const ImVec4 key = key_colour();
@@ -840,12 +835,12 @@ class AnalysisLesson : public Lesson, private Stepper {
   double measured_length_ = 0, measured_clearance_ = 0, measured_volume_ = 0;
   std::vector<int> sample_counts_ = {20, 50, 100, 200, 500, 1000};
   char counts_text_[128] = "20,50,100,200,500,1000";
-  int trials_ = 30;
+  int trials_ = static_cast<int>(kLabExperimentTrials.def);
   std::unique_ptr<Experiment> experiment_;
   int tab_ = 0;
   double target_ = 0.01;  // the failure probability P8's and the path's n are solved for
   double p9_x_ = 0.25, p9_y_ = 0.3, p9_gap_ = 0.1;
-  long long mc_trials_ = 20000;
+  long long mc_trials_ = static_cast<long long>(kLabVisibilityTrials.def);
   // The default view's draw lands inside its 95% interval (z = 1.5; seed 9's missed it at
   // z = 3.4, which looked like an error on first sight): the e2e test checks it.
   std::uint64_t p9_seed_ = 1;

@@ -16,6 +16,7 @@
 #include "app/fonts.hpp"
 #include "app/js_api.hpp"
 #include "app/lesson.hpp"
+#include "app/param_widgets.hpp"
 #include "app/panel.hpp"
 #include "app/scene_editor.hpp"
 #include "app/theme.hpp"
@@ -112,7 +113,7 @@ class CollisionLesson : public Lesson, private Stepper {
     ImGui::PushItemWidth(-60.0f);
     // At most what one frame may check in this scene (200 unless it is very dense).
     const int most = std::max(2, std::min(200, static_cast<int>(kLabFrameWork / world_->evaluation_cost())));
-    if (ImGui::SliderInt("N", &grid_n_, 2, most, "%d", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) recompute();
+    if (param_slider(kTracedGridN, "N", grid_n_, 2, most, ImGuiSliderFlags_AlwaysClamp)) recompute();
     ImGui::PopItemWidth();
     if (grid_.collision)
       ImGui::TextColored(ImVec4(0.0f, 0.45f, 0.3f, 1.0f), "N = %d finds the collision at t = %.4f", grid_n_, *grid_.collision_t);
@@ -206,9 +207,7 @@ class CollisionLesson : public Lesson, private Stepper {
     Config p = scene_.start, q = scene_.goal;
     for (auto it = j.begin(); it != j.end(); ++it) {
       if (it.key() == "grid_n") {
-        if (!it->is_number_integer() || it->get<int>() < 2 || it->get<int>() > 100000)
-          throw ApiError("grid_n: an integer in [2, 100000]");
-        n = it->get<int>();
+        n = static_cast<int>(api_param(kTracedGridN, *it));
         if (const std::string problem = grid_problem(n, *world_); !problem.empty()) throw ApiError(problem);
       } else if (it.key() == "p" || it.key() == "q") {
         if (!it->is_array() || it->size() != 2 || !(*it)[0].is_number() || !(*it)[1].is_number())
@@ -589,7 +588,7 @@ class CollisionLesson : public Lesson, private Stepper {
   SceneEditor editor_;
   WorkspaceView view_;
   std::unique_ptr<CollisionWorld> world_;
-  int grid_n_ = 4;
+  int grid_n_ = static_cast<int>(kTracedGridN.def);
   EdgeCheckResult grid_, bisection_;
   std::optional<int> min_grid_;
   bool min_grid_exhausted_ = false;

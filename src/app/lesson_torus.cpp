@@ -82,7 +82,7 @@ class TorusLesson : public Lesson {
     ImGui::RadioButton("both", &right_view_, 2);
 
     if (panel::fold("PRM on the torus")) {
-      if (prm_controls(params_, world(), ctx, 5000)) rebuild(0);
+      if (prm_controls(params_, world(), ctx, kLabTorusSamples)) rebuild(0);
       const int parts = prm().components();
       ui::text_flow(ui::format("|V| = %zu  |E| = %ld (%d across a seam), %d component%s", prm().roadmap().vertices.size(),
                                prm().edges_alive(), seam_edges(), parts, parts == 1 ? "" : "s"));
@@ -215,7 +215,7 @@ class TorusLesson : public Lesson {
         throw ApiError("unknown parameter \"" + k + "\"");
       }
     }
-    const PrmParams p = prm_params_from_json(prm_part, params_, world(), 5000);
+    const PrmParams p = prm_params_from_json(prm_part, params_, world(), kLabTorusSamples);
     right_view_ = view;
     if (q) {
       q_ = world().space().wrap(*q);

@@ -7,19 +7,22 @@
 #include <stdexcept>
 
 #include "app/js_api.hpp"
+#include "app/param_widgets.hpp"
 #include "imgui.h"
 
 namespace csl::app {
 
 namespace {
-constexpr double kMinStep = 0.001;  // the D slider's least: finer steps only cost time
-
+// The sliders' practical ranges, within the specs' (a link or the API may set more, within the
+// budgets below): k up to 50, N up to 200, D up to 0.5.
 constexpr int kSliderMaxK = 50;
+constexpr int kSliderMaxGridN = 200;
+constexpr double kSliderMaxStep = 0.5;
 
 // The pairs budget. A radius rule is held to it by its r (r = max_radius() itself passes, or a
 // clamped r would be clamped again each frame); k up to the slider's 50 passes at any n (50 with
-// 20000 samples is a hair over 1e6), more only where n is small enough (k = 1000 and 20000
-// samples, 2e7 pairs, ran the wasm out of memory; a link could ask for it).
+// kLabMaxSamples, 20000, is a hair over 1e6), more only where n is small enough (k = 1000 and
+// 20000 samples, 2e7 pairs, ran the wasm out of memory; a link could ask for it).
 bool over_pairs_budget(const PrmParams& p, const Space& space) {
   if (p.neighbors.kind == NeighborRule::Kind::Nearest && p.neighbors.k <= kSliderMaxK) return false;
   return !within_pairs_budget(space, p.neighbors, p.samples, kLabMaxPairs);
@@ -79,13 +82,12 @@ std::string scene_budget_problem(PrmParams params, const Scene& scene) {
   return why.empty() ? why : "with these parameters this scene is too much for the lab: " + why;
 }
 
-bool prm_controls(PrmParams& p, const CollisionWorld& world, LabContext& ctx, int max_samples) {
+bool prm_controls(PrmParams& p, const CollisionWorld& world, LabContext& ctx, const ParamSpec& samples) {
   const Space& space = world.space();
   const PrmParams before = p;
   bool changed = false;
   ImGui::PushItemWidth(-90.0f);
-  changed |= ImGui::SliderInt("samples n", &p.samples, 0, max_samples, "%d", ImGuiSliderFlags_Logarithmic);
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("how many configurations to draw (only free ones are kept)");
+  changed |= param_slider(samples, "samples n", p.samples, static_cast<int>(samples.min), static_cast<int>(samples.max));
 
   int rule = static_cast<int>(p.neighbors.kind);
   const char* rules[] = {"k nearest", "within radius r", "PRM*: k(n)"};
@@ -94,7 +96,7 @@ bool prm_controls(PrmParams& p, const CollisionWorld& world, LabContext& ctx, in
     changed = true;
   }
   if (p.neighbors.kind == NeighborRule::Kind::Nearest)
-    changed |= ImGui::SliderInt("k", &p.neighbors.k, 1, kSliderMaxK);
+    changed |= param_slider(kNeighborK, "k", p.neighbors.k, static_cast<int>(kNeighborK.min), kSliderMaxK);
   if (p.neighbors.kind == NeighborRule::Kind::Radius) {
     // The slider ends where the pairs budget does; a float rounded up must not pass it.
     // (A workspace so small that the float is 0 still gets a slider with a positive range.)
@@ -127,20 +129,12 @@ bool prm_controls(PrmParams& p, const CollisionWorld& world, LabContext& ctx, in
     changed = true;
   }
   if (p.checker.kind == EdgeCheckerSpec::Kind::Grid)
-    changed |= ImGui::SliderInt("N", &p.checker.resolution, 2, 200, "%d", ImGuiSliderFlags_Logarithmic);
-  if (p.checker.kind == EdgeCheckerSpec::Kind::Step) {
-    float d = static_cast<float>(p.checker.step);
-    if (ImGui::SliderFloat("D", &d, static_cast<float>(kMinStep), 0.5f, "%.4f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) {
-      p.checker.step = static_cast<double>(d);
-      changed = true;
-    }
-  }
-
-  int seed = static_cast<int>(p.seed);
-  if (ImGui::InputInt("seed", &seed)) {
-    p.seed = static_cast<std::uint64_t>(std::max(seed, 0));
-    changed = true;
-  }
+    changed |= param_slider(kCheckerGridN, "N", p.checker.resolution, static_cast<int>(kCheckerGridN.min),
+                            kSliderMaxGridN);
+  if (p.checker.kind == EdgeCheckerSpec::Kind::Step)
+    changed |= param_slider(kLabCheckerStepD, "D", p.checker.step, kLabCheckerStepD.min, kSliderMaxStep, "%.4f",
+                            ImGuiSliderFlags_AlwaysClamp);
+  changed |= param_input(kSeed, "seed", p.seed);
   ImGui::PopItemWidth();
   p.checker.resolution = std::max(p.checker.resolution, 2);
   changed |= keep_within_budget(p, space);  // more samples may have made r too large
@@ -159,25 +153,28 @@ nlohmann::json prm_params_json(const PrmParams& p) {
   return {{"samples", p.samples}, {"neighbors", p.neighbors.name()}, {"checker", p.checker.name()}, {"seed", p.seed}};
 }
 
-PrmParams prm_params_from_json(const nlohmann::json& j, PrmParams p, const CollisionWorld& world, int max_samples) {
+PrmParams prm_params_from_json(const nlohmann::json& j, PrmParams p, const CollisionWorld& world,
+                               const ParamSpec& samples) {
   if (!j.is_object()) throw ApiError("params must be an object");
   for (auto it = j.begin(); it != j.end(); ++it) {
     const std::string& key = it.key();
     const nlohmann::json& v = it.value();
     try {
       if (key == "samples") {
-        if (!v.is_number_integer() || v.get<long long>() < 0 || v.get<long long>() > max_samples)
-          throw ApiError("samples: an integer in [0, " + std::to_string(max_samples) + "]");
-        p.samples = v.get<int>();
+        api_param(kPrmSamples, v);                               // the contract (the CLI's too)...
+        p.samples = static_cast<int>(api_param(samples, v));  // ...and the lesson's budget
       } else if (key == "neighbors") {
         if (!v.is_string()) throw ApiError("neighbors: \"k:K\", \"radius:R\" or \"prm*\"");
         p.neighbors = NeighborRule::parse(v.get<std::string>());
       } else if (key == "checker") {
         if (!v.is_string()) throw ApiError("checker: \"bisection\", \"grid:N\" or \"step:D\"");
         p.checker = EdgeCheckerSpec::parse(v.get<std::string>());
-        if (p.checker.kind == EdgeCheckerSpec::Kind::Step && p.checker.step < kMinStep)
-          throw ApiError("checker: D must be at least 0.001 in the lab");
+        if (p.checker.kind == EdgeCheckerSpec::Kind::Step && !in_range(kLabCheckerStepD, p.checker.step))
+          throw ApiError("checker: D must be at least " + param_value_text(kLabCheckerStepD, kLabCheckerStepD.min) +
+                         " in the lab");
       } else if (key == "seed") {
+        // Wider than kSeed (any 64-bit integer >= 0): the API took these before the spec, and a
+        // contract is not narrowed. Past 2^53 a seed does not survive JavaScript's numbers.
         if (!v.is_number_integer() || v.get<long long>() < 0) throw ApiError("seed: an integer >= 0");
         p.seed = v.get<std::uint64_t>();
       } else {

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "app/context.hpp"
+#include "core/params.hpp"
 #include "core/prm.hpp"
 #include "core/scene.hpp"
 #include "core/work.hpp"
@@ -29,14 +30,17 @@ std::string prm_budget_problem(const PrmParams& params, const CollisionWorld& wo
 std::string scene_budget_problem(PrmParams params, const Scene& scene);
 
 /// Draws the controls for planning in `world`; returns true if `params` changed. A change past
-/// the lab's budgets is undone, and the notice says why.
-bool prm_controls(PrmParams& params, const CollisionWorld& world, LabContext& ctx, int max_samples = 20000);
+/// the lab's budgets is undone, and the notice says why. `samples`: the lesson's budget for n
+/// (kLabPrmSamples, or the torus's kLabTorusSamples).
+bool prm_controls(PrmParams& params, const CollisionWorld& world, LabContext& ctx,
+                  const ParamSpec& samples = kLabPrmSamples);
 
 nlohmann::json prm_params_json(const PrmParams& params);
 /// Applies {"samples", "neighbors", "checker", "seed"} (any subset) to a copy of `params` and
 /// returns it; throws ApiError naming the bad field, so nothing changes on bad input. Refuses
-/// what the panel cannot set either: prm_budget_problem(), a step D under 0.001.
+/// what the panel cannot set either: `samples`' budget, prm_budget_problem(), a D under
+/// kLabCheckerStepD's least.
 PrmParams prm_params_from_json(const nlohmann::json& j, PrmParams params, const CollisionWorld& world,
-                               int max_samples = 20000);
+                               const ParamSpec& samples = kLabPrmSamples);
 
 }  // namespace csl::app

@@ -1,5 +1,7 @@
 #include "cli/args.hpp"
 
+#include <algorithm>
+
 #include "core/text.hpp"
 
 namespace csl::cli {
@@ -74,6 +76,34 @@ long long parse_count(const std::string& text, const std::string& what, long lon
     throw UsageError(what + ": '" + printable(text, 60) + "' is not an integer in [" + std::to_string(min) + ", " +
                      std::to_string(max) + "]");
   return *v;
+}
+
+double parse_param(const std::string& text, const ParamSpec& spec) {
+  const std::string what = std::string("--") + spec.flag;
+  if (spec.integer) {
+    const auto v = parse_integer(text);
+    if (!v || !in_range(spec, static_cast<double>(*v)))
+      throw UsageError(what + ": '" + printable(text, 60) + "' is not " + range_text(spec));
+    return static_cast<double>(*v);
+  }
+  const double v = parse_number(text, what);
+  if (!in_range(spec, v)) throw UsageError(what + ": '" + printable(text, 60) + "' is not " + range_text(spec));
+  return v;
+}
+
+double take_param(Args& args, const ParamSpec& spec) {
+  const auto text = args.take(spec.flag);
+  return text ? parse_param(*text, spec) : spec.def;
+}
+
+std::string option_help(const ParamSpec& spec, const std::string& metavar, bool shows_default) {
+  std::string head = "  --" + std::string(spec.flag) + " " + metavar;
+  head.resize(std::max<std::size_t>(head.size() + 2, 25), ' ');
+  std::string range = range_text(spec);
+  if (shows_default) range += ", default " + param_value_text(spec, spec.def);
+  // Within the help's 95 columns: the range under the help when both do not fit on one line.
+  if (head.size() + std::string(spec.help).size() + 2 + range.size() <= 95) return head + spec.help + ": " + range + "\n";
+  return head + spec.help + ":\n" + std::string(head.size(), ' ') + range + "\n";
 }
 
 std::vector<double> parse_numbers(const std::string& text, const std::string& what) {

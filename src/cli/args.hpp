@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "core/params.hpp"
+
 namespace csl::cli {
 
 /// Bad command line or bad input: printed as one line on stderr, exit status 2.
@@ -35,6 +37,15 @@ class Args {
 double parse_number(const std::string& text, const std::string& what);
 /// An integer in [min, max], or UsageError naming `what` and that range.
 long long parse_count(const std::string& text, const std::string& what, long long max, long long min = 0);
+/// A value of `spec` given as --FLAG's text: "--trials: '0' is not an integer in [1, 100000]"
+/// otherwise (the spec's range, as its API error says it).
+double parse_param(const std::string& text, const ParamSpec& spec);
+/// The value of --FLAG if given, else the spec's default.
+double take_param(Args& args, const ParamSpec& spec);
+/// A --help line for the spec's option, from its help, range and default:
+/// "  --trials T          PRM runs for each n: an integer in [1, 100000], default 20".
+/// `shows_default` off where the default is not a number ("max(2000, ...)": said in the help).
+std::string option_help(const ParamSpec& spec, const std::string& metavar, bool shows_default = true);
 /// Comma-separated finite numbers ("0.5,-1,2"), or UsageError naming `what`.
 std::vector<double> parse_numbers(const std::string& text, const std::string& what);
 

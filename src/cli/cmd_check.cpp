@@ -30,7 +30,7 @@ int run_check(Args& args, std::ostream& os) {
 
   if (min_grid) {
     if (checker_text || trace) throw UsageError("--min-grid takes neither --checker nor --trace");
-    const int max_n = static_cast<int>(parse_count(max_text.value_or("1000"), "--max", 100000, 2));
+    const int max_n = static_cast<int>(max_text ? parse_param(*max_text, kMinGridMax) : kMinGridMax.def);
     const auto limit = static_cast<long long>(std::min(1e15, max_work / world.evaluation_cost()));
     const MinGridResult r = min_grid_search(world, p, q, max_n, std::max(2LL, limit));
     if (r.exhausted)
@@ -48,10 +48,12 @@ int run_check(Args& args, std::ostream& os) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--checker: ") + e.what());
   }
-  if (spec.kind == EdgeCheckerSpec::Kind::Grid && trace && spec.resolution > 100000)
-    throw UsageError("--trace: at most grid:100000 (the trace would be too long)");
-  if (spec.kind == EdgeCheckerSpec::Kind::Step && trace && world.space().distance(p, q) / spec.step > 100000)
-    throw UsageError("--trace: at most 100000 configurations (the trace would be too long)");
+  // The collision lesson's grid_n lists its configurations too: one limit for both traces.
+  const std::string most = param_value_text(kTracedGridN, kTracedGridN.max);
+  if (spec.kind == EdgeCheckerSpec::Kind::Grid && trace && spec.resolution > kTracedGridN.max)
+    throw UsageError("--trace: at most grid:" + most + " (the trace would be too long)");
+  if (spec.kind == EdgeCheckerSpec::Kind::Step && trace && world.space().distance(p, q) / spec.step > kTracedGridN.max)
+    throw UsageError("--trace: at most " + most + " configurations (the trace would be too long)");
 
   if (const double work = expected_check_work(world, spec, p, q); work > max_work)
     throw UsageError("--checker " + spec.name() + ": this edge means about " + work_text(work) +
@@ -69,8 +71,9 @@ int run_check(Args& args, std::ostream& os) {
 const Command kCheckCommand{
     "check", "check one straight-line edge (grid:N, step:D or bisection), or the minimum grid N",
     "Usage: cspacelab check SCENE.json [--from Q] [--to Q] [--checker bisection|grid:N|step:D] [--trace]\n"
-    "       cspacelab check SCENE.json [--from Q] [--to Q] --min-grid [--max N]\n"
-    "       (either form also takes --max-work W)\n\n"
+    "       cspacelab check SCENE.json [--from Q] [--to Q] --min-grid [--max M]\n"
+    "       (either form also takes --max-work W)\n\n" +
+    option_help(kMinGridMax, "M") + "\n"
     "Checks the straight line from --from to --to in configuration space (default: the\n"
     "scene's start and goal; angles take the shorter way round). Q is comma-separated numbers:\n"
     "x,y (point robot), theta1,theta2 (arm2, radians; an N-link arm: N angles), x,y,theta\n"
@@ -101,7 +104,7 @@ const Command kCheckCommand{
     "    least 16 configurations), that could not be proven free (the edge grazes an obstacle or\n"
     "    runs along one): a collision\n\n"
     "With --min-grid: {\"min_grid\": N|null, \"max\": M, \"evaluations\": E}, the smallest N in\n"
-    "[2, M] (default M = 1000, at most 100000) for which grid:N finds the collision; null at once\n"
+    "[2, M] for which grid:N finds the collision; null at once\n"
     "when the exact (bisection) check proves the edge free. Grids are tried N = 2, 3, ..., but a\n"
     "configuration is only tested where those tested so far do not prove it free (their\n"
     "clearances' balls cover it): the answer of testing every grid in full, from about one\n"

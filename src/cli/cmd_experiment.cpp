@@ -77,12 +77,11 @@ int run_experiment(Args& args, std::ostream& os) {
   require_free(world, scene.goal, "the goal");
   ExperimentParams params;
   for (double n : parse_numbers(*list, "--samples-list")) {
-    if (n < 0 || n > kMaxPrmSamples || n != static_cast<double>(static_cast<long>(n)))
-      throw UsageError("--samples-list: sample counts are integers in [0, 1000000]");
+    if (!in_range(kExperimentSamples, n)) throw UsageError("--samples-list: each n is " + range_text(kExperimentSamples));
     params.sample_counts.push_back(static_cast<int>(n));
   }
-  params.trials = static_cast<int>(parse_count(trials.value_or("20"), "--trials", 100000, 1));
-  if (reference) params.reference_samples = static_cast<int>(parse_count(*reference, "--reference-samples", kMaxPrmSamples));
+  params.trials = static_cast<int>(trials ? parse_param(*trials, kExperimentTrials) : kExperimentTrials.def);
+  if (reference) params.reference_samples = static_cast<int>(parse_param(*reference, kReferenceSamples));
   params.seed = options.seed;
   params.neighbors = options.neighbors;
   params.checker = options.checker;
@@ -142,8 +141,10 @@ const Command kExperimentCommand{
     "Usage: cspacelab experiment SCENE.json --samples-list N1,N2,... [--trials T]\n"
     "                            [--k K | --radius R | --prm-star] [--checker C] [--seed S]\n"
     "                            [--reference-samples M] [--max-pairs P] [--max-total-pairs P]\n"
-    "                            [--max-work W] [--max-total-work W]\n\n"
-    "Runs PRM T times (default 20, each with its own seed derived from S) for each n, and counts\n"
+    "                            [--max-work W] [--max-total-work W]\n\n" +
+    option_help(kExperimentSamples, "N1,...", false) + option_help(kExperimentTrials, "T") +
+    option_help(kReferenceSamples, "M") + option_help(kNeighborK, "K") + option_help(kSeed, "S") +
+    "\nRuns PRM T times (each with its own seed derived from S) for each n, and counts\n"
     "failures: start and goal not connected. Whether a path exists at all, and its length L and\n"
     "clearance r for the bound of section 2.1, come from a reference run with M samples (default,\n"
     "or M = 0: max(2000, 4 x the largest n), at most 1000000): its roadmap's widest path (the\n"

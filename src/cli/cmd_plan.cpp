@@ -29,7 +29,7 @@ int run_plan(Args& args, std::ostream& os) {
   require_free(world, scene.start, "the start");
   require_free(world, scene.goal, "the goal");
   PrmParams params;
-  params.samples = static_cast<int>(parse_count(samples.value_or("200"), "--samples", kMaxPrmSamples));
+  params.samples = static_cast<int>(samples ? parse_param(*samples, kPrmSamples) : kPrmSamples.def);
   require_pairs_budget(world.space(), options, params.samples);
   params.neighbors = options.neighbors;
   params.checker = options.checker;
@@ -65,13 +65,14 @@ const Command kPlanCommand{
     "plan", "plan from start to goal with the probabilistic roadmap method",
     "Usage: cspacelab plan SCENE.json [--samples N] [--k K | --radius R | --prm-star]\n"
     "                      [--checker bisection|grid:N|step:D] [--seed S] [--roadmap]\n"
-    "                      [--connector straight|potential] [--max-pairs P] [--max-work W]\n\n"
-    "Runs PRM as the homework states it: add start and goal to V; draw N samples (default 200)\n"
+    "                      [--connector straight|potential] [--max-pairs P] [--max-work W]\n\n" +
+    option_help(kPrmSamples, "N") + option_help(kNeighborK, "K") + option_help(kSeed, "S") +
+    "\nRuns PRM as the homework states it: add start and goal to V; draw N samples\n"
     "uniformly in the configuration space and keep the free ones; for each vertex, check the\n"
-    "straight line to each close vertex (the K nearest, default 10; all within distance R; or\n"
+    "straight line to each close vertex (the K nearest; all within distance R; or\n"
     "PRM*'s k(n) = ceil(e (1 + 1/d) ln n)) with the chosen checker (default bisection, exact);\n"
     "then search the graph (A*). The path's edges are re-checked exactly; an edge that fails is\n"
-    "removed and the search repeated. The same scene, options and seed (default 1) give the\n"
+    "removed and the search repeated. The same scene, options and seed give the\n"
     "same roadmap on every machine and in the browser.\n"
     "--connector potential joins close vertices by gradient descent on the potential field\n"
     "toward the other vertex instead of the straight line (homework section 2.4; see\n"

@@ -28,8 +28,8 @@ int run_visibility(Args& args, std::ostream& os) {
   };
   const double x1 = parse_number(need(x, "x"), "--x"), y1 = parse_number(need(y, "y"), "--y");
   const double d = parse_number(need(gap, "gap"), "--gap");
-  const long long t = parse_count(trials.value_or("100000"), "--trials", 100000000);
-  Rng rng(static_cast<std::uint64_t>(parse_count(seed.value_or("1"), "--seed", 9007199254740991LL)));
+  const auto t = static_cast<long long>(trials ? parse_param(*trials, kVisibilityTrials) : kVisibilityTrials.def);
+  Rng rng(static_cast<std::uint64_t>(seed ? parse_param(*seed, kSeed) : kSeed.def));
   try {
     const double exact = visibility_probability(x1, y1, d);
     const nlohmann::json cases = breakdown_json(p9_breakdown(x1, y1, d));
@@ -56,11 +56,12 @@ int run_visibility(Args& args, std::ostream& os) {
 
 const Command kVisibilityCommand{
     "visibility", "P9: probability that a random configuration is visible through the gap",
-    "Usage: cspacelab visibility --x X --y Y --gap d [--trials T] [--seed S]\n\n"
+    "Usage: cspacelab visibility --x X --y Y --gap d [--trials T] [--seed S]\n\n" +
+    option_help(kVisibilityTrials, "T") + option_help(kSeed, "S") + "\n"
     "Q = [0,1]^2 with a wall of zero thickness at x = 1/2 and an opening of height d centred at\n"
     "y = 1/2. From (X, Y), X < 1/2, the whole left half is visible, and of the right half the\n"
     "part inside the cone through the opening (clipped to the square, whichever edges it meets).\n"
-    "  -> {\"exact\": p, \"monte_carlo\": p^ from T uniform samples (default 100000, seed 1),\n"
+    "  -> {\"exact\": p, \"monte_carlo\": p^ from T uniform samples,\n"
     "      \"trials\": T, \"ci_low\", \"ci_high\": its 95% Wilson interval, \"within_ci\": bool}\n"
     "With --trials 0 the exact value alone: the Monte Carlo fields are null.\n"
     "  \"breakdown\": the exact value by cases, {\"case\": \"<upper exit>/<lower exit>\", \"upper\",\n"

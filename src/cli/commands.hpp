@@ -16,7 +16,8 @@ namespace csl::cli {
 struct Command {
   const char* name;
   const char* summary;  ///< one line for `cspacelab --help`
-  const char* usage;    ///< full help for `cspacelab help NAME` / `cspacelab NAME --help`
+  std::string usage;    ///< full help for `cspacelab help NAME` / `cspacelab NAME --help` (option_help() lines for
+                        ///< the options of core/params.hpp: built once, at start)
   int (*run)(Args& args, std::ostream& os);  ///< prints JSON on os (stdout); throws UsageError for bad input
 };
 

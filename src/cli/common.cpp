@@ -83,8 +83,7 @@ PlannerOptions take_planner_options(Args& args) {
     if (!(o.max_pairs >= 1.0)) throw UsageError("--max-pairs: must be at least 1");
   }
   if (const auto max_work = args.take("max-work")) o.max_work = parse_max_work(*max_work, "--max-work");
-  if (const auto seed = args.take("seed"))
-    o.seed = static_cast<std::uint64_t>(parse_count(*seed, "--seed", 9007199254740991LL));  // 2^53 - 1: exact in JSON
+  o.seed = static_cast<std::uint64_t>(take_param(args, kSeed));
   return o;
 }
 

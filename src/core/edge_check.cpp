@@ -7,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "core/params.hpp"
 #include "core/text.hpp"
 
 namespace csl {
@@ -17,14 +18,13 @@ EdgeCheckerSpec EdgeCheckerSpec::parse(const std::string& text) {
   if (text == "bisection") return {Kind::Bisection, 0};
   if (text.rfind("grid:", 0) == 0) {
     const auto n = parse_integer(std::string_view(text).substr(5));
-    if (n && *n >= 2 && *n <= kMaxGridResolution) return {Kind::Grid, static_cast<int>(*n)};
-    throw std::invalid_argument("checker '" + printable(text, 40) + "': N must be an integer in [2, " +
-                                std::to_string(kMaxGridResolution) + "]");
+    if (n && in_range(kCheckerGridN, static_cast<double>(*n))) return {Kind::Grid, static_cast<int>(*n)};
+    throw std::invalid_argument("checker '" + printable(text, 40) + "': N must be " + range_text(kCheckerGridN));
   }
   if (text.rfind("step:", 0) == 0) {
     const auto d = parse_decimal(std::string_view(text).substr(5));
-    if (d && *d > 0.0) return {Kind::Step, 0, *d};
-    throw std::invalid_argument("checker '" + printable(text, 40) + "': D must be a number > 0");
+    if (d && in_range(kCheckerStepD, *d)) return {Kind::Step, 0, *d};
+    throw std::invalid_argument("checker '" + printable(text, 40) + "': D must be " + range_text(kCheckerStepD));
   }
   throw std::invalid_argument("unknown checker '" + printable(text, 40) + "' (bisection, grid:N or step:D)");
 }

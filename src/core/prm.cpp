@@ -1,5 +1,6 @@
 #include "core/prm.hpp"
 
+#include "core/params.hpp"
 #include "core/prm_text.hpp"
 #include "core/text.hpp"
 
@@ -30,7 +31,7 @@ NeighborRule NeighborRule::parse(const std::string& text) {
     r.kind = Kind::PrmStar;
   } else if (text.rfind("k:", 0) == 0) {
     const auto k = parse_integer(std::string_view(text).substr(2));
-    if (!k || *k < 1 || *k > 1000) throw std::invalid_argument("k must be an integer in [1, 1000]");
+    if (!k || !in_range(kNeighborK, static_cast<double>(*k))) throw std::invalid_argument("k must be " + range_text(kNeighborK));
     r.kind = Kind::Nearest;
     r.k = static_cast<int>(*k);
   } else if (text.rfind("radius:", 0) == 0) {

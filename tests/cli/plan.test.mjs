@@ -214,3 +214,26 @@ test('visibility: the breakdown by cases', () => {
   assert.equal(withMc.breakdown.case, 'top/right edge');
   assert.equal(typeof withMc.within_ci, 'boolean');
 });
+
+// Issue 23: the --help lines of the options described in core/params.hpp are generated from the
+// same spec the parser checks with, so the range the help states is the range an error names.
+test('--help states the ranges and defaults the parsers check', () => {
+  const cases = [
+    ['plan', '--samples', '2000001', ['plan', GAP]],
+    ['plan', '--k', null, null],
+    ['experiment', '--trials', '100001', ['experiment', GAP, '--samples-list', '10']],
+    ['experiment', '--reference-samples', '1000001', ['experiment', GAP, '--samples-list', '10']],
+    ['visibility', '--trials', '-1', ['visibility', '--x', '0.2', '--y', '0.5', '--gap', '0.1']],
+    ['check', '--max', '1', ['check', GAP, '--min-grid']],
+  ];
+  for (const [command, flag, bad, args] of cases) {
+    const help = run('help', command).stdout;
+    // "  --trials T   PRM runs for each n: an integer in [1, 100000], default 20", the range
+    // perhaps on the next line.
+    const m = help.match(new RegExp(`^  ${flag} \\S+ +[^\\n]*?:\\s+(an integer in \\[[0-9]+, [0-9]+\\])`, 'm'));
+    assert.ok(m, `${command} --help has a line for ${flag}:\n${help}`);
+    if (bad) fails(new RegExp(`${flag}: '${bad}' is not ${m[1].replace(/[[\]]/g, '\\$&')}$`), ...args, flag, bad);
+  }
+  assert.match(run('help', 'plan').stdout, /--samples N +samples drawn[^\n]*:\s+an integer in \[0, 1000000\], default 200/);
+  assert.match(run('help', 'experiment').stdout, /--trials T +PRM runs for each n: an integer in \[1, 100000\], default 20/);
+});

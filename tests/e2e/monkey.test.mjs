@@ -107,7 +107,7 @@ test('limits in the app: the most samples work, one more is refused and changes 
   const s = await api(page, 'state');
   assert.equal(s.params.samples, 20000);
   assert.equal(s.done, true);
-  assert.equal(await refusal(page, 'setParams', { samples: 20001 }), 'samples: an integer in [0, 20000]');
+  assert.equal(await refusal(page, 'setParams', { samples: 20001 }), 'samples: an integer in [0, 20000] in the lab');
   assert.equal((await api(page, 'state')).roadmap_hash, s.roadmap_hash, 'nothing changed');
 }));
 
