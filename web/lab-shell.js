@@ -31,7 +31,7 @@
   // million characters, and the work itself needs room too).
   const HISTORY_MAX = 10;
   const HISTORY_MAX_CHARS = 1500000;
-  const MAX_STEPS = 100000000;  // what the app's run_to takes (count_arg in src/app/app.cpp)
+  const MAX_STEPS = 100000000;  // what the app's run_to takes (count_arg in src/app/shell/app.cpp)
   const MARKER_FRAMES = 3;      // a restore is done once the app drew this many frames after it
   const BEAT_MS = 1000;
   // A marker or a lease not refreshed for this long belongs to a tab that froze, crashed or

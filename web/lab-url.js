@@ -20,7 +20,7 @@
     shareScene: 6000,        // characters of an encoded scene a Share link will hold (servers cap URLs near 8 KB)
     value: 256,              // characters of any other value
     entries: 64,             // key=value pairs
-    depth: 64,               // levels of JSON nesting (the app's kMaxJsonDepth, src/core/scene.hpp)
+    depth: 64,               // levels of JSON nesting (the app's kMaxJsonDepth, src/core/scene/scene.hpp)
   });
   const RESERVED = new Set(['lesson', 'scene', 'steps', 'ui', 'id', 'problem']);
   const KEY = /^[a-z][a-z0-9_]{0,31}$/;

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "core/text.hpp"
+#include "core/base/text.hpp"
 
 namespace csl::cli {
 
@@ -64,7 +64,7 @@ void Args::finish() const {
 }
 
 double parse_number(const std::string& text, const std::string& what) {
-  // The one number syntax of core/text.hpp: what a link or a scene's scripts pass means the
+  // The one number syntax of core/base/text.hpp: what a link or a scene's scripts pass means the
   // same here.
   if (const auto v = parse_decimal(text)) return *v;
   throw UsageError(what + ": '" + printable(text, 60) + "' is not a finite number");

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "core/params.hpp"
+#include "core/base/params.hpp"
 
 namespace csl::cli {
 

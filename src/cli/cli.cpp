@@ -6,8 +6,8 @@
 #include <exception>
 
 #include "cli/commands.hpp"
-#include "core/text.hpp"
-#include "core/version.hpp"
+#include "core/base/text.hpp"
+#include "core/base/version.hpp"
 
 namespace csl::cli {
 

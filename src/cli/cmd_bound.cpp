@@ -3,7 +3,7 @@
 #include <stdexcept>
 
 #include "cli/commands.hpp"
-#include "core/analysis.hpp"
+#include "core/teaching/analysis.hpp"
 
 namespace csl::cli {
 namespace {

@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "cli/commands.hpp"
-#include "core/edge_check_json.hpp"
+#include "core/checking/edge_check_json.hpp"
 
 namespace csl::cli {
 namespace {

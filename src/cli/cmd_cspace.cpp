@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
-#include "core/cspace_map.hpp"
+#include "core/teaching/cspace_map.hpp"
 
 namespace csl::cli {
 namespace {

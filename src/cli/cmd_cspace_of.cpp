@@ -4,7 +4,7 @@
 #include <optional>
 
 #include "cli/commands.hpp"
-#include "core/notation.hpp"
+#include "core/teaching/notation.hpp"
 
 namespace csl::cli {
 namespace {

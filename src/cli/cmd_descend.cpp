@@ -1,8 +1,8 @@
 // cspacelab descend: gradient descent on the potential field, with random-walk escapes from
-// local minima (homework section 2.4; the stepper of core/descent.hpp run to its end).
+// local minima (homework section 2.4; the stepper of core/fields/descent.hpp run to its end).
 #include "cli/commands.hpp"
 #include "cli/potential_options.hpp"
-#include "core/descent.hpp"
+#include "core/fields/descent.hpp"
 
 namespace csl::cli {
 namespace {

@@ -1,8 +1,8 @@
 // cspacelab distance: the homework's distances (P10 on S^1, P11 segment to disk) and friends.
 #include "cli/commands.hpp"
-#include "core/angles.hpp"
-#include "core/geometry.hpp"
-#include "core/scene.hpp"
+#include "core/base/angles.hpp"
+#include "core/geometry/geometry.hpp"
+#include "core/scene/scene.hpp"
 
 #include <cmath>
 

@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "cli/commands.hpp"
-#include "core/experiment.hpp"
+#include "core/teaching/experiment.hpp"
 
 namespace csl::cli {
 namespace {

@@ -1,10 +1,10 @@
 // cspacelab homework / exercise: the handout's problems P1-P13 and their seeded exercises, the
-// same JSON the lab's homework map and its JS API give (core/homework.hpp).
+// same JSON the lab's homework map and its JS API give (core/teaching/homework.hpp).
 #include <stdexcept>
 
 #include "cli/commands.hpp"
-#include "core/homework.hpp"
-#include "core/text.hpp"
+#include "core/teaching/homework.hpp"
+#include "core/base/text.hpp"
 
 namespace csl::cli {
 namespace {

@@ -2,8 +2,8 @@
 #include <chrono>
 
 #include "cli/commands.hpp"
-#include "core/planner_json.hpp"
-#include "core/potential_connector.hpp"
+#include "core/planning/planner_json.hpp"
+#include "core/planning/potential_connector.hpp"
 
 namespace csl::cli {
 namespace {
@@ -46,7 +46,7 @@ int run_plan(Args& args, std::ostream& os) {
   planner.run();
   const double query = seconds_since(t1);
 
-  // The planner's state as the lab reports it (core/planner_json.hpp), and how this run went.
+  // The planner's state as the lab reports it (core/planning/planner_json.hpp), and how this run went.
   json out = planner_state_json(planner, roadmap_out);
   out["build_seconds"] = build;
   out["query_seconds"] = query;

@@ -6,10 +6,10 @@
 #include <utility>
 
 #include "cli/args.hpp"
-#include "core/collision.hpp"
-#include "core/prm.hpp"
-#include "core/scene.hpp"
-#include "core/work.hpp"
+#include "core/checking/collision.hpp"
+#include "core/planning/prm.hpp"
+#include "core/scene/scene.hpp"
+#include "core/teaching/work.hpp"
 
 namespace csl::cli {
 
@@ -17,7 +17,7 @@ struct Command {
   const char* name;
   const char* summary;  ///< one line for `cspacelab --help`
   std::string usage;    ///< full help for `cspacelab help NAME` / `cspacelab NAME --help` (option_help() lines for
-                        ///< the options of core/params.hpp: built once, at start)
+                        ///< the options of core/base/params.hpp: built once, at start)
   int (*run)(Args& args, std::ostream& os);  ///< prints JSON on os (stdout); throws UsageError for bad input
 };
 

@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include "cli/commands.hpp"
-#include "core/angles.hpp"
+#include "core/base/angles.hpp"
 
 namespace csl::cli {
 

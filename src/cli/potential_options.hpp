@@ -3,7 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/args.hpp"
-#include "core/potential.hpp"
+#include "core/fields/potential.hpp"
 
 namespace csl::cli {
 

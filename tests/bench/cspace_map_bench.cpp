@@ -9,8 +9,8 @@
 #include <cstdio>
 
 #include "bench_common.hpp"
-#include "core/angles.hpp"
-#include "core/cspace_map.hpp"
+#include "core/base/angles.hpp"
+#include "core/teaching/cspace_map.hpp"
 
 namespace {
 

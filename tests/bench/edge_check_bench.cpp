@@ -12,7 +12,7 @@
 #include <cstdio>
 
 #include "bench_common.hpp"
-#include "core/edge_check.hpp"
+#include "core/checking/edge_check.hpp"
 
 #ifdef CSPACELAB_WITH_OMPL
 #include <ompl/base/DiscreteMotionValidator.h>

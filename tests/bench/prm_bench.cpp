@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "bench_common.hpp"
-#include "core/prm.hpp"
+#include "core/planning/prm.hpp"
 
 #ifdef CSPACELAB_WITH_OMPL
 #include <ompl/base/DiscreteMotionValidator.h>

@@ -215,7 +215,7 @@ test('visibility: the breakdown by cases', () => {
   assert.equal(typeof withMc.within_ci, 'boolean');
 });
 
-// Issue 23: the --help lines of the options described in core/params.hpp are generated from the
+// Issue 23: the --help lines of the options described in core/base/params.hpp are generated from the
 // same spec the parser checks with, so the range the help states is the range an error names.
 test('--help states the ranges and defaults the parsers check', () => {
   const cases = [

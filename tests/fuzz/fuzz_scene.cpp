@@ -7,9 +7,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/collision.hpp"
-#include "core/edge_check.hpp"
-#include "core/scene.hpp"
+#include "core/checking/collision.hpp"
+#include "core/checking/edge_check.hpp"
+#include "core/scene/scene.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   csl::Scene scene;

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "core/analysis.hpp"
-#include "core/angles.hpp"
+#include "core/teaching/analysis.hpp"
+#include "core/base/angles.hpp"
 
 using doctest::Approx;
 

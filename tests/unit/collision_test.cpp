@@ -6,8 +6,8 @@
 #include <cmath>
 #include <cstring>
 
-#include "core/angles.hpp"
-#include "core/edge_check.hpp"
+#include "core/base/angles.hpp"
+#include "core/checking/edge_check.hpp"
 
 using csl::config;
 using csl::kPi;

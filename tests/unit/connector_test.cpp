@@ -5,8 +5,8 @@
 
 #include <memory>
 
-#include "core/potential_connector.hpp"
-#include "core/prm.hpp"
+#include "core/planning/potential_connector.hpp"
+#include "core/planning/prm.hpp"
 
 using csl::config;
 using csl::Config;

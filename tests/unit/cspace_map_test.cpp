@@ -8,10 +8,10 @@
 #include <cstdio>
 #include <string>
 
-#include "core/angles.hpp"
-#include "core/collision.hpp"
-#include "core/cspace_map.hpp"
-#include "core/rng.hpp"
+#include "core/base/angles.hpp"
+#include "core/checking/collision.hpp"
+#include "core/teaching/cspace_map.hpp"
+#include "core/base/rng.hpp"
 
 using csl::AngleInterval;
 using csl::config;

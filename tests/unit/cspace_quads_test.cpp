@@ -8,9 +8,9 @@
 #include <cmath>
 #include <vector>
 
-#include "core/angles.hpp"
-#include "core/cspace_quads.hpp"
-#include "core/rng.hpp"
+#include "core/base/angles.hpp"
+#include "core/teaching/cspace_quads.hpp"
+#include "core/base/rng.hpp"
 
 using csl::CSpaceQuad;
 using csl::kPi;

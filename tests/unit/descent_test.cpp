@@ -6,8 +6,8 @@
 #include <cmath>
 #include <cstring>
 
-#include "core/descent.hpp"
-#include "core/edge_check.hpp"
+#include "core/fields/descent.hpp"
+#include "core/checking/edge_check.hpp"
 
 using csl::config;
 using csl::Config;

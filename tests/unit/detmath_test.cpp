@@ -9,8 +9,8 @@
 #include <initializer_list>
 #include <limits>
 
-#include "core/detmath.hpp"
-#include "core/rng.hpp"
+#include "core/base/detmath.hpp"
+#include "core/base/rng.hpp"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// The worked derivations of P10 and P11 (core/distances.hpp) against oracles written here from
+// The worked derivations of P10 and P11 (core/teaching/distances.hpp) against oracles written here from
 // scratch: the S^1 distance as the least |q2 - q1 + 2 pi k| over whole turns k, the rotation
 // form with the C library's cos, sin and atan2 (not the lab's own), and the segment-to-disk
 // distance as a minimum over 100001 points of the segment, its case from the law of cosines.
@@ -9,7 +9,7 @@
 // half the digits near 0 and pi (arccos(1 - e) ~ sqrt(2e)): its tolerance grows as 1 / sin d,
 // capped at 1e-7. Segment coordinates are within 20 of each other: a few ulps of 20 (3.6e-15)
 // each, so 1e-12 (kTol); the sampled minimum adds its bound (half a sample step) on top.
-#include "core/distances.hpp"
+#include "core/teaching/distances.hpp"
 
 #include <doctest/doctest.h>
 
@@ -17,8 +17,8 @@
 #include <cmath>
 #include <string>
 
-#include "core/geometry.hpp"
-#include "core/rng.hpp"
+#include "core/geometry/geometry.hpp"
+#include "core/base/rng.hpp"
 
 using csl::Vec2;
 

@@ -9,10 +9,10 @@
 #include <optional>
 #include <vector>
 
-#include "core/angles.hpp"
-#include "core/edge_check.hpp"
-#include "core/rng.hpp"
-#include "core/scene.hpp"
+#include "core/base/angles.hpp"
+#include "core/checking/edge_check.hpp"
+#include "core/base/rng.hpp"
+#include "core/scene/scene.hpp"
 
 using csl::config;
 using csl::EdgeCheckerSpec;

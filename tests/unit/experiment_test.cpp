@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/angles.hpp"
-#include "core/experiment.hpp"
+#include "core/base/angles.hpp"
+#include "core/teaching/experiment.hpp"
 
 using csl::config;
 

@@ -26,8 +26,8 @@
 #include <string>
 #include <vector>
 
-#include "core/homework.hpp"
-#include "core/notation.hpp"
+#include "core/teaching/homework.hpp"
+#include "core/teaching/notation.hpp"
 
 using json = nlohmann::json;
 

@@ -6,9 +6,9 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
-#include "core/angles.hpp"
-#include "core/prm.hpp"
-#include "core/scene.hpp"
+#include "core/base/angles.hpp"
+#include "core/planning/prm.hpp"
+#include "core/scene/scene.hpp"
 
 using nlohmann::json;
 

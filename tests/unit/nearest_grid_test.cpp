@@ -6,7 +6,7 @@
 
 #include <set>
 
-#include "core/nearest_grid.hpp"
+#include "core/planning/nearest_grid.hpp"
 
 using csl::Config;
 using csl::Space;

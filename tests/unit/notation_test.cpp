@@ -1,6 +1,6 @@
 // C-space notation: the homework's robots (P1-P7 kinds), the description format and its
 // errors, and the answer checker on right answers in many spellings and on typical mistakes.
-#include "core/notation.hpp"
+#include "core/teaching/notation.hpp"
 
 #include <doctest/doctest.h>
 

@@ -1,13 +1,13 @@
-// The parameters described once (core/params.hpp): every spec is coherent, its check accepts its
+// The parameters described once (core/base/params.hpp): every spec is coherent, its check accepts its
 // ends and refuses just past them, and the one error text names the parameter and its range.
 #include <doctest/doctest.h>
 
 #include <cmath>
 #include <string>
 
-#include "core/edge_check.hpp"
-#include "core/params.hpp"
-#include "core/prm.hpp"
+#include "core/checking/edge_check.hpp"
+#include "core/base/params.hpp"
+#include "core/planning/prm.hpp"
 
 namespace {
 // The value just outside an end: the next integer for an integer spec, the next double else.

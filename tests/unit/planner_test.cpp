@@ -1,4 +1,4 @@
-// The planner interface (core/planner.hpp) as the app, the CLI and experiments use it: PRM
+// The planner interface (core/planning/planner.hpp) as the app, the CLI and experiments use it: PRM
 // driven only through Planner&, its state JSON (one description for the lab and the CLI), and
 // an experiment that takes its planner from a factory.
 #include <doctest/doctest.h>
@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "core/experiment.hpp"
-#include "core/planner_json.hpp"
-#include "core/prm.hpp"
-#include "core/scene.hpp"
+#include "core/teaching/experiment.hpp"
+#include "core/planning/planner_json.hpp"
+#include "core/planning/prm.hpp"
+#include "core/scene/scene.hpp"
 
 namespace {
 csl::CollisionWorld wall_with_gap() {

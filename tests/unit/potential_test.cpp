@@ -14,9 +14,9 @@
 #include <limits>
 #include <vector>
 
-#include "core/angles.hpp"
-#include "core/potential.hpp"
-#include "core/rng.hpp"
+#include "core/base/angles.hpp"
+#include "core/fields/potential.hpp"
+#include "core/base/rng.hpp"
 
 using csl::config;
 using csl::Config;

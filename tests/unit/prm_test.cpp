@@ -12,10 +12,10 @@
 #include <variant>
 #include <vector>
 
-#include "core/angles.hpp"
-#include "core/potential_connector.hpp"
-#include "core/prm.hpp"
-#include "core/scene.hpp"
+#include "core/base/angles.hpp"
+#include "core/planning/potential_connector.hpp"
+#include "core/planning/prm.hpp"
+#include "core/scene/scene.hpp"
 
 using csl::config;
 using csl::Prm;

@@ -5,7 +5,7 @@
 #include <array>
 #include <cmath>
 
-#include "core/rng.hpp"
+#include "core/base/rng.hpp"
 
 TEST_CASE("the generator's first outputs are pinned, in every build") {
   csl::Rng r(42);

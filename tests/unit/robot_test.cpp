@@ -5,8 +5,8 @@
 #include <cmath>
 #include <string>
 
-#include "core/angles.hpp"
-#include "core/robot.hpp"
+#include "core/base/angles.hpp"
+#include "core/robots/robot.hpp"
 
 using csl::config;
 using csl::kPi;

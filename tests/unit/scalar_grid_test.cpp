@@ -6,7 +6,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "core/scalar_grid.hpp"
+#include "core/fields/scalar_grid.hpp"
 
 using csl::Vec2;
 

@@ -6,8 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/angles.hpp"
-#include "core/scene.hpp"
+#include "core/base/angles.hpp"
+#include "core/scene/scene.hpp"
 
 using csl::Scene;
 using csl::SceneError;

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "core/angles.hpp"
-#include "core/space.hpp"
+#include "core/base/angles.hpp"
+#include "core/spaces/space.hpp"
 
 using csl::config;
 using csl::kPi;

@@ -1,10 +1,10 @@
-// The one number syntax of every surface (core/text.hpp) and one-line messages.
+// The one number syntax of every surface (core/base/text.hpp) and one-line messages.
 #include <doctest/doctest.h>
 
 #include <cmath>
 #include <string>
 
-#include "core/text.hpp"
+#include "core/base/text.hpp"
 
 TEST_CASE("decimals: what links accept, nothing strtod adds") {
   for (const char* ok : {"0", "-0", "1", "0.5", ".5", "5.", "-.25", "1e3", "1E-3", "2.5e+7", "007", "1e-310"})

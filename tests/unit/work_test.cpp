@@ -1,11 +1,11 @@
-// Work estimates (core/work.hpp): the measure every surface's budget counts in.
+// Work estimates (core/teaching/work.hpp): the measure every surface's budget counts in.
 #include <doctest/doctest.h>
 
 #include <cmath>
 
-#include "core/angles.hpp"
-#include "core/scene.hpp"
-#include "core/work.hpp"
+#include "core/base/angles.hpp"
+#include "core/scene/scene.hpp"
+#include "core/teaching/work.hpp"
 
 namespace {
 csl::PrmParams params(int samples, const char* rule, const char* checker) {

@@ -257,7 +257,7 @@ export async function openLabs(page, url, selectors) {
 // ---- pictures checked against the geometry ------------------------------------------------
 
 /**
- * The colours a view's pixels take (src/app/theme.hpp, as they land on the white canvas), each
+ * The colours a view's pixels take (src/app/shell/theme.hpp, as they land on the white canvas), each
  * a test of one [r, g, b]: a probe names one of these, or gives [r, g, b] (within 24 a channel).
  */
 export const LOOKS = {

@@ -1,0 +1,488 @@
+#include "app/shell/app.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <limits>
+#include <optional>
+
+#include "app/shell/fonts.hpp"
+#include "app/shell/js_api.hpp"
+#include "app/shell/panel.hpp"
+#include "app/shell/theme.hpp"
+#include "app/shell/ui.hpp"
+#include "app/shell/bundled_scenes.hpp"
+#include "app/shell/web_bridge.hpp"
+#include "core/base/version.hpp"
+
+namespace csl::app {
+
+using json = nlohmann::json;
+
+namespace {
+json vec_json(ImVec2 v) { return json::array({v.x, v.y}); }
+
+// A lesson with nothing to step answers the stepping calls as a stepper at step 0 that is done.
+class NoStepper final : public Stepper {
+ public:
+  long steps() const override { return 0; }
+  bool finished() const override { return true; }
+  void step_forward() override {}
+  void step_back() override {}
+  void finish_phase() override {}
+  void run_all() override {}
+  void reset() override {}
+  void run_to(long) override {}
+};
+NoStepper no_stepper;
+
+Stepper& stepping(Lesson& lesson) {
+  Stepper* s = lesson.stepper();
+  return s ? *s : no_stepper;
+}
+const Stepper& stepping(const Lesson& lesson) {
+  const Stepper* s = lesson.stepper();
+  return s ? *s : no_stepper;
+}
+// Whether the panel shows the playback controls (and the event log) for the lesson.
+bool shows_controls(const Lesson& lesson) {
+  const Stepper* s = lesson.stepper();
+  return s && s->shows_controls();
+}
+
+// Long work goes on over frames (Stepper::work); an API call finishes what it started before it
+// returns, unless asked {background: true} (the page does, for links and restores, so that the
+// first frames come at once and the progress shows).
+constexpr double kFrameWorkMs = 25.0;
+void finish(Lesson& lesson, const json& args) {
+  if (!args.value("background", false)) stepping(lesson).work(std::numeric_limits<double>::infinity());
+}
+
+long count_arg(const json& args, const char* key, long fallback, long max) {
+  if (!args.contains(key)) return fallback;
+  const json& v = args[key];
+  if (!v.is_number_integer() || v.get<long long>() < 0 || v.get<long long>() > max)
+    throw ApiError(std::string(key) + ": an integer in [0, " + std::to_string(max) + "]");
+  return v.get<long>();
+}
+}  // namespace
+
+App::App(const Platform& platform) : platform_(platform) {
+  theme::apply_style();
+  register_api();
+  select_lesson(lessons().front().id);
+}
+
+void App::open_problem(const HomeworkProblem& p, bool preset) {
+  if (!find_lesson(p.lesson)) throw ApiError("the lab has no lesson \"" + p.lesson + "\" for " + p.id);
+  if (preset) {
+    json setup{{"params", p.params}};
+    if (!p.scene.empty()) setup["scene"] = scene_to_json(bundled_scene(p.scene));
+    show_in_lesson(p.lesson, setup);
+  }
+  select_lesson(p.lesson);
+}
+
+void App::show_in_lesson(const std::string& id, const json& setup) {
+  const LessonInfo* info = find_lesson(id);
+  if (!info) throw ApiError("no lesson \"" + id + "\"");
+  std::optional<Scene> scene;
+  if (setup.contains("scene")) scene = scene_from_json(setup["scene"]);  // throws before anything changes
+  const json params = setup.value("params", json::object());
+  auto& slot = instances_[id];
+  if (!slot) slot = info->create();
+  Lesson& lesson = *slot;
+  // The scene as one edit (Undo brings the student's back); parameters the lesson refuses
+  // (set_params changes nothing then) take the scene back with them.
+  std::string why;
+  if (scene && !lesson.accept_scene(*scene, why)) throw ApiError(why);
+  if (!params.empty()) {
+    try {
+      lesson.set_params(params);
+    } catch (...) {
+      if (scene) lesson.undo();
+      throw;
+    }
+  }
+  stepping(lesson).work(std::numeric_limits<double>::infinity());
+  select_lesson(id);
+}
+
+bool App::select_lesson(const std::string& id) {
+  const LessonInfo* info = find_lesson(id);
+  if (!info) return false;
+  auto& slot = instances_[id];
+  if (!slot) slot = info->create();
+  lesson_ = slot.get();
+  lesson_id_ = id;
+  ctx_.playback.playing = false;
+  ctx_.views.clear();
+  ctx_.plots.clear();
+  ctx_.log.clear();
+  lesson_->on_show();  // its log again (it went with the clear), from where it stands
+  return true;
+}
+
+void App::register_api() {
+  JsApi& api = js_api();
+  api.add("status", "frames drawn, frame times, version, pixel ratio, lesson, the side panel's measures and sections", [this](const json&) {
+    const FrameStats& f = platform_.frame_stats();
+    return json{{"frames", platform_.frame_count()},
+                {"version", kVersion},
+                {"pixel_ratio", platform_.pixel_ratio()},
+                {"lesson", lesson_id_},
+                {"frame_ms", {{"mean", f.mean_interval_ms}, {"p95", f.p95_interval_ms}, {"max", f.max_interval_ms}}},
+                {"cpu_ms", {{"mean", f.mean_cpu_ms}, {"p95", f.p95_cpu_ms}, {"max", f.max_cpu_ms}}},
+                {"ui_ms", {{"mean", f.mean_ui_ms}, {"p95", f.p95_ui_ms}, {"max", f.max_ui_ms}}},
+                {"vertices", f.vertices},
+                {"notice", ImGui::GetTime() < ctx_.notice_until ? ctx_.notice : ""},
+                {"panel", panel::state()},
+                {"busy", busy_json()}};
+  });
+  api.add("lessons", "the lessons: [{id, name, category, open}] (open: started, has state)", [this](const json&) {
+    json out = json::array();
+    for (const LessonInfo& l : lessons())
+      out.push_back({{"id", l.id}, {"name", l.name}, {"category", l.category}, {"open", instances_.count(l.id) > 0}});
+    return out;
+  });
+  api.add("select_lesson", "switch lesson: {id}", [this](const json& args) {
+    const std::string id = args.value("id", "");
+    if (!select_lesson(id)) throw ApiError("no lesson \"" + id + "\"");
+    return json(lesson_id_);
+  });
+  api.add("state", "the lesson's state ({roadmap: true} adds the roadmap)",
+          [this](const json& args) { return lesson_->state(args); });
+  api.add("set_params", "the lesson's parameters: {params: {...}}", [this](const json& args) {
+    lesson_->set_params(args.value("params", json::object()));
+    finish(*lesson_, args);
+    return lesson_->state(json::object());
+  });
+  api.add("step", "forward {count} steps (default 1)", [this](const json& args) {
+    const long n = count_arg(args, "count", 1, 10000000);
+    stepping(*lesson_).cancel_work();
+    for (long i = 0; i < n && !stepping(*lesson_).finished(); ++i) stepping(*lesson_).step_forward();
+    return json(stepping(*lesson_).steps());
+  });
+  api.add("step_back", "back {count} steps (default 1; {background: true}: over frames)", [this](const json& args) {
+    stepping(*lesson_).run_to(std::max(0L, stepping(*lesson_).wanted_steps() - count_arg(args, "count", 1, 10000000)));
+    finish(*lesson_, args);
+    return json(stepping(*lesson_).steps());
+  });
+  api.add("run_to", "to step {steps} ({background: true}: over frames, see status().busy)", [this](const json& args) {
+    stepping(*lesson_).run_to(count_arg(args, "steps", 0, 100000000));
+    finish(*lesson_, args);
+    return json(stepping(*lesson_).steps());
+  });
+  api.add("run", "to the end ({background: true}: over frames)", [this](const json& args) {
+    stepping(*lesson_).run_all();
+    finish(*lesson_, args);
+    return json(stepping(*lesson_).steps());
+  });
+  api.add("finish_phase", "to the end of the current phase", [this](const json& args) {
+    stepping(*lesson_).finish_phase();
+    finish(*lesson_, args);
+    return json(stepping(*lesson_).steps());
+  });
+  api.add("cancel", "stop the lesson's running work (a run, a replay) where it is", [this](const json&) {
+    stepping(*lesson_).cancel_work();
+    return json(stepping(*lesson_).steps());
+  });
+  api.add("reset", "back to step 0", [this](const json&) {
+    stepping(*lesson_).reset();
+    return json(stepping(*lesson_).steps());
+  });
+  api.add("get_scene", "the lesson's scene (schema version 1)", [this](const json&) {
+    if (!lesson_->scene()) throw ApiError("this lesson has no scene");
+    return scene_to_json(*lesson_->scene());
+  });
+  api.add("set_scene", "replace the lesson's scene: {scene}; refused with a message if invalid", [this](const json& args) {
+    if (!args.contains("scene")) throw ApiError("args.scene is missing");
+    const Scene s = scene_from_json(args["scene"]);  // throws before anything changes
+    std::string why;
+    if (!lesson_->accept_scene(s, why)) throw ApiError(why);
+    finish(*lesson_, args);
+    return scene_to_json(*lesson_->scene());
+  });
+  api.add("undo", "undo the last scene edit", [this](const json& args) {
+    const bool done = lesson_->undo();
+    finish(*lesson_, args);
+    return json(done);
+  });
+  api.add("redo", "redo the last undone edit", [this](const json& args) {
+    const bool done = lesson_->redo();
+    finish(*lesson_, args);
+    return json(done);
+  });
+  api.add("view", "CSS pixels of world points in a view: {view: 'workspace'|'cspace'|a plot's name, points: [[x,y],...]}; its axes' labels, whether it shows its Fit button",
+          [this](const json& args) {
+            const std::string name = args.value("view", "workspace");
+            if (auto plot = ctx_.plots.find(name); plot != ctx_.plots.end()) {
+              // A plot: data points (its axes' units, log or not) to CSS pixels.
+              json points = json::array();
+              for (const json& p : args.value("points", json::array())) {
+                if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number())
+                  throw ApiError("points must be [[x, y], ...]");
+                points.push_back(vec_json(plot->second->to_screen(p[0].get<double>(), p[1].get<double>())));
+              }
+              return json{{"points", points}, {"plot", true}};
+            }
+            auto it = ctx_.views.find(name);
+            if (it == ctx_.views.end()) throw ApiError("this lesson has no view \"" + name + "\"");
+            const WorkspaceView& v = *it->second;
+            json points = json::array();
+            for (const json& p : args.value("points", json::array())) {
+              if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number())
+                throw ApiError("points must be [[x, y], ...]");
+              points.push_back(vec_json(v.to_screen(Vec2(p[0].get<double>(), p[1].get<double>()))));
+            }
+            return json{{"canvas_min", vec_json(v.canvas_min())},
+                        {"canvas_max", vec_json(v.canvas_max())},
+                        {"scale", v.scale()},
+                        {"points", points},
+                        {"ticks", {{"x", v.tick_labels(0)}, {"y", v.tick_labels(1)}}},
+                        {"fit_button", v.fit_button_shown()}};
+          });
+  // The whole state a link or an autosave needs to reproduce what is on screen exactly.
+  api.add("snapshot", "{lesson, scene, params, steps}: everything needed to restore this view exactly ({lesson: id}: an open lesson's)",
+          [this](const json& args) {
+            const std::string id = args.value("lesson", lesson_id_);
+            auto it = instances_.find(id);
+            if (it == instances_.end() || !it->second) throw ApiError("lesson: \"" + id + "\" is not open");
+            Lesson& l = *it->second;
+            return json{{"lesson", id},
+                        {"scene", l.scene() ? scene_to_json(*l.scene()) : json(nullptr)},
+                        {"params", l.params()},
+                        {"steps", stepping(l).wanted_steps()}};
+          });
+  api.add("restore", "restore a snapshot: {lesson, scene?, params?, steps?, background?}; all checked before anything changes",
+          [this](const json& args) {
+            const std::string id = args.value("lesson", lesson_id_);
+            const LessonInfo* info = find_lesson(id);
+            if (!info) throw ApiError("lesson: no lesson \"" + id + "\"");
+            std::optional<Scene> scene;
+            if (args.contains("scene") && !args["scene"].is_null()) scene = scene_from_json(args["scene"]);
+            const long steps = count_arg(args, "steps", 0, 100000000);
+            // Try everything on a fresh lesson first: a bad part leaves the current one untouched.
+            std::unique_ptr<Lesson> trial = info->create();
+            std::string why;
+            if (scene && !trial->accept_scene(*scene, why)) throw ApiError("scene: " + why);
+            if (args.contains("params")) trial->set_params(args["params"]);
+            stepping(*trial).run_to(steps);
+            finish(*trial, args);
+            instances_[id] = std::move(trial);
+            select_lesson(id);
+            return json{{"lesson", lesson_id_}, {"steps", stepping(*lesson_).steps()}};
+          });
+  homework_.register_api(api);
+  web::register_api(api, ctx_);  // notify, page_state, bundled_scenes: the page around the app
+  api.add("log", "the event log's lines", [this](const json&) {
+    json out = json::array();
+    for (const auto& [step, text] : ctx_.log.lines()) out.push_back({{"step", step}, {"text", text}});
+    return out;
+  });
+}
+
+json App::busy_json() const {
+  for (const auto& [id, lesson] : instances_)
+    if (lesson && stepping(*lesson).busy())
+      return json{{"lesson", id}, {"text", stepping(*lesson).busy_text()}, {"progress", stepping(*lesson).progress()},
+                  {"steps", stepping(*lesson).steps()}};
+  return nullptr;
+}
+
+void App::work() {
+  // The lesson on screen first; when it has nothing to do, a lesson restored in the background
+  // (a saved state of several lessons comes back while the student looks at one).
+  if (stepping(*lesson_).busy()) return stepping(*lesson_).work(kFrameWorkMs);
+  for (auto& [id, lesson] : instances_)
+    if (lesson && stepping(*lesson).busy()) return stepping(*lesson).work(kFrameWorkMs);
+}
+
+void App::top_bar() {
+  const LessonInfo* current_info = find_lesson(lesson_id_);
+  const std::string current_name = current_info ? current_info->name : lesson_id_;
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float right = ImGui::GetWindowContentRegionMax().x;  // window-local, like the cursor
+  const float actions_w = web::top_bar_actions_width();
+  ImGui::PushFont(fonts().title);
+  ImGui::TextUnformatted(web::page().minimal ? current_name.c_str() : "C-Space Lab");
+  ImGui::PopFont();
+  ImGui::SameLine(0, 24);
+  if (!web::page().minimal) {
+    // The way in for students: the handout's problems by number, next to the title.
+    homework_.menu_button();
+    ImGui::SameLine(0, 18);
+  }
+  const ImVec2 first_row = ImGui::GetCursorPos();
+  if (!web::page().minimal) {
+    // One button per lesson, grouped by category, in rows under each other when the window is
+    // too narrow: the first row leaves room for the page's actions, so no button is ever
+    // pushed off the edge (a restore button appearing must not hide Share or a lesson).
+    const float indent = first_row.x;
+    bool first = true, on_first_row = true;
+    // Places the next `w` pixels wide: after the last item with `gap`, or at a new row.
+    auto place = [&](float w, float gap) {
+      if (first) {
+        // Right after the title; on a narrow window (a phone) already on a row of its own.
+        first = false;
+        if (first_row.x + w > right - actions_w - 24) {
+          on_first_row = false;
+          ImGui::NewLine();
+          ImGui::SetCursorPosX(indent);
+        }
+        return;
+      }
+      const float x = ImGui::GetItemRectMax().x - ImGui::GetWindowPos().x + gap;
+      const float limit = on_first_row ? right - actions_w - 24 : right;
+      if (x + w <= limit) {
+        ImGui::SameLine(0, gap);
+      } else {
+        on_first_row = false;
+        ImGui::SetCursorPosX(indent);
+      }
+    };
+    std::string category;
+    for (const LessonInfo& l : lessons()) {
+      const float button_w = ImGui::CalcTextSize(l.name.c_str()).x + style.FramePadding.x * 2;
+      if (l.category != category) {
+        category = l.category;
+        const std::string label = category + ":";
+        // The label keeps its first lesson on the same row.
+        place(ImGui::CalcTextSize(label.c_str()).x + style.ItemSpacing.x + button_w, 18);
+        ImGui::AlignTextToFramePadding();
+        ImGui::TextDisabled("%s", label.c_str());
+        ImGui::SameLine();
+      } else {
+        place(button_w, style.ItemSpacing.x);
+      }
+      const bool current = l.id == lesson_id_;
+      if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+      if (ImGui::Button(l.name.c_str())) select_lesson(l.id);
+      if (current) ImGui::PopStyleColor();
+    }
+  }
+  // The page's actions (Share, Embed, File; or the version without a page), right-aligned on
+  // the first row; then the cursor goes back under the lowest row.
+  const ImVec2 below = ImGui::GetCursorPos();
+  ImGui::SetCursorPos(ImVec2(std::max(first_row.x, right - actions_w), first_row.y));
+  web::top_bar_actions(ctx_, current_name);
+  ImGui::SetCursorPos(ImVec2(ImGui::GetCursorStartPos().x, std::max(below.y, ImGui::GetCursorPos().y)));
+}
+
+void App::playback_controls() {
+  if (!shows_controls(*lesson_)) return;
+  Playback& pb = ctx_.playback;
+  if (stepping(*lesson_).busy()) {
+    // Long work runs over frames: what it is, how far, and a way out.
+    pb.playing = false;
+    ImGui::TextWrapped("%s", stepping(*lesson_).busy_text().c_str());
+    const float cancel_w = ui::button_width("Cancel");
+    ImGui::ProgressBar(static_cast<float>(stepping(*lesson_).progress()), ImVec2(-cancel_w - ImGui::GetStyle().ItemSpacing.x, 0));
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) stepping(*lesson_).cancel_work();
+    web::record_control("cancel");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("stop here (Esc)");
+    ImGui::Spacing();
+    return;
+  }
+  ImGui::BeginDisabled(stepping(*lesson_).steps() == 0);
+  if (ImGui::Button("\xE2\x97\x80 Back")) stepping(*lesson_).step_back();  // ◀
+  web::record_control("back");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("step back (,)");
+  ImGui::EndDisabled();
+  ui::flow(ui::button_width("Step \xE2\x96\xB6"));
+  ImGui::BeginDisabled(stepping(*lesson_).finished());
+  if (ImGui::Button("Step \xE2\x96\xB6")) stepping(*lesson_).step_forward();  // ▶
+  web::record_control("step");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("one step (.)");
+  ui::flow(ui::button_width("Finish phase"));
+  if (ImGui::Button("Finish phase")) stepping(*lesson_).finish_phase();
+  web::record_control("finish-phase");
+  ui::flow(ui::button_width("Run all"));
+  if (ImGui::Button("Run all")) stepping(*lesson_).run_all();
+  web::record_control("run-all");
+  ImGui::EndDisabled();
+  ImGui::BeginDisabled(stepping(*lesson_).finished() && !pb.playing);
+  if (ImGui::Button(pb.playing ? "Pause " : "\xE2\x96\xB6 Play")) pb.playing = !pb.playing;
+  web::record_control("play");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("play or pause (Space)");
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  if (ImGui::Button("Reset")) {
+    stepping(*lesson_).reset();
+    pb.playing = false;
+  }
+  ImGui::SameLine();
+  ImGui::PushItemWidth(-1);
+  ImGui::SliderFloat("##speed", &pb.steps_per_second, 1.0f, 5000.0f, "%.0f steps/s", ImGuiSliderFlags_Logarithmic);
+  ImGui::PopItemWidth();
+  ImGui::Spacing();
+}
+
+void App::shortcuts() {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (stepping(*lesson_).busy() && !io.WantTextInput && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) stepping(*lesson_).cancel_work();
+  if (io.WantTextInput || io.KeyCtrl || io.KeyAlt) return;
+  // F: every view of the lesson back to its whole rectangle (after zooming and panning).
+  for (ImWchar c : io.InputQueueCharacters)
+    if (c == 'f' || c == 'F')
+      for (auto& [name, view] : ctx_.views) view->reset_view();
+  if (!shows_controls(*lesson_)) return;
+  for (ImWchar c : io.InputQueueCharacters) {
+    if (c == ' ') ctx_.playback.playing = !ctx_.playback.playing && !stepping(*lesson_).finished();
+    if (c == '.') stepping(*lesson_).step_forward();
+    if (c == ',') stepping(*lesson_).step_back();
+  }
+}
+
+void App::notice() {
+  if (ctx_.notice.empty() || ImGui::GetTime() > ctx_.notice_until) return;
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x + vp->WorkSize.x * 0.5f, vp->WorkPos.y + vp->WorkSize.y - 24),
+                          ImGuiCond_Always, ImVec2(0.5f, 1.0f));
+  ImGui::SetNextWindowBgAlpha(0.92f);
+  ImGui::Begin("##notice", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoFocusOnAppearing |
+                   ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs);
+  ImGui::PushTextWrapPos(std::max(200.0f, vp->WorkSize.x * 0.7f));  // long notices wrap
+  ImGui::TextColored(ImVec4(0.6f, 0.2f, 0.0f, 1.0f), "%s", ctx_.notice.c_str());
+  ImGui::PopTextWrapPos();
+  ImGui::End();
+}
+
+void App::frame() {
+  web::begin_controls();
+  shortcuts();
+  work();
+  lesson_->update(ctx_);
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(vp->WorkPos);
+  ImGui::SetNextWindowSize(vp->WorkSize);
+  ImGui::Begin("C-Space Lab", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoBringToFrontOnFocus |
+                   ImGuiWindowFlags_NoSavedSettings);
+  top_bar();
+  ImGui::Separator();
+  const float panel_w = std::clamp(vp->WorkSize.x * 0.3f, 280.0f, 380.0f);
+  panel::begin(panel_w);
+  homework_.card(lesson_id_);
+  playback_controls();
+  ImGui::PushID(lesson_id_.c_str());  // each lesson's folded sections its own
+  lesson_->panel(ctx_);
+  ImGui::PopID();
+  panel::end();
+  ImGui::SameLine();
+  ImGui::BeginChild("main", ImVec2(0, 0), false, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+  // The event log, for lessons that step through an algorithm or report progress.
+  const bool log = shows_controls(*lesson_) || !ctx_.log.lines().empty();
+  const float log_h = log ? std::clamp(ImGui::GetContentRegionAvail().y * 0.18f, 70.0f, 150.0f) : 0.0f;
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  lesson_->views(ctx_, ImVec2(avail.x, avail.y - (log ? log_h + ImGui::GetStyle().ItemSpacing.y : 0.0f)));
+  if (log) ctx_.log.draw("log", log_h);
+  ImGui::EndChild();
+  ImGui::End();
+  notice();
+}
+
+}  // namespace csl::app

@@ -1,0 +1,296 @@
+#include "app/shell/homework_panel.hpp"
+
+#include <cstdio>
+#include <stdexcept>
+
+#include "app/shell/theme.hpp"
+#include "app/shell/ui.hpp"
+#include "app/shell/web_bridge.hpp"
+#include "imgui.h"
+
+namespace csl::app {
+
+using json = nlohmann::json;
+
+namespace {
+const ImVec4 kRight(0.0f, 0.42f, 0.28f, 1.0f);
+const ImVec4 kWrong(0.66f, 0.24f, 0.0f, 1.0f);
+
+// Text with line breaks, each line wrapped at spaces only (numbers stay whole).
+void paragraphs(const std::string& text) {
+  std::size_t i = 0;
+  while (i <= text.size()) {
+    std::size_t j = text.find('\n', i);
+    if (j == std::string::npos) j = text.size();
+    ui::text_flow(text.substr(i, j - i));
+    i = j + 1;
+  }
+}
+
+// A tinted box behind what `body` draws, as wide as the panel (ImGui 1.86 has no child window
+// that fits its content's height).
+template <class Body>
+void boxed(ImU32 colour, Body body) {
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  dl->ChannelsSplit(2);
+  dl->ChannelsSetCurrent(1);
+  const float pad = ImGui::GetStyle().FramePadding.x;
+  ImGui::Dummy(ImVec2(0, pad * 0.5f));
+  ImGui::Indent(pad);
+  ImGui::BeginGroup();
+  body();
+  ImGui::EndGroup();
+  ImGui::Unindent(pad);
+  const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+  ImGui::Dummy(ImVec2(0, pad * 0.5f));
+  dl->ChannelsSetCurrent(0);
+  const float left = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMin().x;
+  const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+  dl->AddRectFilled(ImVec2(left, lo.y - pad), ImVec2(right, hi.y + pad), colour, 4.0f);
+  dl->ChannelsMerge();
+}
+
+std::uint64_t seed_arg(const json& args) {
+  const json& v = args["seed"];
+  if (!v.is_number_unsigned() || v.get<std::uint64_t>() > kMaxExerciseSeed)
+    throw ApiError("seed: an integer in [0, 2^53 - 1]");
+  return v.get<std::uint64_t>();
+}
+
+const HomeworkProblem& problem_arg(const json& args) {
+  const json& v = args.contains("id") ? args["id"] : json();
+  const HomeworkProblem* p = v.is_string() ? find_homework_problem(v.get<std::string>()) : nullptr;
+  if (!p) throw ApiError("id: a problem of the homework, \"P1\" to \"P13\"");
+  return *p;
+}
+
+}  // namespace
+
+HomeworkPanel::HomeworkPanel(std::function<void(const HomeworkProblem&, bool)> open,
+                             std::function<void(const std::string&, const json&)> show)
+    : open_(std::move(open)), show_(std::move(show)) {}
+
+std::uint64_t HomeworkPanel::fresh_seed() {
+  // Each visit its own numbers; a link's &seed= fixes them (an instructor's worked example).
+  // From the moment of the click (std::random_device would add the page's crypto glue to the
+  // JS budget for this alone), mixed like splitmix64.
+  static std::uint64_t counter = 0;
+  std::uint64_t z = static_cast<std::uint64_t>(ImGui::GetTime() * 1e6) + 0x9E3779B97F4A7C15ull * ++counter;
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return (z ^ (z >> 31)) % 1000000;
+}
+
+void HomeworkPanel::set_exercise(const std::string& id, std::uint64_t seed) {
+  try {
+    exercise_ = make_exercise(id, seed);
+  } catch (const std::invalid_argument& e) {
+    throw ApiError(e.what());
+  }
+  checked_.reset();
+  checked_answer_.clear();
+  answer_[0] = '\0';
+  focus_answer_ = true;
+}
+
+void HomeworkPanel::open(const std::string& id, std::optional<std::uint64_t> seed, bool preset) {
+  const HomeworkProblem* p = find_homework_problem(id);
+  if (!p) throw ApiError("id: a problem of the homework, \"P1\" to \"P13\"");
+  if (seed && *seed > kMaxExerciseSeed) throw ApiError("seed: an integer in [0, 2^53 - 1]");
+  open_(*p, preset);  // may throw: the panel has not changed yet
+  problem_ = p->id;
+  set_exercise(p->id, seed ? *seed : fresh_seed());
+  web::dismiss_welcome();
+}
+
+json HomeworkPanel::check(const std::string& answer) {
+  if (!exercise_) throw ApiError("no exercise is open (open_problem or exercise first)");
+  checked_ = check_exercise(*exercise_, answer);
+  checked_answer_ = answer;
+  // The score counts answers the lab could read, and each exercise answered right once.
+  Score& s = scores_[exercise_->id];
+  if (checked_->readable) ++s.tried;
+  if (checked_->correct && solved_.insert({exercise_->id, exercise_->seed}).second) ++s.right;
+  return exercise_check_to_json(*checked_);
+}
+
+json HomeworkPanel::state_json() const {
+  json scores = json::object();
+  for (const auto& [id, s] : scores_) scores[id] = {{"tried", s.tried}, {"right", s.right}};
+  json out{{"problem", problem_.empty() ? json(nullptr) : json(problem_)},
+           {"exercise", exercise_ ? exercise_to_json(*exercise_) : json(nullptr)},
+           {"answer", std::string(answer_)},
+           {"check", checked_ ? exercise_check_to_json(*checked_) : json(nullptr)},
+           {"scores", scores},
+           {"map_open", map_open_},
+           {"welcome", web::page().welcome}};
+  return out;
+}
+
+void HomeworkPanel::register_api(JsApi& api) {
+  api.add("homework", "the handout's problems: [{id, title, lesson, task}] for P1 to P13", [](const json&) {
+    json out = json::array();
+    for (const HomeworkProblem& p : homework_problems())
+      out.push_back({{"id", p.id}, {"title", p.title}, {"lesson", p.lesson}, {"task", p.task}});
+    return out;
+  });
+  api.add("open_problem", "open a problem's lesson and exercise: {id: 'P10', seed?, preset?: false keeps the lesson's scene}", [this](const json& args) {
+    const HomeworkProblem& p = problem_arg(args);
+    const json& preset = args.contains("preset") ? args["preset"] : json(true);
+    if (!preset.is_boolean()) throw ApiError("preset: true or false");
+    const bool has_seed = args.contains("seed") && !args["seed"].is_null();
+    open(p.id, has_seed ? std::optional<std::uint64_t>(seed_arg(args)) : std::nullopt, preset.get<bool>());
+    return state_json();
+  });
+  api.add("exercise", "a problem's exercise {id, seed?}, made the current one: {id, seed, prompt, given, answer_format, format_hint}",
+          [this](const json& args) {
+            const HomeworkProblem& p = problem_arg(args);
+            set_exercise(p.id, args.contains("seed") ? seed_arg(args) : fresh_seed());
+            problem_ = p.id;  // the card shows it when its lesson is on screen
+            return exercise_to_json(*exercise_);
+          });
+  api.add("check_answer", "check an answer to the current exercise: {answer} -> {correct, expected, explanation}",
+          [this](const json& args) {
+            const json& a = args.contains("answer") ? args["answer"] : json();
+            if (!(a.is_string() || a.is_number()) || (a.is_string() && a.get<std::string>().size() > 200))
+              throw ApiError("answer: a string (at most 200 characters) or a number");
+            const std::string text = a.is_string() ? a.get<std::string>() : a.dump();
+            std::snprintf(answer_, sizeof answer_, "%s", text.c_str());
+            return check(text);
+          });
+  api.add("show_exercise", "put the current exercise's numbers into its lesson (after an answer was checked)", [this](const json&) {
+    if (!exercise_ || !checked_) throw ApiError("answer the exercise first: its numbers are shown once it was checked");
+    const json setup = exercise_tool_setup(*exercise_);
+    if (setup.is_null()) throw ApiError(exercise_->id + "'s numbers do not go into a tool");
+    show_(find_homework_problem(exercise_->id)->lesson, setup);
+    return setup;
+  });
+  api.add("homework_state", "the open problem, its exercise, the last check and the visit's scores",
+          [this](const json&) { return state_json(); });
+}
+
+void HomeworkPanel::menu_button() {
+  if (ImGui::Button("Homework") || want_map_) {
+    want_map_ = false;
+    ImGui::OpenPopup("homework-map");
+    web::dismiss_welcome();
+  }
+  web::record_control("homework");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("the handout's problems P1 to P13: each opens its tool and an exercise");
+  map_open_ = ImGui::BeginPopup("homework-map");
+  if (!map_open_) return;
+  ImGui::TextDisabled("The handout's problems: choose one to open its tool and an exercise");
+  ImGui::Separator();
+  for (const HomeworkProblem& p : homework_problems()) {
+    const auto s = scores_.find(p.id);
+    char label[256];
+    std::snprintf(label, sizeof label, "%-4s %s%s", p.id.c_str(), p.title.c_str(),
+                  s == scores_.end() ? "" : s->second.right > 0 ? "   \xE2\x9C\x93" : "   (tried)");
+    if (ImGui::Selectable(label, p.id == problem_)) {
+      try {
+        open(p.id, std::nullopt);
+        error_.clear();
+      } catch (const std::exception& x) {
+        // The lesson refused its preset (it should not, with the bundled scenes): stay here, say why.
+        error_ = p.id + " could not be opened: " + x.what();
+      }
+      ImGui::CloseCurrentPopup();
+    }
+    web::record_control(("problem-" + p.id).c_str());
+  }
+  ImGui::EndPopup();
+}
+
+void HomeworkPanel::card(const std::string& lesson_id) {
+  if (web::page().welcome && problem_.empty()) {
+    boxed(theme::rgba(232, 242, 255), [&] {
+    // Short: a first visit's panel must still fit 1280 x 800 with it (tests/e2e/panel-layout).
+    ImGui::TextWrapped("Welcome! Homework P1 to P13: each has a tool here, and an exercise the lab checks.");
+    if (ImGui::Button("Open the homework map")) {
+      web::dismiss_welcome();
+      want_map_ = true;  // opened by menu_button(), where the map's popup lives
+    }
+    web::record_control("welcome-map");
+    ui::flow(ui::button_width("Just explore"));
+    if (ImGui::Button("Just explore")) web::dismiss_welcome();
+    web::record_control("welcome-dismiss");
+    });
+    ImGui::Spacing();
+  }
+  if (!error_.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, kWrong);
+    ImGui::TextWrapped("%s", error_.c_str());
+    ImGui::PopStyleColor();
+  }
+  if (problem_.empty() || !exercise_ || exercise_->id != problem_) return;
+  const HomeworkProblem* p = find_homework_problem(problem_);
+  if (!p || p->lesson != lesson_id) return;
+
+  ImGui::PushID("homework");  // its Check and answer field apart from a lesson's own
+  boxed(theme::rgba(248, 245, 234), [&] { problem_body(*p); });
+  ImGui::PopID();
+  ImGui::Spacing();
+}
+
+void HomeworkPanel::problem_body(const HomeworkProblem& problem) {
+  const HomeworkProblem* p = &problem;
+  ImGui::TextColored(ImVec4(0.0f, 0.3f, 0.55f, 1.0f), "%s", p->id.c_str());
+  ImGui::SameLine();
+  ImGui::TextWrapped("%s", p->title.c_str());
+  ImGui::TextWrapped("%s", p->task.c_str());
+  ImGui::Separator();
+  const Exercise& e = *exercise_;
+  ImGui::TextDisabled("Exercise %s, numbers no. %llu", e.id.c_str(), static_cast<unsigned long long>(e.seed));
+  paragraphs(e.prompt);
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextWrapped("Answer: %s", e.format_hint.c_str());
+  ImGui::PopStyleColor();
+  const float check_w = ui::button_width("Check");
+  ImGui::PushItemWidth(-check_w - ImGui::GetStyle().ItemSpacing.x);
+  if (focus_answer_) {
+    ImGui::SetKeyboardFocusHere();
+    focus_answer_ = false;
+  }
+  const bool enter = ImGui::InputTextWithHint("##homework-answer", "your answer", answer_, sizeof answer_,
+                                              ImGuiInputTextFlags_EnterReturnsTrue);
+  web::record_control("answer");
+  ImGui::PopItemWidth();
+  ImGui::SameLine();
+  if (ImGui::Button("Check") || enter) {
+    check(answer_);
+    focus_answer_ = true;  // correct it and press Enter again
+  }
+  web::record_control("check");
+  if (checked_) {
+    ImGui::PushStyleColor(ImGuiCol_Text, checked_->correct ? kRight : kWrong);
+    ImGui::TextWrapped("%s", checked_->correct ? "Right." : "Not right yet.");
+    ImGui::PopStyleColor();
+    paragraphs(checked_->explanation);
+  }
+  // Predict, then reveal: the exercise's numbers go into the tool once the student has answered.
+  if (checked_) {
+    const json setup = exercise_tool_setup(e);
+    if (!setup.is_null()) {
+      if (ImGui::SmallButton("Show these numbers in the tool")) {
+        try {
+          show_(find_homework_problem(e.id)->lesson, setup);
+          error_.clear();
+        } catch (const std::exception& x) {
+          error_ = std::string("The lesson did not take these numbers: ") + x.what();  // nothing changed
+        }
+      }
+      web::record_control("show-in-tool");
+    }
+  }
+  if (ImGui::SmallButton("New numbers")) set_exercise(e.id, fresh_seed());
+  web::record_control("new-numbers");
+  const auto s = scores_.find(e.id);
+  if (s != scores_.end()) {
+    ui::flow(ImGui::CalcTextSize("this visit: 00 of 00 right").x);
+    ImGui::TextDisabled("this visit: %d of %d right", s->second.right, s->second.tried);
+  }
+  ui::flow(ui::button_width("Close"));
+  if (ImGui::SmallButton("Close")) problem_.clear();
+}
+
+}  // namespace csl::app

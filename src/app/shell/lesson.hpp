@@ -1,0 +1,78 @@
+#pragma once
+// Lessons: each is one source file holding a Lesson subclass, registered by one line at the end
+// of that file:
+//     CSL_REGISTER_LESSON(StepPrmLesson, "step-prm", "Step PRM", "Planning");
+// The registry builds the lesson menu, sorted by category and name. Lesson files are compiled
+// straight into the app (not a static library, whose linker would drop the registrations).
+#include <nlohmann/json.hpp>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/shell/context.hpp"
+#include "app/shell/stepper.hpp"
+#include "core/scene/scene.hpp"
+
+namespace csl::app {
+
+class Lesson {
+ public:
+  virtual ~Lesson() = default;
+
+  /// The controls of the side panel, once a frame.
+  virtual void panel(LabContext& ctx) = 0;
+  /// The lesson's views, filling `size` (logical pixels), once a frame.
+  virtual void views(LabContext& ctx, ImVec2 size) = 0;
+  /// Called once a frame before panel/views: advance animations, replay after edits.
+  virtual void update(LabContext&) {}
+  /// The lesson comes on screen (the app cleared the event log): log where it stands again.
+  virtual void on_show() {}
+
+  /// The scene the lesson works on (get_scene/set_scene, undo), or nullptr.
+  virtual Scene* scene() { return nullptr; }
+  /// Replaces the scene (validated by the caller) as one undoable edit; false if the lesson
+  /// cannot take it (e.g. a robot type it does not show), with the reason in `why`.
+  virtual bool accept_scene(const Scene&, std::string& why) {
+    why = "this lesson has no scene";
+    return false;
+  }
+  virtual bool undo() { return false; }
+  virtual bool redo() { return false; }
+
+  /// The lesson's state for the JS API (args may ask for more, e.g. {"roadmap": true}).
+  virtual nlohmann::json state(const nlohmann::json& args) const = 0;
+  /// Sets parameters from the JS API; throws ApiError naming a bad one, changing nothing.
+  virtual void set_params(const nlohmann::json& params) = 0;
+  /// The parameters set_params() takes, as they are now (for share links and autosave).
+  virtual nlohmann::json params() const = 0;
+
+  /// The algorithm the lesson steps (the shared playback controls, keys and API drive it), or
+  /// nullptr for a lesson with nothing to step.
+  virtual Stepper* stepper() { return nullptr; }
+  const Stepper* stepper() const { return const_cast<Lesson*>(this)->stepper(); }
+};
+
+struct LessonInfo {
+  std::string id;        ///< used in URLs and the API, e.g. "step-prm"
+  std::string name;      ///< shown in the menu
+  std::string category;  ///< menu section
+  std::function<std::unique_ptr<Lesson>()> create;
+};
+
+/// Every registered lesson, sorted by category, then name.
+const std::vector<LessonInfo>& lessons();
+const LessonInfo* find_lesson(const std::string& id);
+
+/// Registers a lesson at static-initialisation time; use CSL_REGISTER_LESSON.
+struct LessonRegistration {
+  LessonRegistration(const char* id, const char* name, const char* category,
+                     std::function<std::unique_ptr<Lesson>()> create);
+};
+
+#define CSL_REGISTER_LESSON(Type, id, name, category)                         \
+  static const ::csl::app::LessonRegistration csl_lesson_registration_##Type( \
+      id, name, category, [] { return std::unique_ptr<::csl::app::Lesson>(new Type()); })
+
+}  // namespace csl::app

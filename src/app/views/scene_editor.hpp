@@ -1,0 +1,80 @@
+#pragma once
+// Editing a scene with the mouse on a WorkspaceView: create disks (drag), polygons (click the
+// vertices, double-click or Enter to close), walls (drag); select, move, resize (a disk's rim,
+// a polygon's vertices, a wall's ends), delete; drag start and goal; undo and redo.
+// Keys: V select, D disk, P polygon, W wall, Delete, Esc, Ctrl+Z, Ctrl+Y, F fit view, ? help.
+// Edits that would make the scene invalid (a polygon with < 3 vertices or crossing edges, too
+// many obstacles) are refused with a message and change nothing.
+#include <optional>
+#include <vector>
+
+#include "app/shell/context.hpp"
+#include "app/views/workspace_view.hpp"
+#include "core/scene/scene.hpp"
+
+namespace csl::app {
+
+class SceneEditor {
+ public:
+  enum class Tool { Select, Disk, Polygon, Wall };
+
+  struct Options {
+    bool endpoints_are_points = true;  ///< start/goal are workspace points (point/polygon robot)
+    bool editable = true;              ///< false: view only (no tools)
+  };
+
+  /// Handles the mouse and keys over `view` (after view.begin() and after the scene is drawn)
+  /// and draws the editing overlays. Returns true if `scene` changed this frame, including
+  /// each frame of a drag (so views can follow live); each drag is one undo step.
+  bool edit(WorkspaceView& view, Scene& scene, LabContext& ctx, const Options& options);
+  /// The tool buttons and undo/redo, for the side panel. Returns true if `scene` changed
+  /// (Undo, Redo or Delete): the lesson must rebuild what it derives from the scene.
+  bool toolbar(Scene& scene, LabContext& ctx);
+  /// The keyboard help as a window, when asked for (? key or the toolbar's button).
+  void help_window();
+
+  Tool tool() const { return tool_; }
+  void set_tool(Tool t);
+  /// The selected obstacle, or -1.
+  int selected() const { return selected_; }
+  /// Whether a drag (of an obstacle, handle or endpoint) is in progress.
+  bool dragging() const { return drag_ != Drag::None; }
+
+  /// Records `scene` as it is before an edit made elsewhere (e.g. through the API): undoable.
+  void record(const Scene& before);
+  bool undo(Scene& scene);
+  bool redo(Scene& scene);
+  bool can_undo() const { return !undo_.empty(); }
+  bool can_redo() const { return !redo_.empty(); }
+  /// Ends the history: the scene is a new one (any drag in progress is dropped).
+  void clear_history();
+  /// Replaces `scene` by `next`, a scene from elsewhere (the API, a file): one undo step. A drag
+  /// in progress ends first, as its own undo step: it must not go on in the new scene.
+  void replace(Scene& scene, const Scene& next);
+
+ private:
+  enum class Drag { None, Obstacle, DiskRim, Vertex, WallEnd, Start, Goal, NewDisk, NewWall };
+  bool handle_keys(Scene& scene, LabContext& ctx);
+  bool begin_drag(WorkspaceView& view, Scene& scene, const Options& options);
+  bool continue_drag(WorkspaceView& view, Scene& scene, LabContext& ctx);
+  bool finish_polygon(Scene& scene, LabContext& ctx);
+  void draw_overlays(WorkspaceView& view, const Scene& scene) const;
+  bool add_obstacle(Scene& scene, Obstacle o, LabContext& ctx);
+  // Undo, redo and a new scene end a drag first: it holds an index into the scene it began in.
+  void end_drag(Scene& scene);  // as if released: a move becomes one undo step
+  void drop_drag();             // forgets it, keeping the scene as it is
+
+  Tool tool_ = Tool::Select;
+  int selected_ = -1;
+  Drag drag_ = Drag::None;
+  int target_ = -1;            // the obstacle being dragged (the selection may change meanwhile)
+  int handle_ = -1;            // vertex or wall end being dragged
+  int last_frame_ = -1;        // the ImGui frame of the last edit(): a drag spans consecutive ones
+  Vec2 grab_{0, 0};            // where the drag started (world)
+  std::optional<Scene> before_drag_;
+  std::vector<Vec2> polygon_;  // vertices of the polygon being built
+  std::vector<Scene> undo_, redo_;
+  bool show_help_ = false;
+};
+
+}  // namespace csl::app

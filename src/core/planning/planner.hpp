@@ -1,0 +1,123 @@
+#pragma once
+// A steppable sampling-based planner, as the app, the CLI and experiments see one (OMPL's
+// base::Planner plays this part there; ours steps instead of solving in one call, so that a
+// lesson can draw every step and a test can assert it). PRM (core/planning/prm.hpp) implements it; a
+// tree planner (RRT) would store its tree as a Roadmap whose edges join a child to its parent.
+//
+// The contract every planner keeps:
+// - step() does one unit of work and returns what it did; the event stays valid until the next
+//   step. Steps are deterministic from (world, start, goal, parameters, seed), so going back is
+//   a replay: run_to(k) from the start gives the identical state after k steps.
+// - finish_phase() reaches the state of stepping until phase_label() changes (or done()), emitting
+//   only the last event, so that runs of many thousands of samples build no text on the way.
+// - roadmap(), path() and the counters describe the state after steps() steps.
+#include <functional>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/checking/collision.hpp"
+#include "core/base/config.hpp"
+#include "core/planning/roadmap.hpp"
+#include "core/scene/scene.hpp"
+
+namespace csl {
+
+/// What one step did. The kinds are PRM's; other sampling-based planners reuse them (a tree's
+/// new vertex is a SampleAccepted with its `vertex`, its new edge an EdgeAdded).
+struct PlannerEvent {
+  enum class Kind {
+    AddEndpoint,          ///< vertex (0 = q_init, 1 = q_final) added
+    EndpointInCollision,  ///< q_init or q_final is not free: no path; obstacle = which
+    SampleAccepted,       ///< sample (1..n) q is free: became `vertex`
+    SampleRejected,       ///< sample q is in collision with `obstacle`
+    Neighbors,            ///< `vertex` is being connected: `candidates` new pairs to check
+    EdgeAdded,            ///< (vertex, other) proven free and added to E
+    EdgeRejected,         ///< (vertex, other) in collision at collision_t (NaN: the local
+                          ///< connector found no path)
+    PathEdgeRemoved,      ///< an edge of the found path failed the exact re-check: removed
+                          ///< (collision_t: on the failing straight piece of the edge)
+    PathFound,            ///< q_init and q_final connected: path_length
+    NoPath,               ///< not connected: the planner declares no path
+  };
+  Kind kind = Kind::AddEndpoint;
+  long step = 0;      ///< 1-based number of this step
+  int sample = -1;    ///< 1..n for sample events
+  int vertex = -1;
+  int other = -1;
+  Config q;           ///< the sample or endpoint
+  int obstacle = -1;  ///< the obstacle hit (rejected sample, endpoint in collision)
+  int candidates = 0;
+  int seen = 0;         ///< Neighbors: close pairs left out, checked already from the other vertex
+  int evaluations = 0;  ///< configurations the edge check (or the connector) evaluated
+  int skipped = 0;      ///< grid checkers: configurations the endpoints' clearances prove free, untested
+  double collision_t = std::numeric_limits<double>::quiet_NaN();
+  double path_length = 0.0;
+};
+const char* event_kind_name(PlannerEvent::Kind k);
+
+class Planner {
+ public:
+  virtual ~Planner() = default;
+
+  /// A short name: "prm".
+  virtual const char* name() const = 0;
+
+  // ---- stepping
+  virtual const PlannerEvent& step() = 0;
+  /// Steps to the end of the current phase (see the file comment).
+  virtual void finish_phase() = 0;
+  /// Steps to the end, phase by phase.
+  void run() {
+    while (!done()) finish_phase();
+  }
+  /// Back to the state before step 1.
+  virtual void reset() = 0;
+  /// To the state after `steps` steps (replaying from the start if that is behind us).
+  void run_to(long steps) {
+    if (steps < this->steps()) reset();
+    while (this->steps() < steps && !done()) step();
+  }
+  virtual bool done() const = 0;
+  virtual long steps() const = 0;
+  /// The phase's name as the API and the log show it ("sampling", "connecting", "done").
+  virtual const char* phase_label() const = 0;
+  virtual const PlannerEvent& last_event() const = 0;
+  /// How far a run to the end has come, in [0, 1] (a progress bar's, by phase: not a promise
+  /// about time).
+  virtual double progress() const = 0;
+  /// One line describing the event in words, obstacles named as `scene` lists them (the event log).
+  virtual std::string describe(const PlannerEvent& e, const Scene& scene) const = 0;
+
+  // ---- what it built
+  virtual const CollisionWorld& world() const = 0;
+  /// The graph (or tree) built so far.
+  virtual const Roadmap& roadmap() const = 0;
+  /// Edges of roadmap() still in the graph (an edge removed by a re-check stays listed, dead).
+  virtual long edges_alive() const = 0;
+  /// Connected components of the live graph.
+  virtual int components() const = 0;
+  virtual bool solved() const = 0;
+  /// Vertex indices from q_init to q_final (empty unless solved()).
+  virtual const std::vector<int>& path() const = 0;
+  /// The path as configurations, with any local connector's waypoints between its vertices.
+  virtual std::vector<Config> path_configurations() const = 0;
+  virtual double path_length() const = 0;
+
+  // ---- what it cost
+  virtual long edge_checks() const = 0;
+  /// Configurations the collision checker evaluated.
+  virtual long evaluations() const = 0;
+  virtual int samples_drawn() const = 0;
+  /// What replaying to the current step costs, in samples drawn plus edges checked: the app
+  /// replays on every frame of a drag only while this is small (app/views/drag_replay.hpp).
+  long replay_work() const { return static_cast<long>(samples_drawn()) + edge_checks(); }
+};
+
+/// Makes a planner from start to goal in `world` (which must outlive it), with parameters the
+/// factory holds: how the app's sessions and experiments get a planner without naming its type.
+using PlannerFactory =
+    std::function<std::unique_ptr<Planner>(const CollisionWorld& world, const Config& start, const Config& goal)>;
+
+}  // namespace csl

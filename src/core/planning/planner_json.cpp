@@ -1,0 +1,38 @@
+#include "core/planning/planner_json.hpp"
+
+#include <nlohmann/json.hpp>
+
+namespace csl {
+
+using json = nlohmann::json;
+
+json planner_state_json(const Planner& planner, bool roadmap) {
+  const Roadmap& r = planner.roadmap();
+  json path = json::array();
+  for (const Config& q : planner.path_configurations()) path.push_back(config_to_json(q));
+  json out{{"phase", planner.phase_label()},
+           {"steps", planner.steps()},
+           {"done", planner.done()},
+           {"nodes", r.vertices.size()},
+           {"edges", planner.edges_alive()},
+           {"components", planner.components()},
+           {"edge_checks", planner.edge_checks()},
+           {"evaluations", planner.evaluations()},
+           {"samples_drawn", planner.samples_drawn()},
+           {"solved", planner.solved()},
+           {"path", path},
+           {"path_length", planner.solved() ? json(planner.path_length()) : json(nullptr)},
+           {"roadmap_hash", roadmap_hash_text(r)},
+           {"last_event", planner.steps() > 0 ? json(event_kind_name(planner.last_event().kind)) : json(nullptr)}};
+  if (roadmap) {
+    json vertices = json::array(), edges = json::array();
+    for (const Config& q : r.vertices) vertices.push_back(config_to_json(q));
+    for (const RoadmapEdge& e : r.edges)
+      if (e.alive) edges.push_back(json::array({e.a, e.b}));
+    out["vertices"] = vertices;
+    out["edge_list"] = edges;
+  }
+  return out;
+}
+
+}  // namespace csl

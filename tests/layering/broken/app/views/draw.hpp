@@ -1,0 +1,3 @@
+#pragma once
+// Broken on purpose: a shared view naming a lesson.
+#include "app/lessons/planner_session.hpp"
