@@ -60,20 +60,7 @@ FieldValue attractive_field(const Vec2& x, const Vec2& goal, double zeta, double
 /// The repulsive field of one obstacle, given rho and grad rho there (SHV (5.5), (5.6)).
 FieldValue repulsive_field(const ObstacleDistance& r, double eta, double rho0);
 
-/// d o_i / d q: 2 rows, one column per configuration coordinate.
-using PointJacobian = Eigen::Matrix<double, 2, Eigen::Dynamic, Eigen::ColMajor, 2, kMaxDim>;
-
-/// A control point at a configuration: where it is and its Jacobian there.
-struct ControlPoint {
-  Vec2 position{0.0, 0.0};
-  PointJacobian jacobian;
-};
-
-/// The robot's control points at q (see the file comment for which and in what order).
-void control_points(const Robot& robot, const Config& q, std::vector<ControlPoint>& out);
-std::vector<ControlPoint> control_points(const Robot& robot, const Config& q);
-/// "point", "elbow", "tip", "vertex 0", "vertex 1", ...
-std::string control_point_name(const Robot& robot, int i);
+// Control points, their Jacobians and names: each robot type's (core/robots/robot.hpp).
 
 /// J^T F: the configuration-space force of a workspace force F applied at a control point.
 Config generalized_force(const PointJacobian& jacobian, const Vec2& force);

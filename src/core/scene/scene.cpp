@@ -9,77 +9,14 @@
 #include "core/base/angles.hpp"
 #include "core/base/overloaded.hpp"
 #include "core/base/text.hpp"
+#include "core/geometry/json_fields.hpp"
 
 namespace csl {
 namespace {
 
 using json = nlohmann::json;
 
-[[noreturn]] void fail(const std::string& path, const std::string& what) {
-  throw SceneError(path + ": " + what);
-}
-
-// A number in few digits for a message ("1e-15", "0.25").
-std::string shortest(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", v);
-  return text;
-}
-
-// A field's value in a message: a string quoted (escaped, cut), anything else by its kind.
-// Never dump(): it recurses, and a value nested 100000 deep overflows the stack.
-std::string value_text(const json& v) {
-  if (v.is_string()) return '"' + printable(v.get_ref<const std::string&>(), 40) + '"';
-  if (v.is_number()) return shortest(v.get<double>());
-  return std::string("a JSON ") + v.type_name();
-}
-
-std::string join(const std::string& path, const char* key) { return path.empty() ? key : path + "." + key; }
-
-const json& field(const json& obj, const char* key, const std::string& path) {
-  auto it = obj.find(key);
-  if (it == obj.end()) fail(join(path, key), "missing");
-  return *it;
-}
-
-void expect_object(const json& j, const std::string& path, std::initializer_list<const char*> keys) {
-  if (!j.is_object()) fail(path.empty() ? "scene" : path, "must be a JSON object");
-  for (auto it = j.begin(); it != j.end(); ++it) {
-    bool known = false;
-    for (const char* k : keys) known = known || it.key() == k;
-    if (!known) fail(join(path, printable(it.key(), 40).c_str()), "unknown field");
-  }
-}
-
-double number(const json& j, const std::string& path) {
-  if (!j.is_number()) fail(path, "must be a number");
-  const double v = j.get<double>();
-  if (!std::isfinite(v)) fail(path, "must be finite");
-  if (std::fabs(v) > kMaxCoordinate) fail(path, "must be within +-1e6");
-  return v;
-}
-
-Vec2 point(const json& j, const std::string& path) {
-  if (!j.is_array() || j.size() != 2) fail(path, "must be an array of 2 numbers");
-  return {number(j[0], path + "[0]"), number(j[1], path + "[1]")};
-}
-
-Polygon polygon(const json& j, const std::string& path, std::size_t max_vertices) {
-  if (!j.is_array()) fail(path, "must be an array of [x, y] points");
-  if (j.size() > max_vertices) fail(path, "has more than " + std::to_string(max_vertices) + " vertices");
-  Polygon p;
-  for (std::size_t i = 0; i < j.size(); ++i) p.push_back(point(j[i], path + "[" + std::to_string(i) + "]"));
-  if (const char* problem = polygon_problem(p); *problem) fail(path, problem);
-  return p;
-}
-
-json point_json(const Vec2& p) { return json::array({p.x(), p.y()}); }
-
-json polygon_json(const Polygon& poly) {
-  json out = json::array();
-  for (const Vec2& v : poly) out.push_back(point_json(v));
-  return out;
-}
+using namespace json_fields;
 
 Obstacle obstacle(const json& o, const std::string& path) {
   if (!o.is_object()) fail(path, "must be an object");
@@ -99,39 +36,6 @@ Obstacle obstacle(const json& o, const std::string& path) {
     return Wall{point(field(o, "a", path), path + ".a"), point(field(o, "b", path), path + ".b")};
   }
   fail(path + ".type", "unknown obstacle type " + value_text(type) + " (disk, polygon or segment)");
-}
-
-Robot robot(const json& r) {
-  if (!r.is_object()) fail("robot", "must be an object");
-  const json& type = field(r, "type", "robot");
-  if (type == "point") {
-    expect_object(r, "robot", {"type"});
-    return PointRobot{};
-  }
-  if (type == "arm2" || type == "arm") {
-    // "arm2": the 2-link arm of the lessons, two lengths; "arm": 1 to ArmRobot::kMaxLinks links.
-    expect_object(r, "robot", {"type", "base", "lengths"});
-    ArmRobot arm;
-    arm.base = point(field(r, "base", "robot"), "robot.base");
-    const json& l = field(r, "lengths", "robot");
-    const std::size_t most = type == "arm2" ? 2 : static_cast<std::size_t>(ArmRobot::kMaxLinks);
-    const std::size_t least = type == "arm2" ? 2 : 1;
-    if (!l.is_array() || l.size() < least || l.size() > most)
-      fail("robot.lengths", type == "arm2" ? std::string("must be an array of 2 numbers")
-                                           : "must be an array of 1 to " + std::to_string(most) + " numbers");
-    arm.lengths.clear();
-    for (std::size_t i = 0; i < l.size(); ++i) {
-      arm.lengths.push_back(number(l[i], "robot.lengths[" + std::to_string(i) + "]"));
-      if (!(arm.lengths.back() > 0.0)) fail("robot.lengths", "link lengths must be > 0");
-    }
-    // A 2-link "arm" is the "arm2" it writes back as (scene_to_json names it by its links).
-    return arm;
-  }
-  if (type == "polygon") {
-    expect_object(r, "robot", {"type", "vertices"});
-    return make_polygon_robot(polygon(field(r, "vertices", "robot"), "robot.vertices", kMaxRobotVertices));
-  }
-  fail("robot.type", "unknown robot type " + value_text(type) + " (point, arm2, arm or polygon)");
 }
 
 Config configuration(const json& j, const char* name, const Robot& r, const Vec2& lo, const Vec2& hi) {
@@ -204,7 +108,7 @@ Scene scene_from_json(const json& j) {
     if (std::max(w, h) > kMaxWorkspaceAspect * std::min(w, h))
       fail("workspace", "one side may be at most 100 times the other (it is " + shortest(w) + " by " + shortest(h) + ")");
   }
-  if (auto r = j.find("robot"); r != j.end()) s.robot = robot(*r);
+  if (auto r = j.find("robot"); r != j.end()) s.robot = robot_from_json(*r);
   if (auto obs = j.find("obstacles"); obs != j.end()) {
     if (!obs->is_array()) fail("obstacles", "must be an array");
     if (obs->size() > kMaxObstacles) fail("obstacles", "more than " + std::to_string(kMaxObstacles) + " obstacles");
@@ -269,13 +173,7 @@ bool same_scene(const Scene& a, const Scene& b) { return scene_to_json(a) == sce
 json scene_to_json(const Scene& s) {
   json obstacles = json::array();
   for (const Obstacle& o : s.obstacles) obstacles.push_back(obstacle_to_json(o));
-  json robot_json{{"type", robot_type_name(s.robot)}};
-  if (const auto* arm = std::get_if<ArmRobot>(&s.robot)) {
-    robot_json["base"] = point_json(arm->base);
-    robot_json["lengths"] = arm->lengths;
-  } else if (const auto* poly = std::get_if<PolygonRobot>(&s.robot)) {
-    robot_json["vertices"] = polygon_json(poly->body);
-  }
+  const json robot_json = robot_to_json(s.robot);
   json out{{"version", 1},
            {"workspace", {{"min", point_json(s.workspace_min)}, {"max", point_json(s.workspace_max)}}},
            {"robot", robot_json},

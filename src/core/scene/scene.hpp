@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "core/base/config.hpp"
+#include "core/geometry/json_fields.hpp"  // SceneError, kMaxCoordinate
 #include "core/geometry/obstacles.hpp"
 #include "core/robots/robot.hpp"
 
@@ -32,8 +33,6 @@ namespace csl {
 /// Limits that keep a scene something a browser tab can hold and draw.
 inline constexpr std::size_t kMaxObstacles = 1000;
 inline constexpr std::size_t kMaxPolygonVertices = 256;
-inline constexpr std::size_t kMaxRobotVertices = 32;
-inline constexpr double kMaxCoordinate = 1e6;  ///< |any coordinate or length| in a scene
 inline constexpr std::size_t kMaxNameLength = 200;
 /// The workspace's sides: each at least this long, and the longer at most kMaxWorkspaceAspect
 /// times the shorter. A view fits the workspace to its pixels; a side of 1e-15 (or 5e-324) left
@@ -55,12 +54,6 @@ struct Scene {
   std::vector<Obstacle> obstacles;
   Config start = config({0.0, 0.0});
   Config goal = config({1.0, 1.0});
-};
-
-/// Thrown for invalid scene JSON; what() names the offending field, e.g. "obstacles[2].radius: ...".
-class SceneError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
 };
 
 /// JSON nested deeper than this is refused by parse_json_text(): no scene needs more than 4
