@@ -16,11 +16,11 @@ int run_descend(Args& args, std::ostream& os) {
   const auto to = args.take("to");
   const PotentialParams field_params = take_potential_options(args);
   DescentParams d;
-  d.step = take_number(args, "step", d.step, true);
+  d.step = take_param(args, kDescentStep);
   d.tolerance = take_number(args, "tolerance", d.tolerance, false);
   d.walk_step = take_number(args, "walk-step", d.walk_step, true);
   if (const auto v = args.take("max-steps")) d.max_steps = static_cast<int>(parse_count(*v, "--max-steps", kMaxDescentSteps));
-  if (const auto v = args.take("escapes")) d.escapes = static_cast<int>(parse_count(*v, "--escapes", 10000));
+  d.escapes = static_cast<int>(take_param(args, kDescentEscapes));
   if (const auto v = args.take("walk-steps")) d.walk_steps = static_cast<int>(parse_count(*v, "--walk-steps", 10000, 1));
   if (const auto v = args.take("window")) d.window = static_cast<int>(parse_count(*v, "--window", 10000, 1));
   if (const auto v = args.take("seed")) d.seed = static_cast<std::uint64_t>(parse_count(*v, "--seed", 9007199254740991LL));
@@ -97,10 +97,11 @@ const Command kDescendCommand{
     "otherwise it is halved, at most 6 times; a step that stays blocked means a local minimum.\n"
     "It stops at the goal (within T, default 0.01), after N motion steps (default 2000, at most\n"
     "100000), or in a local minimum: |tau| <= 1e-9, or the last W descent steps (default 20)\n"
-    "moved q less than 2 A in all. With escapes left (K, default 0: plain descent) a local\n"
-    "minimum starts a random walk of L steps (default 40), each adding to every coordinate a\n"
-    "number uniform in [-V, V] (default 0.1; the polygon's angle: [-V/R, V/R]), seeded by S\n"
-    "(default 1), redrawn if blocked; then the descent resumes.\n\n" CSPACELAB_POTENTIAL_OPTIONS_HELP
+    "moved q less than 2 A in all. With escapes left (K, default 0: plain descent; at most\n"
+    "10000) a local minimum starts a random walk of L steps (default 40), each adding to every\n"
+    "coordinate a number uniform in [-V, V] (default 0.1; the polygon's angle: [-V/R, V/R]),\n"
+    "seeded by S (default 1), redrawn if blocked; then the descent resumes.\n\n" +
+    potential_options_help() +
     "\nOutput: {\"outcome\": \"goal\" (reached without random walks) | \"escaped\" (reached after\n"
     "  one or more) | \"local_minimum\" (stuck, no escapes left) | \"max_steps\",\n"
     "  \"trajectory\": [Q, ...] (from the start, every configuration moved to; each straight\n"

@@ -3,8 +3,8 @@
 #include <stdexcept>
 
 #include "cli/commands.hpp"
-#include "core/teaching/homework.hpp"
 #include "core/base/text.hpp"
+#include "core/teaching/homework.hpp"
 
 namespace csl::cli {
 namespace {

@@ -108,8 +108,8 @@ const Command kPotentialCommand{
     "Evaluates the potential field toward --goal (default: the scene's goal) at --at Q,\n"
     "control point by control point (homework P13). Q is comma-separated numbers: x,y\n"
     "(point), theta1,theta2 (arm2, radians, theta2 relative to link 1; an N-link arm: N angles),\n"
-    "x,y,theta (polygon).\n\n"
-    CSPACELAB_POTENTIAL_OPTIONS_HELP
+    "x,y,theta (polygon).\n\n" +
+    potential_options_help() +
     "\nWhere rho has no gradient: on or inside an obstacle rho = 0 and grad rho points the\n"
     "quickest way out (on the boundary: the outward normal; a wall: its left normal; a disk's\n"
     "centre: +x); on a concave polygon's medial axis, the nearest point of the lowest-index\n"

@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
-#include "core/checking/collision.hpp"
 #include "core/base/rng.hpp"
+#include "core/checking/collision.hpp"
 
 namespace bench {
 

@@ -159,18 +159,18 @@ test('plan --connector potential: edges are descents, the path runs through thei
 test('bad input: one line naming the problem, exit status 2', () => {
   fails(/missing --at Q/, 'potential', P13);
   fails(/--at: expected 3 comma-separated numbers for robot type 'polygon', got 2/, 'potential', P13, '--at', '0.5,0.5');
-  fails(/--rho0: must be > 0, got 0/, 'potential', P13, '--at', '0.5,0.5,0', '--rho0', '0');
-  fails(/--eta: must be >= 0, got -1/, 'potential', P13, '--at', '0.5,0.5,0', '--eta', '-1');
+  fails(/--rho0: '0' is not a number > 0/, 'potential', P13, '--at', '0.5,0.5,0', '--rho0', '0');
+  fails(/--eta: '-1' is not a number >= 0/, 'potential', P13, '--at', '0.5,0.5,0', '--eta', '-1');
   fails(/--switch: 'x' is not a finite number/, 'potential', P13, '--at', '0.5,0.5,0', '--switch', 'x');
   fails(/--goal: .* lies outside the workspace/, 'potential', P13, '--at', '0.5,0.5,0', '--goal', '2,2,0');
   fails(/unknown option --escapes/, 'potential', P13, '--at', '0.5,0.5,0', '--escapes', '3');
   fails(/nope\.json: cannot read file/, 'potential', 'nope.json', '--at', '0,0');
   fails(/the start is in collision with obstacles\[0\] \(a polygon\)/, 'descend', CUP, '--from', '0.35,0.5');
   fails(/the goal is in collision with obstacles\[0\]/, 'descend', CUP, '--to', '0.5,0.65');
-  fails(/--step: must be > 0, got -0.1/, 'descend', CUP, '--step', '-0.1');
+  fails(/--step: '-0.1' is not a number > 0/, 'descend', CUP, '--step', '-0.1');
   fails(/--max-steps: '1000000' is not an integer in \[0, 100000\]/, 'descend', CUP, '--max-steps', '1000000');
   fails(/--walk-steps: '0' is not an integer in \[1, 10000\]/, 'descend', CUP, '--walk-steps', '0');
-  fails(/--escapes: 'two' is not an integer/, 'descend', CUP, '--escapes', 'two');
+  fails(/--escapes: 'two' is not an integer in \[0, 10000\]/, 'descend', CUP, '--escapes', 'two');
   fails(/--tolerance: must be >= 0/, 'descend', CUP, '--tolerance', '-1');
   fails(/unexpected argument 'extra'/, 'descend', CUP, 'extra');
 });

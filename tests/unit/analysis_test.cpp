@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "core/teaching/analysis.hpp"
 #include "core/base/angles.hpp"
+#include "core/teaching/analysis.hpp"
 
 using doctest::Approx;
 

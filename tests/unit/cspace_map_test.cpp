@@ -9,9 +9,9 @@
 #include <string>
 
 #include "core/base/angles.hpp"
+#include "core/base/rng.hpp"
 #include "core/checking/collision.hpp"
 #include "core/teaching/cspace_map.hpp"
-#include "core/base/rng.hpp"
 
 using csl::AngleInterval;
 using csl::config;

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "core/base/angles.hpp"
-#include "core/teaching/cspace_quads.hpp"
 #include "core/base/rng.hpp"
+#include "core/teaching/cspace_quads.hpp"
 
 using csl::CSpaceQuad;
 using csl::kPi;

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <cstring>
 
-#include "core/fields/descent.hpp"
 #include "core/checking/edge_check.hpp"
+#include "core/fields/descent.hpp"
 
 using csl::config;
 using csl::Config;

@@ -17,8 +17,8 @@
 #include <cmath>
 #include <string>
 
-#include "core/geometry/geometry.hpp"
 #include "core/base/rng.hpp"
+#include "core/geometry/geometry.hpp"
 
 using csl::Vec2;
 

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "core/base/angles.hpp"
-#include "core/checking/edge_check.hpp"
 #include "core/base/rng.hpp"
+#include "core/checking/edge_check.hpp"
 #include "core/scene/scene.hpp"
 
 using csl::config;

@@ -22,8 +22,8 @@
 #include <string>
 #include <vector>
 
-#include "core/geometry/geometry.hpp"
 #include "core/base/rng.hpp"
+#include "core/geometry/geometry.hpp"
 
 using csl::Polygon;
 using csl::Vec2;

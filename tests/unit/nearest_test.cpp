@@ -5,8 +5,8 @@
 
 #include <algorithm>
 
-#include "core/planning/nearest.hpp"
 #include "core/base/rng.hpp"
+#include "core/planning/nearest.hpp"
 
 using csl::Config;
 using csl::Space;

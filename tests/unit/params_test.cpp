@@ -5,8 +5,8 @@
 #include <cmath>
 #include <string>
 
-#include "core/checking/edge_check.hpp"
 #include "core/base/params.hpp"
+#include "core/checking/edge_check.hpp"
 #include "core/planning/prm.hpp"
 
 namespace {

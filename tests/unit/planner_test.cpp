@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "core/teaching/experiment.hpp"
 #include "core/planning/planner_json.hpp"
 #include "core/planning/prm.hpp"
 #include "core/scene/scene.hpp"
+#include "core/teaching/experiment.hpp"
 
 namespace {
 csl::CollisionWorld wall_with_gap() {

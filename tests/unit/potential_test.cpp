@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "core/base/angles.hpp"
-#include "core/fields/potential.hpp"
 #include "core/base/rng.hpp"
+#include "core/fields/potential.hpp"
 
 using csl::config;
 using csl::Config;

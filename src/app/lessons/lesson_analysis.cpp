@@ -22,15 +22,15 @@
 #include <vector>
 
 #include "app/shell/bundled_scenes.hpp"
-#include "app/views/draw.hpp"
 #include "app/shell/js_api.hpp"
 #include "app/shell/lesson.hpp"
-#include "app/shell/param_widgets.hpp"
 #include "app/shell/panel.hpp"
-#include "app/views/plot.hpp"
-#include "app/views/scene_editor.hpp"
+#include "app/shell/param_widgets.hpp"
 #include "app/shell/theme.hpp"
 #include "app/shell/ui.hpp"
+#include "app/views/draw.hpp"
+#include "app/views/plot.hpp"
+#include "app/views/scene_editor.hpp"
 #include "core/teaching/experiment.hpp"
 #include "core/teaching/work.hpp"
 

@@ -12,10 +12,10 @@
 
 #include "app/shell/js_api.hpp"
 #include "app/shell/lesson.hpp"
-#include "app/views/surface_view.hpp"
 #include "app/shell/theme.hpp"
 #include "app/shell/ui.hpp"
 #include "app/shell/web_bridge.hpp"
+#include "app/views/surface_view.hpp"
 #include "core/base/angles.hpp"
 #include "core/teaching/notation.hpp"
 

@@ -15,23 +15,24 @@
 #include <optional>
 
 #include "app/shell/bundled_scenes.hpp"
-#include "app/views/draw.hpp"
-#include "app/views/field_draw.hpp"
 #include "app/shell/fonts.hpp"
 #include "app/shell/js_api.hpp"
 #include "app/shell/lesson.hpp"
 #include "app/shell/panel.hpp"
-#include "core/planning/prm_text.hpp"
-#include "app/views/scene_editor.hpp"
+#include "app/shell/param_widgets.hpp"
 #include "app/shell/theme.hpp"
-#include "app/shell/web_bridge.hpp"
 #include "app/shell/ui.hpp"
+#include "app/shell/web_bridge.hpp"
+#include "app/views/draw.hpp"
+#include "app/views/field_draw.hpp"
+#include "app/views/scene_editor.hpp"
 #include "core/base/angles.hpp"
-#include "core/teaching/cspace_map.hpp"
 #include "core/fields/descent.hpp"
-#include "core/geometry/geometry.hpp"
 #include "core/fields/potential.hpp"
 #include "core/fields/scalar_grid.hpp"
+#include "core/geometry/geometry.hpp"
+#include "core/planning/prm_text.hpp"
+#include "core/teaching/cspace_map.hpp"
 #include "core/teaching/work.hpp"
 
 namespace csl::app {
@@ -335,15 +336,14 @@ class PotentialLesson : public Lesson, private Stepper {
     };
     for (auto it = j.begin(); it != j.end(); ++it) {
       const std::string& k = it.key();
-      if (k == "rho0") f.rho0 = number(*it, k);
-      else if (k == "eta") f.eta = number(*it, k);
-      else if (k == "zeta") f.zeta = number(*it, k);
-      else if (k == "switch") f.switch_distance = number(*it, k);
-      else if (k == "step") d.step = number(*it, k);
-      else if (k == "escapes") {
-        if (!it->is_number_integer() || it->get<long long>() < 0 || it->get<long long>() > 100) throw ApiError("escapes: an integer from 0 to 100");
-        d.escapes = it->get<int>();
-      } else if (k == "seed") {
+      // The field's and the descent's numbers: their specs' ranges and texts (core/base/params.hpp).
+      if (k == "rho0") f.rho0 = api_param(kFieldRho0, *it);
+      else if (k == "eta") f.eta = api_param(kFieldEta, *it);
+      else if (k == "zeta") f.zeta = api_param(kFieldZeta, *it);
+      else if (k == "switch") f.switch_distance = api_param(kFieldSwitch, *it);
+      else if (k == "step") d.step = api_param(kDescentStep, *it);
+      else if (k == "escapes") d.escapes = static_cast<int>(api_param(kDescentEscapes, *it));
+      else if (k == "seed") {
         if (!it->is_number_unsigned()) throw ApiError("seed: an integer >= 0");
         d.seed = it->get<std::uint64_t>();
       } else if (k == "point") {

@@ -3,17 +3,17 @@
 #include <cstdio>
 #include <memory>
 
+#include "app/lessons/planner_session.hpp"
+#include "app/lessons/prm_controls.hpp"
 #include "app/shell/bundled_scenes.hpp"
+#include "app/shell/js_api.hpp"
+#include "app/shell/lesson.hpp"
+#include "app/shell/theme.hpp"
 #include "app/views/drag_replay.hpp"
 #include "app/views/draw.hpp"
-#include "app/shell/js_api.hpp"
-#include "app/lessons/planner_session.hpp"
-#include "app/shell/lesson.hpp"
-#include "app/lessons/prm_controls.hpp"
+#include "app/views/scene_editor.hpp"
 #include "core/planning/planner_json.hpp"
 #include "core/planning/prm_text.hpp"
-#include "app/views/scene_editor.hpp"
-#include "app/shell/theme.hpp"
 
 namespace csl::app {
 namespace {

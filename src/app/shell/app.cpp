@@ -7,12 +7,12 @@
 #include <limits>
 #include <optional>
 
+#include "app/shell/bundled_scenes.hpp"
 #include "app/shell/fonts.hpp"
 #include "app/shell/js_api.hpp"
 #include "app/shell/panel.hpp"
 #include "app/shell/theme.hpp"
 #include "app/shell/ui.hpp"
-#include "app/shell/bundled_scenes.hpp"
 #include "app/shell/web_bridge.hpp"
 #include "core/base/version.hpp"
 

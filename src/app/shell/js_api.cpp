@@ -1,7 +1,7 @@
 #include "app/shell/js_api.hpp"
 
-#include "core/scene/scene.hpp"
 #include "core/base/text.hpp"
+#include "core/scene/scene.hpp"
 
 #ifdef __EMSCRIPTEN__
 #include <emscripten.h>

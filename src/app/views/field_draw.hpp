@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "app/views/workspace_view.hpp"
-#include "core/teaching/cspace_map.hpp"
 #include "core/fields/scalar_grid.hpp"
+#include "core/teaching/cspace_map.hpp"
 
 namespace csl::app {
 

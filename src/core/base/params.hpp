@@ -67,7 +67,7 @@ inline constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // --- PRM (core/planning/prm.hpp, the Step PRM and torus lessons, cspacelab plan) ---
 
-/// n. kMaxPrmSamples (prm.hpp) is this max; params.cpp checks they agree.
+/// n. kMaxPrmSamples (prm.hpp) is defined as this max.
 inline constexpr ParamSpec kPrmSamples{"samples", "samples", true, 0, 1000000, 200, 1, "samples",
                                        "samples drawn (only free ones are kept)", true};
 /// The most samples the lab plans with: kLabMaxPairs (work.hpp) assumes it (k = 50 at 20000
@@ -79,7 +79,7 @@ inline constexpr ParamSpec kLabTorusSamples = kPrmSamples.in_lab(0, 5000, 200);
 /// K of "k:K" (NeighborRule::parse) and --k.
 inline constexpr ParamSpec kNeighborK{"k", "k", true, 1, 1000, 10, 1, "vertices",
                                       "nearest vertices each vertex tries to join"};
-/// N of "grid:N" (EdgeCheckerSpec::parse); kMaxGridResolution (edge_check.hpp) is this max.
+/// N of "grid:N" (EdgeCheckerSpec::parse); kMaxGridResolution (edge_check.hpp) is defined as this max.
 inline constexpr ParamSpec kCheckerGridN{"N", "", true, 2, 1000000, 5, 1, "configurations",
                                          "configurations checked along an edge, its ends included", true};
 /// D of "step:D": any D > 0 (a D finer than an edge's length / 1e6 is refused per edge).
@@ -133,11 +133,31 @@ inline constexpr ParamSpec kTracedGridN{"grid_n", "", true, 2, 100000, 4, 1, "co
 inline constexpr ParamSpec kMinGridMax{"max", "max", true, 2, 100000, 1000, 1, "configurations",
                                        "the largest N --min-grid tries", true};
 
+// --- potential fields and descent (core/fields/, the potential lesson, cspacelab potential and
+// descend). Defaults are PotentialParams' and DescentParams'; the lab's sliders show a practical
+// part of each range.
+
+inline constexpr ParamSpec kFieldZeta{"zeta", "zeta", false, 0, kInf, 1.0, 0.1, "", "attractive gain", true};
+inline constexpr ParamSpec kFieldSwitch{"switch", "switch", false, 0, kInf, 0.2, 0.01, "",
+                                        "d: the attraction is quadratic within d of the goal, conic beyond",
+                                        false, true};
+inline constexpr ParamSpec kFieldEta{"eta", "eta", false, 0, kInf, 1e-4, 1e-5, "", "repulsive gain", true};
+inline constexpr ParamSpec kFieldRho0{"rho0", "rho0", false, 0, kInf, 0.1, 0.01, "",
+                                      "rho0: each obstacle's region of influence", false, true};
+inline constexpr ParamSpec kDescentStep{"step", "step", false, 0, kInf, 0.01, 0.001, "",
+                                        "alpha: the length of one descent step", true, true};
+/// Random walks from local minima. One range for the lab and the CLI (the lab took 0..100, the
+/// CLI 0..10000): the lab's run is bounded by its steps, not by its walks.
+inline constexpr ParamSpec kDescentEscapes{"escapes", "escapes", true, 0, 10000, 0, 1, "walks",
+                                           "random walks allowed from local minima (0: plain descent)"};
+
 /// Every spec above, for tests and tools that check them all.
 inline constexpr const ParamSpec* kAllParams[] = {
     &kPrmSamples,        &kLabPrmSamples,        &kLabTorusSamples,     &kNeighborK,    &kCheckerGridN,
     &kCheckerStepD,      &kLabCheckerStepD,      &kSeed,                &kExperimentTrials,
     &kLabExperimentTrials, &kExperimentSamples,  &kLabExperimentSamples, &kReferenceSamples,
-    &kVisibilityTrials,  &kLabVisibilityTrials,  &kMcSeed,              &kTracedGridN,  &kMinGridMax};
+    &kVisibilityTrials,  &kLabVisibilityTrials,  &kMcSeed,              &kTracedGridN,  &kMinGridMax,
+    &kFieldZeta,         &kFieldSwitch,          &kFieldEta,            &kFieldRho0,    &kDescentStep,
+    &kDescentEscapes};
 
 }  // namespace csl

@@ -32,23 +32,24 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/base/params.hpp"
+#include "core/base/rng.hpp"
 #include "core/checking/edge_check.hpp"
 #include "core/fields/potential.hpp"
-#include "core/base/rng.hpp"
 
 namespace csl {
 
 inline constexpr int kMaxWalkDraws = 20;
 
 struct DescentParams {
-  double step = 0.01;         ///< alpha: length of a descent step in the C-space metric
+  double step = kDescentStep.def;  ///< alpha: length of a descent step in the C-space metric
   double tolerance = 0.01;    ///< the goal is reached within this distance
   int max_steps = 2000;       ///< budget of motion steps (descent + random walk)
   double min_force = 1e-9;    ///< |tau| at most this: a critical point
   int window = 20;            ///< descent steps over which progress is measured
   double min_progress = 2.0;  ///< less than min_progress * step over the window: stuck
   int max_halvings = 6;       ///< a blocked step is halved at most this many times
-  int escapes = 0;            ///< random walks allowed (0: plain descent)
+  int escapes = static_cast<int>(kDescentEscapes.def);  ///< random walks allowed (0: plain descent)
   // A walk of 40 steps of up to 0.1 per coordinate wanders about 0.1 sqrt(40/3) ~ 0.37 (RMS per
   // coordinate): in a unit workspace, enough to leave a basin a few tenths across (the cup of
   // the tests), mostly within a few escapes.

@@ -9,8 +9,6 @@
 namespace csl {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
 Config zeros(int n) {
   Config z(n);
   for (int i = 0; i < n; ++i) z[i] = 0.0;

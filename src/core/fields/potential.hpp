@@ -32,6 +32,7 @@
 #include <string>
 #include <vector>
 
+#include "core/base/params.hpp"
 #include "core/checking/collision.hpp"
 #include "core/geometry/obstacle_distance.hpp"
 
@@ -41,10 +42,11 @@ namespace csl {
 /// control point feels at most d zeta = 0.2 of attraction; the repulsion matches that at about
 /// rho = 0.06 and is 10 at rho = 0.02 (and only within rho0 = 0.1 of an obstacle).
 struct PotentialParams {
-  double zeta = 1.0;             ///< attractive gain
-  double switch_distance = 0.2;  ///< d: quadratic within d of the goal position, conic beyond
-  double eta = 1e-4;             ///< repulsive gain
-  double rho0 = 0.1;             ///< region of influence of every obstacle
+  // The defaults are the specs' (core/base/params.hpp: the CLI's and the API's ranges).
+  double zeta = kFieldZeta.def;              ///< attractive gain
+  double switch_distance = kFieldSwitch.def;  ///< d: quadratic within d of the goal position, conic beyond
+  double eta = kFieldEta.def;                ///< repulsive gain
+  double rho0 = kFieldRho0.def;              ///< region of influence of every obstacle
   /// What is wrong (e.g. "rho0 must be > 0"), or "" if the parameters are usable.
   std::string problem() const;
 };

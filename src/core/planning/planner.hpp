@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "core/checking/collision.hpp"
 #include "core/base/config.hpp"
+#include "core/checking/collision.hpp"
 #include "core/planning/roadmap.hpp"
 #include "core/scene/scene.hpp"
 

@@ -1,8 +1,8 @@
 #include "core/planning/prm.hpp"
 
 #include "core/base/params.hpp"
-#include "core/planning/prm_text.hpp"
 #include "core/base/text.hpp"
+#include "core/planning/prm_text.hpp"
 
 #include <algorithm>
 #include <cmath>

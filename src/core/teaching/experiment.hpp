@@ -12,9 +12,9 @@
 #include <functional>
 #include <vector>
 
-#include "core/teaching/analysis.hpp"
 #include "core/planning/planner.hpp"
 #include "core/planning/prm.hpp"
+#include "core/teaching/analysis.hpp"
 
 namespace csl {
 

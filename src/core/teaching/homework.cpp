@@ -6,8 +6,8 @@
 #include <stdexcept>
 
 #include "core/base/angles.hpp"
-#include "core/teaching/notation.hpp"
 #include "core/base/text.hpp"
+#include "core/teaching/notation.hpp"
 
 namespace csl {
 

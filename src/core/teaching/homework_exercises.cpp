@@ -5,16 +5,16 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "core/teaching/analysis.hpp"
 #include "core/base/angles.hpp"
+#include "core/base/rng.hpp"
 #include "core/checking/collision.hpp"
 #include "core/checking/edge_check.hpp"
+#include "core/fields/potential.hpp"
 #include "core/geometry/geometry.hpp"
+#include "core/scene/scene.hpp"
+#include "core/teaching/analysis.hpp"
 #include "core/teaching/homework.hpp"
 #include "core/teaching/notation.hpp"
-#include "core/fields/potential.hpp"
-#include "core/base/rng.hpp"
-#include "core/scene/scene.hpp"
 
 namespace csl {
 

@@ -9,8 +9,8 @@
 // from the parameters alone, deterministic (no clocks), and on the high side for the edges
 // (the ends' clearances settle most roadmap edges without a configuration: measured on the
 // bundled scenes at n = 2000, bisection evaluates 0.1 to 1.5 configurations per edge).
-#include "core/teaching/experiment.hpp"
 #include "core/planning/prm.hpp"
+#include "core/teaching/experiment.hpp"
 
 namespace csl {
 
