@@ -52,7 +52,7 @@ std::string count_text(double m) {
 enum Tab { kBoundTab = 0, kVisibilityTab = 1, kTilingTab = 2 };
 const char* tab_name(int tab) { return tab == kBoundTab ? "bound" : tab == kTilingTab ? "tiling" : "visibility"; }
 
-class AnalysisLesson : public Lesson, private Stepper {
+class AnalysisLesson : public Lesson, private NoSteps {
  public:
   AnalysisLesson() : scene_(bundled_scene("wall-gap")) {
     measure();
@@ -286,14 +286,6 @@ class AnalysisLesson : public Lesson, private Stepper {
 
   // ---- Stepper: the API's "run" finishes the experiment; there is nothing to step, and the
   // experiment has its own buttons in the panel.
-  bool shows_controls() const override { return false; }
-  long steps() const override { return 0; }
-  bool finished() const override { return true; }
-  void step_forward() override {}
-  void step_back() override {}
-  void finish_phase() override {}
-  void reset() override {}
-  void run_to(long) override {}
   /// "run" from the API: finish the experiment now (starting one if none).
   void run_all() override {
     if (!experiment_) {

@@ -27,10 +27,7 @@ class StepPrmLesson : public Lesson {
   void on_show() override { session_.forget_log(); }
 
   void update(LabContext& ctx) override {
-    const int due = ctx.playback.due(static_cast<double>(ImGui::GetIO().DeltaTime));
-    for (int i = 0; i < due && !prm().done() && !session_.busy(); ++i) session_.step_forward();
-    if (prm().done()) ctx.playback.playing = false;
-    session_.log_steps(ctx.log, "ready: press Step or Play");
+    session_.update(ctx, "ready: press Step or Play");
   }
 
   void panel(LabContext& ctx) override {

@@ -50,10 +50,7 @@ class TorusLesson : public Lesson {
   void on_show() override { session_.forget_log(); }
 
   void update(LabContext& ctx) override {
-    const int due = ctx.playback.due(static_cast<double>(ImGui::GetIO().DeltaTime));
-    for (int i = 0; i < due && !prm().done() && !session_.busy(); ++i) session_.step_forward();
-    if (prm().done()) ctx.playback.playing = false;
-    session_.log_steps(ctx.log, "ready: press Step or Play to grow a roadmap on the torus");
+    session_.update(ctx, "ready: press Step or Play to grow a roadmap on the torus");
     // The arm walks along the found path, or along the exercise's loop, again and again.
     const double dt = static_cast<double>(ImGui::GetIO().DeltaTime);
     if (animate_ && (prm().solved() || exercise_ != Exercise::None)) {

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "app/views/drag_replay.hpp"
+#include "imgui.h"
 
 namespace csl::app {
 
@@ -232,6 +233,13 @@ void PlannerSession::cancel_work() {
   // it was).
   desired_ = shown().steps();
   job_ = Job::None;
+}
+
+void PlannerSession::update(LabContext& ctx, const std::string& ready) {
+  const int due = ctx.playback.due(static_cast<double>(ImGui::GetIO().DeltaTime));
+  for (int i = 0; i < due && !finished() && !busy(); ++i) step_forward();
+  if (finished()) ctx.playback.playing = false;
+  log_steps(ctx.log, ready);
 }
 
 void PlannerSession::log_steps(EventLog& log, const std::string& ready) {

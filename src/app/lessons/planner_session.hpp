@@ -22,6 +22,7 @@
 #include <optional>
 #include <string>
 
+#include "app/shell/context.hpp"
 #include "app/shell/event_log.hpp"
 #include "app/shell/stepper.hpp"
 #include "core/planning/planner.hpp"
@@ -102,6 +103,8 @@ class PlannerSession final : public Stepper {
   void work(double ms) override;
   void cancel_work() override;
 
+  /// Once a frame: Play's steps for this frame (it stops at the end) and the log (log_steps()).
+  void update(LabContext& ctx, const std::string& ready);
   /// Brings `log` up to the planner on screen: each new step's describe(); after a replay, a
   /// jump or another planner, the log starts again with where the planner stands (or, at step
   /// 0, `ready`). Call once a frame; forget_log() makes the next call start again.

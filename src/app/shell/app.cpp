@@ -24,18 +24,7 @@ namespace {
 json vec_json(ImVec2 v) { return json::array({v.x, v.y}); }
 
 // A lesson with nothing to step answers the stepping calls as a stepper at step 0 that is done.
-class NoStepper final : public Stepper {
- public:
-  long steps() const override { return 0; }
-  bool finished() const override { return true; }
-  void step_forward() override {}
-  void step_back() override {}
-  void finish_phase() override {}
-  void run_all() override {}
-  void reset() override {}
-  void run_to(long) override {}
-};
-NoStepper no_stepper;
+NoSteps no_stepper;
 
 Stepper& stepping(Lesson& lesson) {
   Stepper* s = lesson.stepper();

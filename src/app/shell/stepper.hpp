@@ -35,4 +35,20 @@ class Stepper {
   virtual long wanted_steps() const { return steps(); }
 };
 
+/// A stepper with nothing to step: at step 0 and done, no controls. The app answers for a
+/// lesson without a stepper with one; the analysis lesson is one whose run_all() (the API's
+/// "run") finishes its experiment.
+class NoSteps : public Stepper {
+ public:
+  bool shows_controls() const override { return false; }
+  long steps() const override { return 0; }
+  bool finished() const override { return true; }
+  void step_forward() override {}
+  void step_back() override {}
+  void finish_phase() override {}
+  void run_all() override {}
+  void reset() override {}
+  void run_to(long) override {}
+};
+
 }  // namespace csl::app
