@@ -30,10 +30,6 @@ Stepper& stepping(Lesson& lesson) {
   Stepper* s = lesson.stepper();
   return s ? *s : no_stepper;
 }
-const Stepper& stepping(const Lesson& lesson) {
-  const Stepper* s = lesson.stepper();
-  return s ? *s : no_stepper;
-}
 // Whether the panel shows the playback controls (and the event log) for the lesson.
 bool shows_controls(const Lesson& lesson) {
   const Stepper* s = lesson.stepper();

@@ -110,9 +110,16 @@ void CollisionWorld::pose(const Config& q) const {
 }
 
 double CollisionWorld::skeleton_squared_distance(const Vec2& c) const {
-  if (kind_ == RobotKind::Point) {
-    const double dx = point_.x() - c.x(), dy = point_.y() - c.y();
-    return dx * dx + dy * dy;
+  // A switch without a default, here and below: a new robot kind is a compile error
+  // (-Werror=switch) in each place that must decide what it is, not the arm's branch by default.
+  switch (kind_) {
+    case RobotKind::Point: {
+      const double dx = point_.x() - c.x(), dy = point_.y() - c.y();
+      return dx * dx + dy * dy;
+    }
+    case RobotKind::RigidPolygon:  // has no skeleton: its callers measure the polygon instead
+    case RobotKind::Arm:
+      break;
   }
   // The least over the links, each compared as "b < a ? b : a" from the base outwards (two
   // links: the expression of the 2-link arm, to the bit). The 2-link arm, which every lesson
@@ -133,7 +140,13 @@ double CollisionWorld::skeleton_squared_distance(const Vec2& c) const {
 // (sqrt of the least squared distance, minus r), so both paths give identical bits.
 double CollisionWorld::disk_clearance(const DiskData& d) const {
   const Vec2 c(d.x, d.y);
-  if (kind_ == RobotKind::RigidPolygon) return polygon_disk_distance(polygon_, c, d.r);
+  switch (kind_) {
+    case RobotKind::RigidPolygon:
+      return polygon_disk_distance(polygon_, c, d.r);
+    case RobotKind::Point:
+    case RobotKind::Arm:
+      break;
+  }
   return std::sqrt(skeleton_squared_distance(c)) - d.r;
 }
 
@@ -159,23 +172,31 @@ CollisionWorld::Nearest CollisionWorld::nearest(const Config& q) const {
     // Ties go to the lower scene index, whatever order the loops visit obstacles in.
     if (d < best.clearance || (d == best.clearance && index < best.obstacle)) best = {d, index};
   };
-  if (kind_ == RobotKind::Point) {
-    // The point robot (every roadmap vertex's clearance): disk_clearance() written out, the
-    // same arithmetic without a call per disk.
-    const double x = point_.x(), y = point_.y();
-    for (const DiskData& d : disks_) {
-      const double dx = x - d.x, dy = y - d.y;
-      const double d2 = dx * dx + dy * dy;
-      if (cannot_beat(d2, d.r, best.clearance)) continue;
-      consider(std::sqrt(d2) - d.r, d.index);
+  switch (kind_) {
+    case RobotKind::Point: {
+      // The point robot (every roadmap vertex's clearance): disk_clearance() written out, the
+      // same arithmetic without a call per disk.
+      const double x = point_.x(), y = point_.y();
+      for (const DiskData& d : disks_) {
+        const double dx = x - d.x, dy = y - d.y;
+        const double d2 = dx * dx + dy * dy;
+        if (cannot_beat(d2, d.r, best.clearance)) continue;
+        consider(std::sqrt(d2) - d.r, d.index);
+      }
+      break;
     }
-  } else {
-    for (const DiskData& d : disks_) {
-      const bool polygon = kind_ == RobotKind::RigidPolygon;
-      const double d2 = polygon ? box_gap2(robot_box_, d.box) : skeleton_squared_distance(Vec2(d.x, d.y));
-      if (cannot_beat(d2, polygon ? 0.0 : d.r, best.clearance)) continue;
-      consider(disk_clearance(d), d.index);
-    }
+    case RobotKind::Arm:  // pruned by the distance from its links to the disk's centre
+      for (const DiskData& d : disks_) {
+        if (cannot_beat(skeleton_squared_distance(Vec2(d.x, d.y)), d.r, best.clearance)) continue;
+        consider(disk_clearance(d), d.index);
+      }
+      break;
+    case RobotKind::RigidPolygon:  // pruned by the gap between its box and the disk's
+      for (const DiskData& d : disks_) {
+        if (cannot_beat(box_gap2(robot_box_, d.box), 0.0, best.clearance)) continue;
+        consider(disk_clearance(d), d.index);
+      }
+      break;
   }
   for (const ShapeData& s : shapes_) {
     // Walls reach kWallTolerance beyond their box.
@@ -186,7 +207,13 @@ CollisionWorld::Nearest CollisionWorld::nearest(const Config& q) const {
 }
 
 double CollisionWorld::clearance(const Config& q) const {
-  if (kind_ != RobotKind::Point) return nearest(q).clearance;
+  switch (kind_) {
+    case RobotKind::Arm:
+    case RobotKind::RigidPolygon:
+      return nearest(q).clearance;
+    case RobotKind::Point:
+      break;
+  }
   // The point robot (every roadmap vertex's eta). The least of sqrt(d2) - r over the disks is
   // the same whichever order they are taken in, and without the obstacle's index to track no
   // disk needs a branch: each disk's eta in a loop without one (vectorised: square roots two at
