@@ -135,7 +135,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::fprintf(stderr, "-> %d\n%.300s%s", status, o.c_str(), e.c_str());
   }
   if (status == 0) {
-    const char* usage = plan ? csl::cli::kPlanCommand.usage : csl::cli::kCheckCommand.usage;
+    const std::string& usage = plan ? csl::cli::kPlanCommand.usage : csl::cli::kCheckCommand.usage;
     if (!e.empty()) std::abort();
     if (o != usage && !nlohmann::json::parse(o).is_object()) std::abort();  // parse throws on bad JSON
   } else if (status == 2) {
