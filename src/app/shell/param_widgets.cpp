@@ -52,8 +52,11 @@ bool param_input(const ParamSpec& spec, const char* label, std::uint64_t& v) {
   const bool changed = ImGui::InputScalar(label, ImGuiDataType_U64, &typed, &step, nullptr, "%llu");
   tooltip(spec);
   if (!changed) return false;
-  // Typed past the spec's max (or wrapped below 0 by "-"): its nearest end.
-  if (typed > static_cast<std::uint64_t>(spec.max)) typed = v == 0 && typed == ~std::uint64_t{0} ? 0 : static_cast<std::uint64_t>(spec.max);
+  // Typed past the spec's max (or wrapped below 0 by "-"): its nearest end. A value already
+  // past it (a PRM seed above 2^53 from a link: the API takes any 64-bit seed) moves by the
+  // step from where it is, instead of dropping to the max and changing the roadmap.
+  const auto max = static_cast<std::uint64_t>(spec.max);
+  if (typed > max && v <= max) typed = v == 0 && typed == ~std::uint64_t{0} ? 0 : max;
   if (typed == v) return false;
   v = typed;
   return true;

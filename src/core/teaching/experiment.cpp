@@ -1,5 +1,7 @@
 #include "core/teaching/experiment.hpp"
 
+#include "core/base/params.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -108,9 +110,10 @@ double free_fraction(const CollisionWorld& world, long samples, Rng& rng) {
 Experiment::Experiment(const CollisionWorld& world, Config start, Config goal, ExperimentParams params)
     : world_(&world), start_(std::move(start)), goal_(std::move(goal)), params_(std::move(params)) {
   if (params_.sample_counts.empty()) throw std::invalid_argument("the list of sample counts is empty");
+  // The ranges and texts of their one description (core/base/params.hpp).
   for (int n : params_.sample_counts)
-    if (n < 0 || n > kMaxPrmSamples) throw std::invalid_argument("sample counts must be in [0, 1000000]");
-  if (params_.trials < 1 || params_.trials > 100000) throw std::invalid_argument("trials must be in [1, 100000]");
+    if (!in_range(kExperimentSamples, n)) throw std::invalid_argument(param_error(kExperimentSamples));
+  if (!in_range(kExperimentTrials, params_.trials)) throw std::invalid_argument(param_error(kExperimentTrials));
   if (params_.reference_samples == 0)
     params_.reference_samples =
         std::max(2000, 4 * *std::max_element(params_.sample_counts.begin(), params_.sample_counts.end()));

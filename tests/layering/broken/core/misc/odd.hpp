@@ -1,0 +1,3 @@
+#pragma once
+// Broken on purpose: a folder that is no layer.
+#include "core/base/up.hpp"
