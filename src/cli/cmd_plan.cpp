@@ -37,17 +37,16 @@ int run_plan(Args& args, std::ostream& os) {
   if (connector == "potential") params.connector = std::make_shared<const PotentialConnector>();
   require_work_budget(world, options, params);
   Prm prm(world, scene.start, scene.goal, params);
-  Planner& planner = prm;
 
   const auto t0 = std::chrono::steady_clock::now();
-  while (!planner.done() && prm.phase() != PrmPhase::Query) planner.step();
+  while (!prm.done() && prm.phase() != PrmPhase::Query) prm.step();
   const double build = seconds_since(t0);
   const auto t1 = std::chrono::steady_clock::now();
-  planner.run();
+  prm.run();
   const double query = seconds_since(t1);
 
   // The planner's state as the lab reports it (core/planning/planner_json.hpp), and how this run went.
-  json out = planner_state_json(planner, roadmap_out);
+  json out = planner_state_json(prm, roadmap_out);
   out["build_seconds"] = build;
   out["query_seconds"] = query;
   out["samples"] = params.samples;

@@ -5,7 +5,7 @@
 // events are synthetic, dispatched on the canvas in one task of the page, so within one frame.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { withPage, waitFrames } from './lib/harness.mjs';
+import { click, pageButton, withPage, waitFrames } from './lib/harness.mjs';
 
 test('Ctrl chords count whatever else lands in their frame, and nothing else makes one',
   () => withPage({ viewport: { width: 1100, height: 720 } }, async ({ page }) => {
@@ -104,18 +104,10 @@ test('a zoomed view shows a Fit button that fits it, and the press draws nothing
   assert.ok(zoomed.scale > fitted.scale * 1.3 && zoomed.fit_button, `zoomed, with its button: ${zoomed.scale}`);
   await page.keyboard.press('d');  // the disk tool: a press on the canvas would begin a disk
   await waitFrames(page, 2);
-  const fit = await page.evaluate(() => {
-    const r = window.cspacelab.pageState().buttons['fit##prm-workspace'];
-    const b = window.cspacelab.module.canvas.getBoundingClientRect();
-    return r && { x: b.left + (r[0] + r[2]) / 2, y: b.top + (r[1] + r[3]) / 2 };
-  });
+  const fit = await pageButton(page, 'fit##prm-workspace');
   assert.ok(fit, 'the button is on screen');
-  await page.mouse.move(fit.x, fit.y);
-  await waitFrames(page, 2);
-  await page.mouse.down();
-  await waitFrames(page, 2);
-  await page.mouse.up();
-  await waitFrames(page, 3);
+  await click(page, fit);
+  await waitFrames(page, 1);
   const after = await page.evaluate(() => window.cspacelab.view([[0, 0], [1, 1]]));
   assert.deepEqual(after.points, fitted.points, 'fitted again');
   assert.equal(after.scale, fitted.scale);

@@ -54,13 +54,14 @@ std::string control_point_name(const Robot& robot, int i) {
 }
 
 namespace {
-// Tries each type of the variant in turn: the first whose reads() takes `type` parses it.
+// Tries each type of the variant in turn: the first whose reads() takes `name` parses it; none
+// does: the error names `type` as the scene gave it (a string or any other JSON value).
 template <std::size_t I = 0>
-Robot read_robot(const nlohmann::json& r, const std::string& type) {
+Robot read_robot(const nlohmann::json& r, const std::string& name, const nlohmann::json& type) {
   if constexpr (I < std::variant_size_v<Robot>) {
     using Type = std::variant_alternative_t<I, Robot>;
-    if (Type::reads(type)) return Type::from_json(r, type);
-    return read_robot<I + 1>(r, type);
+    if (Type::reads(name)) return Type::from_json(r, name);
+    return read_robot<I + 1>(r, name, type);
   } else {
     json_fields::fail("robot.type", "unknown robot type " + json_fields::value_text(type) +
                                         " (point, arm2, arm or polygon)");
@@ -71,10 +72,8 @@ Robot read_robot(const nlohmann::json& r, const std::string& type) {
 Robot robot_from_json(const nlohmann::json& r) {
   if (!r.is_object()) json_fields::fail("robot", "must be an object");
   const nlohmann::json& type = json_fields::field(r, "type", "robot");
-  if (!type.is_string())
-    json_fields::fail("robot.type", "unknown robot type " + json_fields::value_text(type) +
-                                        " (point, arm2, arm or polygon)");
-  return read_robot(r, type.get<std::string>());
+  // A type that is no string is no type's name: "" is read by none.
+  return read_robot(r, type.is_string() ? type.get<std::string>() : std::string(), type);
 }
 
 nlohmann::json robot_to_json(const Robot& r) {
