@@ -70,6 +70,36 @@ TEST_CASE("a planner made by its factory steps, replays and finishes phases thro
   CHECK(phased->replay_work() == static_cast<long>(phased->samples_drawn()) + phased->edge_checks());
 }
 
+TEST_CASE("components counted from the live edges are the ones PRM keeps as it connects") {
+  // Planner::component_labels() (any planner's, from its roadmap) against Prm's own union-find,
+  // at every step of a run whose path re-check removes edges (grid:3 lets edges through the
+  // wall; the exact re-check takes them out).
+  const csl::CollisionWorld world = wall_with_gap();
+  csl::PrmParams p = prm_params(60, 9);
+  p.checker = csl::EdgeCheckerSpec::parse("grid:3");
+  csl::Prm prm(world, kStart, kGoal, p);
+  const csl::Planner& planner = prm;
+  int checked = 0;
+  bool removed = false;
+  while (!prm.done()) {
+    const bool removal = prm.step().kind == csl::PlannerEvent::Kind::PathEdgeRemoved;
+    removed = removed || removal;
+    const std::vector<int> mine = prm.component_labels();
+    REQUIRE(mine == planner.Planner::component_labels());
+    // Dense and ordered by smallest vertex: vertex 0 is in component 0, and each new label is
+    // the next number.
+    int next = 0;
+    for (int label : mine) {
+      REQUIRE(label <= next);
+      if (label == next) ++next;
+    }
+    CHECK(next == prm.components());
+    ++checked;
+  }
+  CHECK(checked == prm.steps());
+  CHECK(removed);
+}
+
 TEST_CASE("the state JSON says what the planner holds, from its own parts") {
   const csl::CollisionWorld world = wall_with_gap();
   csl::Prm prm(world, kStart, kGoal, prm_params(80, 3));

@@ -222,7 +222,7 @@ class AnalysisLesson : public Lesson, private NoSteps {
           throw ApiError("sample_counts: 1 to " + std::to_string(kLabMaxSampleCounts) + " integers");
         counts.clear();
         for (const json& n : v) {
-          api_param(kExperimentSamples, n);  // the CLI's range, then the lab's budget
+          // The lab's budget alone (within the CLI's range): one error, the bound that holds here.
           counts.push_back(static_cast<int>(api_param(kLabExperimentSamples, n)));
         }
       } else if (k == "trials") {
@@ -245,8 +245,7 @@ class AnalysisLesson : public Lesson, private NoSteps {
       } else if (k == "mc_seed") {
         mc_seed = static_cast<std::uint64_t>(api_param(kMcSeed, v));
       } else if (k == "mc_trials") {
-        api_param(kVisibilityTrials, v);  // the CLI's range, then the lab's budget
-        mc = static_cast<long long>(api_param(kLabVisibilityTrials, v));
+        mc = static_cast<long long>(api_param(kLabVisibilityTrials, v));  // the lab's budget alone
       } else if (k == "run") run = v.is_boolean() && v.get<bool>();
       else if (k == "cancel") cancel = v.is_boolean() && v.get<bool>();
       else throw ApiError("unknown parameter \"" + k + "\"");

@@ -470,7 +470,7 @@ class TorusLesson : public Lesson {
 
   void refresh_labels() {
     if (labels_at_ == session_.version()) return;
-    labels_ = prm().component_labels();
+    labels_ = session_.shown().component_labels();
     labels_at_ = session_.version();
   }
 

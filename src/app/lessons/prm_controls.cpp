@@ -161,8 +161,8 @@ PrmParams prm_params_from_json(const nlohmann::json& j, PrmParams p, const Colli
     const nlohmann::json& v = it.value();
     try {
       if (key == "samples") {
-        api_param(kPrmSamples, v);                               // the contract (the CLI's too)...
-        p.samples = static_cast<int>(api_param(samples, v));  // ...and the lesson's budget
+        // The lesson's budget alone (within the CLI's range): one error, the bound that holds here.
+        p.samples = static_cast<int>(api_param(samples, v));
       } else if (key == "neighbors") {
         if (!v.is_string()) throw ApiError("neighbors: \"k:K\", \"radius:R\" or \"prm*\"");
         p.neighbors = NeighborRule::parse(v.get<std::string>());

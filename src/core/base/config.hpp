@@ -3,6 +3,8 @@
 // inline (no heap) so roadmaps of many thousands of them stay fast.
 #include <Eigen/Core>
 
+#include <string>
+
 namespace csl {
 
 /// The most coordinates a configuration can have (SE(2) x T^6 needs 9).
@@ -17,5 +19,8 @@ inline Config config(std::initializer_list<double> values) {
   for (double v : values) q[i++] = v;
   return q;
 }
+
+/// A configuration as "(0.410, 0.770)", for the event logs.
+std::string format_config(const Config& q);
 
 }  // namespace csl

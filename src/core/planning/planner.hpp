@@ -98,6 +98,10 @@ class Planner {
   virtual long edges_alive() const = 0;
   /// Connected components of the live graph.
   virtual int components() const = 0;
+  /// A dense component number per vertex of roadmap(), ordered by each component's smallest
+  /// vertex (what the lessons colour by). By default from the live edges; a planner that keeps
+  /// its components as it grows answers from them.
+  virtual std::vector<int> component_labels() const;
   virtual bool solved() const = 0;
   /// Vertex indices from q_init to q_final (empty unless solved()).
   virtual const std::vector<int>& path() const = 0;

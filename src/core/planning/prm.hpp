@@ -115,8 +115,8 @@ class Prm final : public Planner {
   double path_length() const override { return path_length_; }
   /// Number of connected components of (V, E).
   int components() const override { return components_.sets(); }
-  /// A dense component number per vertex, ordered by each component's smallest vertex.
-  std::vector<int> component_labels() const;
+  /// From the union-find PRM keeps as it connects (the interface's default counts again).
+  std::vector<int> component_labels() const override;
   long edge_checks() const override { return edge_checks_; }
   long evaluations() const override { return evaluations_; }
   long edges_alive() const override { return edges_alive_; }

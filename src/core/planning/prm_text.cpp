@@ -39,23 +39,6 @@ std::string neighbors_text(const PrmEvent& e, const Prm& prm) {
 
 }  // namespace
 
-std::string format_config(const Config& q) {
-  std::string out = "(";
-  char buf[32];
-  for (Eigen::Index i = 0; i < q.size(); ++i) {
-    std::snprintf(buf, sizeof buf, "%s%.3f", i ? ", " : "", q[i]);
-    out += buf;
-  }
-  return out + ")";
-}
-
-std::string obstacle_label(const Scene& scene, int index) {
-  if (index < 0 || index >= static_cast<int>(scene.obstacles.size())) return "an obstacle";
-  std::string type = obstacle_type_name(scene.obstacles[static_cast<std::size_t>(index)]);
-  if (type == "segment") type = "wall";
-  return type + " " + std::to_string(index + 1);
-}
-
 std::string describe_prm_event(const PlannerEvent& e, const Prm& prm, const Scene& scene) {
   char buf[256];
   const std::string q = format_config(e.q);

@@ -184,4 +184,11 @@ json scene_to_json(const Scene& s) {
   return out;
 }
 
+std::string obstacle_label(const Scene& scene, int index) {
+  if (index < 0 || index >= static_cast<int>(scene.obstacles.size())) return "an obstacle";
+  std::string type = obstacle_type_name(scene.obstacles[static_cast<std::size_t>(index)]);
+  if (type == "segment") type = "wall";
+  return type + " " + std::to_string(index + 1);
+}
+
 }  // namespace csl

@@ -77,6 +77,10 @@ bool same_scene(const Scene& a, const Scene& b);
 /// change); returns what is wrong, or "" if it is valid. `path` prefixes the message.
 std::string obstacle_problem(const Obstacle& o, const std::string& path);
 
+/// "disk 3", "wall 2", "polygon 1" (1-based, as the panels list them); "an obstacle" for an
+/// index the scene has not: how the event logs name an obstacle.
+std::string obstacle_label(const Scene& scene, int index);
+
 /// JSON of one configuration / obstacle, as in the scene format.
 nlohmann::json config_to_json(const Config& q);
 nlohmann::json obstacle_to_json(const Obstacle& o);
