@@ -31,6 +31,7 @@
 #include "app/views/draw.hpp"
 #include "app/views/plot.hpp"
 #include "app/views/scene_editor.hpp"
+#include "app/views/split.hpp"
 #include "core/teaching/experiment.hpp"
 #include "core/teaching/work.hpp"
 
@@ -83,8 +84,15 @@ class AnalysisLesson : public Lesson, private NoSteps {
 
   void views(LabContext& ctx, ImVec2 size) override {
     if (tab_ != kVisibilityTab) {  // the bound and P8: the scene their r comes from, and the plot
-      const float side = std::min(size.x * 0.42f, size.y);
-      scene_view_.begin("##analysis-scene", ImVec2(side, size.y), scene_.workspace_min, scene_.workspace_max);
+      // Beside the plot (a square as tall as the area, at most 42% of the width), or over it on
+      // a portrait screen.
+      Split s = split(size, 0.45f);
+      if (!s.stacked) {
+        const float side = std::min(size.x * 0.42f, size.y);
+        s.first = ImVec2(side, size.y);
+        s.second = ImVec2(size.x - side - ImGui::GetStyle().ItemSpacing.x, size.y);
+      }
+      scene_view_.begin("##analysis-scene", s.first, scene_.workspace_min, scene_.workspace_max);
       ctx.views["workspace"] = &scene_view_;
       scene_view_.draw_grid();
       scene_view_.push_clip();
@@ -99,8 +107,8 @@ class AnalysisLesson : public Lesson, private NoSteps {
       scene_view_.pop_clip();
       if (editor_.edit(scene_view_, scene_, ctx, {})) measure();
       editor_.help_window();
-      ImGui::SameLine();
-      bound_plot(ImVec2(size.x - side - ImGui::GetStyle().ItemSpacing.x, size.y));
+      between(s);
+      bound_plot(s.second);
       ctx.plots["bound"] = &plot_;
     } else {
       const float side = std::min(size.x, size.y);
@@ -112,6 +120,7 @@ class AnalysisLesson : public Lesson, private NoSteps {
   }
 
   Scene* scene() override { return &scene_; }
+  SceneEditor* editor() override { return tab_ != kVisibilityTab ? &editor_ : nullptr; }
   bool accept_scene(const Scene& s, std::string& why) override {
     if (std::holds_alternative<ArmRobot>(s.robot)) {
       why = "the analysis lesson uses point and polygon robots";

@@ -168,6 +168,7 @@ class CollisionLesson : public Lesson, private Stepper {
   }
 
   Scene* scene() override { return &scene_; }
+  SceneEditor* editor() override { return &editor_; }
   bool accept_scene(const Scene& s, std::string& why) override {
     if (std::holds_alternative<PolygonRobot>(s.robot) || (std::holds_alternative<ArmRobot>(s.robot) && !is_two_link_arm(s.robot))) {
       why = "this lesson shows the point robot and the 2-link arm";

@@ -496,7 +496,7 @@ class DistancesLesson : public Lesson {
   // centre, snapping onto the other handle and onto its opposite point within a few pixels.
   void s1_drag(WorkspaceView& v) {
     const Vec2 m = v.mouse_world();
-    const double grab = v.pixels(14.0f);
+    const double grab = v.reach(14.0f);
     const auto near = [&](double w) { return (Vec2(std::cos(w), std::sin(w)) - m).norm() <= grab; };
     hover_ = Drag::None;
     if (drag_ == Drag::None && v.hovered()) {
@@ -731,13 +731,13 @@ class DistancesLesson : public Lesson {
   // press, so a press a little off the handle does not make it jump.
   void segment_drag(WorkspaceView& v) {
     const Vec2 m = v.mouse_world();
-    const double grab = v.pixels(14.0f);
+    const double grab = v.reach(14.0f);
     hover_ = Drag::None;
     if (drag_ == Drag::None && v.hovered()) {
       if ((m - p2_).norm() <= grab) hover_ = Drag::P2;  // drawn last, on top
       else if ((m - p1_).norm() <= grab) hover_ = Drag::P1;
       else if ((m - q_).norm() <= grab) hover_ = Drag::Centre;
-      else if (std::fabs((m - q_).norm() - r_) <= v.pixels(7.0f)) hover_ = Drag::Rim;
+      else if (std::fabs((m - q_).norm() - r_) <= v.reach(7.0f)) hover_ = Drag::Rim;
     }
     if (hover_ != Drag::None || drag_ != Drag::None) ImGui::SetMouseCursor(ImGuiMouseCursor_Hand);
     if (drag_ == Drag::None && hover_ != Drag::None && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {

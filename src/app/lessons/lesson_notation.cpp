@@ -15,6 +15,7 @@
 #include "app/shell/theme.hpp"
 #include "app/shell/ui.hpp"
 #include "app/shell/web_bridge.hpp"
+#include "app/views/split.hpp"
 #include "app/views/surface_view.hpp"
 #include "core/base/angles.hpp"
 #include "core/teaching/notation.hpp"
@@ -140,17 +141,20 @@ class NotationLesson : public Lesson {
          "not SO(3). Drag the pictures to turn them.");
   }
 
-  void views(LabContext&, ImVec2 size) override {
+  void views(LabContext& ctx, ImVec2 size) override {
     const ImGuiWindowFlags still = ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse;
-    ImGui::BeginChild("robot-picture", ImVec2(size.x * 0.5f, size.y), true, still);
+    const Split s = split(size);
+    ImGui::BeginChild("robot-picture", s.first, true, still);
     robot_picture(ImGui::GetContentRegionAvail());
     ImGui::EndChild();
     web::record_control("notation-picture");  // (its rectangle: the tests compare it with a reference)
-    ImGui::SameLine();
-    ImGui::BeginChild("surfaces", ImVec2(0, size.y), true, still);
+    ctx.areas["robot"] = {ImGui::GetItemRectMin(), ImGui::GetItemRectMax()};
+    between(s);
+    ImGui::BeginChild("surfaces", s.second, true, still);
     surfaces(ImGui::GetContentRegionAvail());
     ImGui::EndChild();
     web::record_control("notation-surfaces");
+    ctx.areas["surfaces"] = {ImGui::GetItemRectMin(), ImGui::GetItemRectMax()};
   }
 
   json state(const json&) const override {

@@ -26,6 +26,7 @@
 #include "app/views/draw.hpp"
 #include "app/views/field_draw.hpp"
 #include "app/views/scene_editor.hpp"
+#include "app/views/split.hpp"
 #include "core/base/angles.hpp"
 #include "core/fields/descent.hpp"
 #include "core/fields/potential.hpp"
@@ -215,21 +216,24 @@ class PotentialLesson : public Lesson, private Stepper {
 
   // The views on top, the forces table under them (the panel is too narrow for its vectors).
   void views(LabContext& ctx, ImVec2 size) override {
-    const float below = forces_height(size);
+    // (On a phone the views come first: the forces table scrolls in less of the height.)
+    const float below = std::min(forces_height(size), ctx.compact ? 0.3f * size.y : size.y);
     const ImVec2 top(size.x, std::max(120.0f, size.y - below - ImGui::GetStyle().ItemSpacing.y));
     if (robot_kind() == Kind::Point) {
       workspace(ctx, top);
     } else {
-      const float w = 0.5f * (top.x - ImGui::GetStyle().ItemSpacing.x);
-      workspace(ctx, ImVec2(w, top.y));
-      ImGui::SameLine();
-      cspace(ctx, ImVec2(w, top.y));
+      // (Stacked when the whole area is portrait: the forces under them make `top` look wide.)
+      const Split s = split_as(top, size.x < size.y);
+      workspace(ctx, s.first);
+      between(s);
+      cspace(ctx, s.second);
     }
     forces_area(ImVec2(size.x, below));
     editor_.help_window();
   }
 
   Scene* scene() override { return &scene_; }
+  SceneEditor* editor() override { return &editor_; }
   bool accept_scene(const Scene& s, std::string& why) override {
     // Every robot type has control points; the arm's C-space view is the torus square (2 links).
     if (std::holds_alternative<ArmRobot>(s.robot) && !is_two_link_arm(s.robot)) {
@@ -935,7 +939,7 @@ class PotentialLesson : public Lesson, private Stepper {
 
   // What a press at m grabs: 1 the body (the arm's first link), 2 the arm's second link, 0 none.
   int grab(const Config& q, const Vec2& m) const {
-    const double near = view_.pixels(8.0f);
+    const double near = view_.reach(8.0f);
     switch (robot_kind()) {
       case Kind::Point: return length(Vec2(q[0], q[1]) - m) <= near ? 1 : 0;
       case Kind::Polygon: {

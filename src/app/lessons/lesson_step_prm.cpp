@@ -76,6 +76,7 @@ class StepPrmLesson : public Lesson {
   }
 
   Scene* scene() override { return &scene_; }
+  SceneEditor* editor() override { return &editor_; }
   bool accept_scene(const Scene& s, std::string& why) override {
     if (!std::holds_alternative<PointRobot>(s.robot)) {
       why = "this lesson plans for a point robot; the scene has a '" + std::string(robot_type_name(s.robot)) + "' robot";

@@ -23,6 +23,7 @@
 #include "app/views/draw.hpp"
 #include "app/views/field_draw.hpp"
 #include "app/views/scene_editor.hpp"
+#include "app/views/split.hpp"
 #include "app/views/surface_view.hpp"
 #include "core/base/angles.hpp"
 #include "core/planning/planner_json.hpp"
@@ -125,22 +126,30 @@ class TorusLesson : public Lesson {
   }
 
   void views(LabContext& ctx, ImVec2 size) override {
-    const float w = 0.5f * (size.x - ImGui::GetStyle().ItemSpacing.x);
-    workspace(ctx, ImVec2(w, size.y));
-    ImGui::SameLine();
+    const Split s = split(size);
+    workspace(ctx, s.first);
+    between(s);
     ImGui::BeginGroup();
-    if (right_view_ == 0) cspace(ctx, ImVec2(w, size.y));
-    if (right_view_ == 1) torus(ImVec2(w, size.y));
+    // The 3-D torus, recorded for status().layout (it is not a WorkspaceView).
+    const auto torus_in = [&](ImVec2 at_size) {
+      const ImVec2 at = ImGui::GetCursorScreenPos();
+      torus(at_size);
+      ctx.areas["torus"] = {at, ImVec2(at.x + at_size.x, at.y + at_size.y)};
+    };
+    if (right_view_ == 0) cspace(ctx, s.second);
+    if (right_view_ == 1) torus_in(s.second);
     if (right_view_ == 2) {
-      const float h = 0.5f * (size.y - ImGui::GetStyle().ItemSpacing.y);
-      cspace(ctx, ImVec2(w, h));
-      torus(ImVec2(w, h));
+      const Split both = split(s.second);
+      cspace(ctx, both.first);
+      between(both);
+      torus_in(both.second);
     }
     ImGui::EndGroup();
     editor_.help_window();
   }
 
   Scene* scene() override { return &scene_; }
+  SceneEditor* editor() override { return &editor_; }
   bool accept_scene(const Scene& s, std::string& why) override {
     if (!is_two_link_arm(s.robot)) {
       why = std::string("this lesson is about the 2-link arm (robot type 'arm2'); the scene has a '") +
@@ -394,7 +403,7 @@ class TorusLesson : public Lesson {
   int link_under_mouse() const {
     const ArmPose pose = arm_pose(std::get<ArmRobot>(scene_.robot), q_);
     const Vec2 m = view_.mouse_world();
-    const double near = view_.pixels(7.0f);
+    const double near = view_.reach(7.0f);
     if (point_segment_distance(m, pose.elbow, pose.tip) <= near) return 2;
     if (point_segment_distance(m, pose.base, pose.elbow) <= near) return 1;
     return 0;
@@ -435,8 +444,8 @@ class TorusLesson : public Lesson {
     if (cspace_view_.hovered()) ghost_ = at_mouse;
     if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && cspace_view_.hovered()) {
       // What is drawn on top takes the press: the arm's dot, then G, then S.
-      const double grab = cspace_view_.pixels(11.0f);
-      if (length(Vec2(q_[0], q_[1]) - m) <= cspace_view_.pixels(8.0f)) posing_ = true;
+      const double grab = cspace_view_.reach(11.0f);
+      if (length(Vec2(q_[0], q_[1]) - m) <= cspace_view_.reach(8.0f)) posing_ = true;
       else if (length(Vec2(scene_.goal[0], scene_.goal[1]) - m) <= grab) drag_marker_ = 2;
       else if (length(Vec2(scene_.start[0], scene_.start[1]) - m) <= grab) drag_marker_ = 1;
       else posing_ = true;

@@ -21,20 +21,21 @@ namespace csl::app {
 using json = nlohmann::json;
 
 namespace {
-json vec_json(ImVec2 v) { return json::array({v.x, v.y}); }
-
 // A lesson with nothing to step answers the stepping calls as a stepper at step 0 that is done.
 NoSteps no_stepper;
+}  // namespace
 
 Stepper& stepping(Lesson& lesson) {
   Stepper* s = lesson.stepper();
   return s ? *s : no_stepper;
 }
-// Whether the panel shows the playback controls (and the event log) for the lesson.
 bool shows_controls(const Lesson& lesson) {
   const Stepper* s = lesson.stepper();
   return s && s->shows_controls();
 }
+
+namespace {
+json vec_json(ImVec2 v) { return json::array({v.x, v.y}); }
 
 // Long work goes on over frames (Stepper::work); an API call finishes what it started before it
 // returns, unless asked {background: true} (the page does, for links and restores, so that the
@@ -111,7 +112,7 @@ bool App::select_lesson(const std::string& id) {
 
 void App::register_api() {
   JsApi& api = js_api();
-  api.add("status", "frames drawn, frame times, version, pixel ratio, lesson, the side panel's measures and sections", [this](const json&) {
+  api.add("status", "frames drawn, frame times, version, pixel ratio, lesson, the side panel's measures and sections, the layout ({mode: wide|compact, tab, touch, views: [{name, x, y, w, h}]} in CSS px)", [this](const json&) {
     const FrameStats& f = platform_.frame_stats();
     return json{{"frames", platform_.frame_count()},
                 {"version", kVersion},
@@ -123,6 +124,7 @@ void App::register_api() {
                 {"vertices", f.vertices},
                 {"notice", ImGui::GetTime() < ctx_.notice_until ? ctx_.notice : ""},
                 {"panel", panel::state()},
+                {"layout", layout_},
                 {"busy", busy_json()}};
   });
   api.add("lessons", "the lessons: [{id, name, category, open}] (open: started, has state)", [this](const json&) {
@@ -284,77 +286,6 @@ void App::work() {
     if (lesson && stepping(*lesson).busy()) return stepping(*lesson).work(kFrameWorkMs);
 }
 
-void App::top_bar() {
-  const LessonInfo* current_info = find_lesson(lesson_id_);
-  const std::string current_name = current_info ? current_info->name : lesson_id_;
-  const ImGuiStyle& style = ImGui::GetStyle();
-  const float right = ImGui::GetWindowContentRegionMax().x;  // window-local, like the cursor
-  const float actions_w = web::top_bar_actions_width();
-  ImGui::PushFont(fonts().title);
-  ImGui::TextUnformatted(web::page().minimal ? current_name.c_str() : "C-Space Lab");
-  ImGui::PopFont();
-  ImGui::SameLine(0, 24);
-  if (!web::page().minimal) {
-    // The way in for students: the handout's problems by number, next to the title.
-    homework_.menu_button();
-    ImGui::SameLine(0, 18);
-  }
-  const ImVec2 first_row = ImGui::GetCursorPos();
-  if (!web::page().minimal) {
-    // One button per lesson, grouped by category, in rows under each other when the window is
-    // too narrow: the first row leaves room for the page's actions, so no button is ever
-    // pushed off the edge (a restore button appearing must not hide Share or a lesson).
-    const float indent = first_row.x;
-    bool first = true, on_first_row = true;
-    // Places the next `w` pixels wide: after the last item with `gap`, or at a new row.
-    auto place = [&](float w, float gap) {
-      if (first) {
-        // Right after the title; on a narrow window (a phone) already on a row of its own.
-        first = false;
-        if (first_row.x + w > right - actions_w - 24) {
-          on_first_row = false;
-          ImGui::NewLine();
-          ImGui::SetCursorPosX(indent);
-        }
-        return;
-      }
-      const float x = ImGui::GetItemRectMax().x - ImGui::GetWindowPos().x + gap;
-      const float limit = on_first_row ? right - actions_w - 24 : right;
-      if (x + w <= limit) {
-        ImGui::SameLine(0, gap);
-      } else {
-        on_first_row = false;
-        ImGui::SetCursorPosX(indent);
-      }
-    };
-    std::string category;
-    for (const LessonInfo& l : lessons()) {
-      const float button_w = ImGui::CalcTextSize(l.name.c_str()).x + style.FramePadding.x * 2;
-      if (l.category != category) {
-        category = l.category;
-        const std::string label = category + ":";
-        // The label keeps its first lesson on the same row.
-        place(ImGui::CalcTextSize(label.c_str()).x + style.ItemSpacing.x + button_w, 18);
-        ImGui::AlignTextToFramePadding();
-        ImGui::TextDisabled("%s", label.c_str());
-        ImGui::SameLine();
-      } else {
-        place(button_w, style.ItemSpacing.x);
-      }
-      const bool current = l.id == lesson_id_;
-      if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
-      if (ImGui::Button(l.name.c_str())) select_lesson(l.id);
-      if (current) ImGui::PopStyleColor();
-    }
-  }
-  // The page's actions (Share, Embed, File; or the version without a page), right-aligned on
-  // the first row; then the cursor goes back under the lowest row.
-  const ImVec2 below = ImGui::GetCursorPos();
-  ImGui::SetCursorPos(ImVec2(std::max(first_row.x, right - actions_w), first_row.y));
-  web::top_bar_actions(ctx_, current_name);
-  ImGui::SetCursorPos(ImVec2(ImGui::GetCursorStartPos().x, std::max(below.y, ImGui::GetCursorPos().y)));
-}
-
 void App::playback_controls() {
   if (!shows_controls(*lesson_)) return;
   Playback& pb = ctx_.playback;
@@ -434,40 +365,6 @@ void App::notice() {
   ImGui::TextColored(ImVec4(0.6f, 0.2f, 0.0f, 1.0f), "%s", ctx_.notice.c_str());
   ImGui::PopTextWrapPos();
   ImGui::End();
-}
-
-void App::frame() {
-  web::begin_controls();
-  shortcuts();
-  work();
-  lesson_->update(ctx_);
-  const ImGuiViewport* vp = ImGui::GetMainViewport();
-  ImGui::SetNextWindowPos(vp->WorkPos);
-  ImGui::SetNextWindowSize(vp->WorkSize);
-  ImGui::Begin("C-Space Lab", nullptr,
-               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoBringToFrontOnFocus |
-                   ImGuiWindowFlags_NoSavedSettings);
-  top_bar();
-  ImGui::Separator();
-  const float panel_w = std::clamp(vp->WorkSize.x * 0.3f, 280.0f, 380.0f);
-  panel::begin(panel_w);
-  homework_.card(lesson_id_);
-  playback_controls();
-  ImGui::PushID(lesson_id_.c_str());  // each lesson's folded sections its own
-  lesson_->panel(ctx_);
-  ImGui::PopID();
-  panel::end();
-  ImGui::SameLine();
-  ImGui::BeginChild("main", ImVec2(0, 0), false, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
-  // The event log, for lessons that step through an algorithm or report progress.
-  const bool log = shows_controls(*lesson_) || !ctx_.log.lines().empty();
-  const float log_h = log ? std::clamp(ImGui::GetContentRegionAvail().y * 0.18f, 70.0f, 150.0f) : 0.0f;
-  const ImVec2 avail = ImGui::GetContentRegionAvail();
-  lesson_->views(ctx_, ImVec2(avail.x, avail.y - (log ? log_h + ImGui::GetStyle().ItemSpacing.y : 0.0f)));
-  if (log) ctx_.log.draw("log", log_h);
-  ImGui::EndChild();
-  ImGui::End();
-  notice();
 }
 
 }  // namespace csl::app

@@ -14,6 +14,11 @@
 
 namespace csl::app {
 
+/// The lesson's stepper, or one with nothing to step (at step 0, done) for a lesson without.
+Stepper& stepping(Lesson& lesson);
+/// Whether the lesson shows the playback controls (and the event log).
+bool shows_controls(const Lesson& lesson);
+
 class App {
  public:
   explicit App(const Platform& platform);
@@ -30,7 +35,17 @@ class App {
   void work();
   // status().busy: the first lesson with long work going on, or null.
   nlohmann::json busy_json() const;
+  // The layout (app_layout.cpp): the wide one (lesson bar, side panel, views, log) or, on a
+  // narrow or short screen, the compact one (a lesson menu, View and Controls tabs, a playback
+  // strip over the views, a log that folds).
+  void wide_frame();
+  void compact_frame();
   void top_bar();
+  void compact_bar();
+  void playback_strip();
+  bool strip_wide() const;  // the compact layout's tabs, strip and tools on one row
+  void compact_log();
+  nlohmann::json layout_json() const;
   void playback_controls();
   void shortcuts();
   void notice();
@@ -44,6 +59,10 @@ class App {
   std::map<std::string, std::unique_ptr<Lesson>> instances_;
   Lesson* lesson_ = nullptr;
   std::string lesson_id_;
+  enum class Tab { View, Controls };
+  Tab tab_ = Tab::View;   // the compact layout's tab
+  bool log_open_ = false;  // the compact layout's log, unfolded
+  nlohmann::json layout_;  // status().layout: the last frame's
   HomeworkPanel homework_{[this](const HomeworkProblem& p, bool preset) { open_problem(p, preset); },
                           [this](const std::string& lesson, const nlohmann::json& setup) { show_in_lesson(lesson, setup); }};
 };

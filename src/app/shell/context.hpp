@@ -29,6 +29,11 @@ struct LabContext {
   std::map<std::string, WorkspaceView*> views;
   /// The lesson's plots by name ("bound"): the JS API maps data points through them as through views.
   std::map<std::string, const Plot*> plots;
+  /// Other views drawn this frame (a 3-D surface, a picture), by name, as screen rectangles:
+  /// with `views` and `plots` they make status().layout.views.
+  std::map<std::string, std::pair<ImVec2, ImVec2>> areas;
+  /// The app's layout (app_layout.cpp): narrow or short screens get the compact one.
+  bool compact = false;
 
   /// Shows a one-line notice for a few seconds.
   void notify(const std::string& text, double seconds = 5.0);

@@ -17,6 +17,8 @@
 
 namespace csl::app {
 
+class SceneEditor;
+
 class Lesson {
  public:
   virtual ~Lesson() = default;
@@ -51,6 +53,9 @@ class Lesson {
   /// The algorithm the lesson steps (the shared playback controls, keys and API drive it), or
   /// nullptr for a lesson with nothing to step.
   virtual Stepper* stepper() { return nullptr; }
+  /// The scene editor of the view on screen, or nullptr: the compact layout puts its tool
+  /// buttons over the views (the side panel, where they are, is another tab there).
+  virtual SceneEditor* editor() { return nullptr; }
   const Stepper* stepper() const { return const_cast<Lesson*>(this)->stepper(); }
 };
 

@@ -3,10 +3,13 @@
 #include <SDL.h>
 
 #include <algorithm>
+#include <cmath>
+#include <iterator>
 #include <cstdio>
 #include <cstring>
 
 #include "app/shell/fonts.hpp"
+#include "app/shell/input_mode.hpp"
 #include "imgui.h"
 #include "imgui_internal.h"  // the text field's place (PlatformImePos)
 #include "imgui_impl_opengl3.h"
@@ -150,6 +153,12 @@ bool Platform::init(const PlatformOptions& options) {
   ImGuiIO& io = ImGui::GetIO();
   io.IniFilename = nullptr;  // layout is the app's, not a file's (and the web has no files)
   io.ConfigFlags |= ImGuiConfigFlags_NavEnableKeyboard;
+#ifdef __EMSCRIPTEN__
+  // A device whose only pointer is a finger has touch-sized targets from the start (not only
+  // after its first touch).
+  if (EM_ASM_INT({ return matchMedia("(pointer: coarse)").matches && !matchMedia("(any-pointer: fine)").matches ? 1 : 0; }))
+    input::set_touch(true);
+#endif
   ImGui_ImplSDL2_InitForOpenGL(window_, gl_context_);
   ImGui_ImplOpenGL3_Init(glsl_version);
   return true;
@@ -246,6 +255,7 @@ void Platform::frame_once() {
         break;  // the rest stays in SDL's queue for the next frame
       }
     }
+    track_pointer(event);
     process(event);
     if (event.type == SDL_QUIT) quit_ = true;
     if (event.type == SDL_WINDOWEVENT && event.window.event == SDL_WINDOWEVENT_CLOSE &&
@@ -257,6 +267,8 @@ void Platform::frame_once() {
 
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplSDL2_NewFrame();
+  update_gesture();
+  hold_mouse_during_gesture();
   ImGui::NewFrame();
   frame_();
   ImGui::Render();
@@ -290,6 +302,67 @@ void Platform::frame_once() {
   summarise(cpu_ms_, count, stats_.mean_cpu_ms, stats_.p95_cpu_ms, stats_.max_cpu_ms);
   summarise(ui_ms_, count, stats_.mean_ui_ms, stats_.p95_ui_ms, stats_.max_ui_ms);
   if (max_frames_ >= 0 && frames_ >= max_frames_) quit_ = true;
+}
+
+void Platform::track_pointer(const SDL_Event& event) {
+  int w = 0, h = 0;
+  SDL_GetWindowSize(window_, &w, &h);
+  switch (event.type) {
+    case SDL_FINGERDOWN:
+    case SDL_FINGERMOTION: {
+      input::set_touch(true);
+      // SDL gives a finger's place as a fraction of the window.
+      const ImVec2 at(event.tfinger.x * static_cast<float>(w), event.tfinger.y * static_cast<float>(h));
+      if (event.type == SDL_FINGERDOWN && fingers_.empty()) first_press_ = at;
+      fingers_[static_cast<long long>(event.tfinger.fingerId)] = at;
+      break;
+    }
+    case SDL_FINGERUP:
+      fingers_.erase(static_cast<long long>(event.tfinger.fingerId));
+      break;
+    case SDL_MOUSEMOTION:
+      if (event.motion.which != SDL_TOUCH_MOUSEID) input::set_touch(false);
+      break;
+    case SDL_MOUSEBUTTONDOWN:
+      if (event.button.which != SDL_TOUCH_MOUSEID) input::set_touch(false);
+      break;
+    default:
+      break;
+  }
+}
+
+void Platform::update_gesture() {
+  input::Pinch pinch;
+  if (fingers_.size() >= 2) {
+    const ImVec2 a = fingers_.begin()->second, b = std::next(fingers_.begin())->second;
+    const ImVec2 center(0.5f * (a.x + b.x), 0.5f * (a.y + b.y));
+    const float spread = std::max(1.0f, std::hypot(a.x - b.x, a.y - b.y));
+    pinch.active = true;
+    pinch.center = center;
+    if (pinching_) {  // (a pinch's first frame only sets where it starts from)
+      pinch.scale = spread / last_spread_;
+      pinch.pan = ImVec2(center.x - last_center_.x, center.y - last_center_.y);
+    }
+    pinching_ = true;
+    if (!gesture_) gesture_frames_ = 0;
+    gesture_ = true;
+    last_center_ = center;
+    last_spread_ = spread;
+  } else {
+    pinching_ = false;
+    if (fingers_.empty()) gesture_ = false;
+  }
+  if (gesture_) ++gesture_frames_;
+  input::set_pinch(pinch);
+}
+
+void Platform::hold_mouse_during_gesture() {
+  if (!gesture_) return;
+  ImGuiIO& io = ImGui::GetIO();
+  io.MousePos = first_press_;
+  // Its first frame keeps the button down at the first press, so a drag that had begun ends
+  // where it started; after that the button is up until every finger has lifted.
+  if (gesture_frames_ > 1) io.MouseDown[0] = false;
 }
 
 void Platform::frame_trampoline(void* self) { static_cast<Platform*>(self)->frame_once(); }

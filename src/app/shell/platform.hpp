@@ -4,9 +4,12 @@
 // stays in platform.cpp.
 #include <array>
 #include <functional>
+#include <map>
 #include <vector>
 
 #include <SDL_events.h>
+
+#include "imgui.h"
 
 struct SDL_Window;
 
@@ -47,6 +50,10 @@ class Platform {
   void frame_once();
   void sync_canvas_size();
   void update_pixel_ratio();
+  // Fingers and mice (input_mode.hpp): which one points, and a two-finger gesture.
+  void track_pointer(const SDL_Event& event);
+  void update_gesture();
+  void hold_mouse_during_gesture();
 
   // A key release delivered a frame later (and the events after it with it, left in SDL's
   // queue): one that arrived in the frame of its press, or a modifier's after any press (ImGui
@@ -65,6 +72,16 @@ class Platform {
   long max_frames_ = -1;
   bool quit_ = false;
   bool text_mode_ = false;  // the canvas takes text from the page (a text field has the keyboard)
+  // The fingers down (logical px), where the first came down, and a gesture since then: while a
+  // second finger is or was down, ImGui's mouse stays where the first finger pressed and is let
+  // go (what it began dragging goes back there), until every finger is up.
+  std::map<long long, ImVec2> fingers_;
+  ImVec2 first_press_{0, 0};
+  bool gesture_ = false;   // since a second finger came down, until every finger is up
+  int gesture_frames_ = 0;
+  bool pinching_ = false;  // two fingers down now (and last frame's center and spread are set)
+  ImVec2 last_center_{0, 0};
+  float last_spread_ = 0.0f;
 };
 
 }  // namespace csl::app

@@ -26,6 +26,8 @@ void Plot::begin(const char* id, ImVec2 size, const Axis& x, const Axis& y) {
   shade_label_.clear();
   const ImVec2 o = ImGui::GetCursorScreenPos();
   ImGui::InvisibleButton(id, size);
+  box_min_ = o;
+  box_max_ = ImVec2(o.x + size.x, o.y + size.y);
   ImFont* font = fonts().small;
   const float fs = font->FontSize * ImGui::GetIO().FontGlobalScale;
   // The y axis's label on a line of its own above the plot, clear of the top tick's number.

@@ -28,10 +28,14 @@ class Plot {
   /// Draws the legend; call last.
   void end();
   ImVec2 to_screen(double x, double y) const;
+  /// The whole plot on screen, labels included (for the layout report).
+  ImVec2 box_min() const { return box_min_; }
+  ImVec2 box_max() const { return box_max_; }
 
  private:
   double map(const Axis& a, double v) const;
   ImVec2 min_{0, 0}, max_{0, 0};  // the plotting area
+  ImVec2 box_min_{0, 0}, box_max_{0, 0};  // the whole widget
   Axis x_{0, 1, false, ""}, y_{0, 1, false, ""};
   std::vector<std::pair<std::string, ImU32>> legend_;
   std::string shade_label_;

@@ -6,6 +6,7 @@
 
 #include "app/shell/theme.hpp"
 #include "app/shell/ui.hpp"
+#include "app/shell/web_bridge.hpp"
 #include "core/base/overloaded.hpp"
 #include <nlohmann/json.hpp>
 
@@ -186,13 +187,13 @@ bool SceneEditor::handle_keys(Scene& scene, LabContext& ctx) {
 
 bool SceneEditor::begin_drag(WorkspaceView& view, Scene& scene, const Options& options) {
   const Vec2 m = view.mouse_world();
-  const double grab = view.pixels(kGrabPixels);
+  const double grab = view.reach(kGrabPixels);
   grab_ = m;
   before_drag_ = scene;
   // Endpoints first: they sit on top of everything.
   if (options.endpoints_are_points) {
-    if (length(endpoint(scene.goal) - m) <= view.pixels(11.0f)) return drag_ = Drag::Goal, true;
-    if (length(endpoint(scene.start) - m) <= view.pixels(11.0f)) return drag_ = Drag::Start, true;
+    if (length(endpoint(scene.goal) - m) <= view.reach(11.0f)) return drag_ = Drag::Goal, true;
+    if (length(endpoint(scene.start) - m) <= view.reach(11.0f)) return drag_ = Drag::Start, true;
   }
   if (tool_ == Tool::Disk) return drag_ = Drag::NewDisk, true;
   if (tool_ == Tool::Wall) return drag_ = Drag::NewWall, true;
@@ -204,7 +205,10 @@ bool SceneEditor::begin_drag(WorkspaceView& view, Scene& scene, const Options& o
   if (selected_ >= 0 && selected_ < static_cast<int>(scene.obstacles.size())) {
     const Obstacle& o = scene.obstacles[static_cast<std::size_t>(selected_)];
     if (const auto* d = std::get_if<Disk>(&o)) {
-      if (std::fabs(length(m - d->center) - d->radius) <= grab) return target_ = selected_, drag_ = Drag::DiskRim, true;
+      // (The inner half is always the body: a finger's reach would make a small disk all rim.)
+      const double from_centre = length(m - d->center);
+      if (std::fabs(from_centre - d->radius) <= grab && from_centre >= 0.5 * d->radius)
+        return target_ = selected_, drag_ = Drag::DiskRim, true;
     } else if (const auto* g = std::get_if<PolygonObstacle>(&o)) {
       for (std::size_t i = 0; i < g->vertices.size(); ++i)
         if (length(g->vertices[i] - m) <= grab)
@@ -337,10 +341,10 @@ bool SceneEditor::edit(WorkspaceView& view, Scene& scene, LabContext& ctx, const
     if (!begin_drag(view, scene, options) && tool_ == Tool::Polygon) {
       const Vec2 m = view.mouse_world();
       // Double-click, or a click on the first vertex, closes the polygon.
-      const bool on_first = polygon_.size() >= 3 && length(polygon_.front() - m) <= view.pixels(kGrabPixels);
+      const bool on_first = polygon_.size() >= 3 && length(polygon_.front() - m) <= view.reach(kGrabPixels);
       if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) || on_first) {
         // The double-click's first click added a vertex at the same place: drop it.
-        if (!on_first && !polygon_.empty() && length(polygon_.back() - m) <= view.pixels(kGrabPixels))
+        if (!on_first && !polygon_.empty() && length(polygon_.back() - m) <= view.reach(kGrabPixels))
           polygon_.pop_back();
         changed |= finish_polygon(scene, ctx);
       } else {
@@ -479,6 +483,28 @@ void SceneEditor::help_window() {
     }
   }
   ImGui::End();
+}
+
+void SceneEditor::tool_buttons(float height, bool inline_) {
+  static const struct {
+    Tool tool;
+    const char* label;
+    const char* control;
+  } kTools[] = {{Tool::Select, "Select", "tool:select"},
+                {Tool::Disk, "Disk", "tool:disk"},
+                {Tool::Polygon, "Polygon", "tool:polygon"},
+                {Tool::Wall, "Wall", "tool:wall"}};
+  const float share = (ImGui::GetContentRegionAvail().x - 3 * ImGui::GetStyle().ItemSpacing.x) / 4;
+  for (const auto& t : kTools) {
+    const float w = inline_ ? ui::button_width(t.label) + 12.0f : share;
+    if (inline_) ui::flow(w);  // (after the items before, while it fits)
+    else if (&t != kTools) ImGui::SameLine();
+    const bool active = tool_ == t.tool;
+    if (active) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+    if (ImGui::Button(t.label, ImVec2(w, height))) set_tool(t.tool);
+    if (active) ImGui::PopStyleColor();
+    web::record_control(t.control);
+  }
 }
 
 }  // namespace csl::app

@@ -30,6 +30,10 @@ class SceneEditor {
   /// The tool buttons and undo/redo, for the side panel. Returns true if `scene` changed
   /// (Undo, Redo or Delete): the lesson must rebuild what it derives from the scene.
   bool toolbar(Scene& scene, LabContext& ctx);
+  /// The four tool buttons, `height` high, for the compact layout's strip over the views (they
+  /// change no scene): on a row of their own sharing the width, or `inline_` after the items
+  /// before them, each as wide as its label.
+  void tool_buttons(float height, bool inline_);
   /// The keyboard help as a window, when asked for (? key or the toolbar's button).
   void help_window();
 

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "app/shell/fonts.hpp"
+#include "app/shell/input_mode.hpp"
 #include "app/shell/theme.hpp"
 #include "app/shell/web_bridge.hpp"
 #include "core/base/angles.hpp"
@@ -67,6 +68,18 @@ void WorkspaceView::begin(const char* id, ImVec2 size, const Vec2& world_min, co
     center_screen_ = ImVec2(canvas_min_.x + 0.5f * size.x, canvas_min_.y + 0.5f * size.y);
     pan_ += before - mouse_world();
   }
+  // Two fingers: zoom about their midpoint as they spread, and pan as it moves.
+  const input::Pinch& pinch = input::pinch();
+  if (pinch.active && pinch.center.x >= canvas_min_.x && pinch.center.x < canvas_max_.x &&
+      pinch.center.y >= canvas_min_.y && pinch.center.y < canvas_max_.y) {
+    const Vec2 before = to_world(pinch.center);
+    zoom_ = std::clamp(zoom_ * static_cast<double>(pinch.scale), 0.5, 200.0);
+    scale_ = fit * static_cast<float>(zoom_);
+    center_world_ = 0.5 * (world_min_ + world_max_) + pan_;
+    center_screen_ = ImVec2(canvas_min_.x + 0.5f * size.x, canvas_min_.y + 0.5f * size.y);
+    pan_ += before - to_world(pinch.center);
+    pan_ -= Vec2(static_cast<double>(pinch.pan.x), -static_cast<double>(pinch.pan.y)) / static_cast<double>(scale_);
+  }
   // Pan with the right or middle button.
   if (hovered_ && (ImGui::IsMouseClicked(ImGuiMouseButton_Right) || ImGui::IsMouseClicked(ImGuiMouseButton_Middle)))
     panning_ = true;
@@ -82,6 +95,8 @@ void WorkspaceView::begin(const char* id, ImVec2 size, const Vec2& world_min, co
   // Snapped to whole pixels so that 1-pixel grid lines stay sharp.
   center_screen_ = ImVec2(std::round(canvas_min_.x + 0.5f * size.x), std::round(canvas_min_.y + 0.5f * size.y));
 }
+
+double WorkspaceView::reach(float mouse_px) const { return pixels(input::reach(mouse_px)); }
 
 ImVec2 WorkspaceView::to_screen(const Vec2& p) const {
   return ImVec2(center_screen_.x + scale_ * static_cast<float>(p.x() - center_world_.x()),

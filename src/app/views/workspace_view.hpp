@@ -43,6 +43,9 @@ class WorkspaceView {
   Vec2 mouse_world() const { return to_world(ImGui::GetIO().MousePos); }
   /// World distance of `pixels` logical pixels (for hit tolerances).
   double pixels(float pixels) const { return static_cast<double>(pixels / scale_); }
+  /// World distance within which a handle drawn `mouse_px` wide is grabbed: wider under a finger
+  /// (input::reach), so that every handle is a 44 px touch target.
+  double reach(float mouse_px) const;
 
   ImDrawList* draw_list() const { return ImGui::GetWindowDrawList(); }
   /// The background, grid and axis labels; `x_label`/`y_label` name the axes.

@@ -1,0 +1,189 @@
+// The lab on a phone: 390 x 844 CSS px held upright and 844 x 390 on its side, pixel ratio 3,
+// fingers only. The compact layout gives the lesson's views the width, a finger draws and moves
+// a disk, two fingers zoom, the playback strip steps PRM; nothing logs an error.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import {
+  api, collectErrors, openLab, screenshot, waitFrames, withBrowser, worldToPage,
+} from './lib/harness.mjs';
+
+const PORTRAIT = { width: 390, height: 844 };
+const LANDSCAPE = { width: 844, height: 390 };
+
+async function phone(browser, url, viewport, open) {
+  const ctx = await browser.newContext({ viewport, deviceScaleFactor: 3, hasTouch: true, isMobile: true });
+  const page = await ctx.newPage();
+  await page.addInitScript(() => localStorage.setItem('cspacelab:v1:welcomed', '1'));
+  const errors = collectErrors(page);
+  await openLab(page, url + open);
+  await waitFrames(page, 3);
+  const cdp = await ctx.newCDPSession(page);
+  // Fingers through the browser's touch events (the way a phone delivers them), frames between.
+  const touch = async (type, points) => {
+    await cdp.send('Input.dispatchTouchEvent', { type, touchPoints: points.map((p, i) => ({ x: p.x, y: p.y, id: i })) });
+    await waitFrames(page, 2);
+  };
+  const tap = async (at) => {
+    await touch('touchStart', [at]);
+    await touch('touchEnd', []);
+    await waitFrames(page, 2);
+  };
+  const fingerDrag = async (from, to, steps = 10) => {
+    await touch('touchStart', [from]);
+    for (let i = 1; i <= steps; ++i)
+      await touch('touchMove', [{ x: from.x + (to.x - from.x) * i / steps, y: from.y + (to.y - from.y) * i / steps }]);
+    await touch('touchEnd', []);
+    await waitFrames(page, 2);
+  };
+  // The app's own control by its page_state name, as a point of the page (null if not drawn).
+  const control = async (name) => page.evaluate((n) => {
+    const r = window.cspacelab.pageState().buttons[n];
+    const box = window.cspacelab.module.canvas.getBoundingClientRect();
+    return r ? { x: box.left + (r[0] + r[2]) / 2, y: box.top + (r[1] + r[3]) / 2, h: r[3] - r[1] } : null;
+  }, name);
+  const press = async (name) => {
+    const at = await control(name);
+    assert.ok(at, `the control "${name}" is on screen`);
+    await tap(at);
+  };
+  const layout = async () => (await page.evaluate(() => window.cspacelab.status())).layout;
+  return { ctx, page, errors, touch, tap, fingerDrag, control, press, layout };
+}
+
+const view = (layout, name) => layout.views.find((v) => v.name === name);
+
+test('Phone upright: every lesson\'s main view takes the width', () => withBrowser(async ({ browser, url }) => {
+  const { page, errors, press, layout, control } = await phone(browser, url, PORTRAIT, '?lesson=step-prm');
+  let l = await layout();
+  assert.equal(l.mode, 'compact');
+  assert.equal(l.tab, 'view');
+  assert.equal(l.touch, true, 'a phone is known to be touched');
+  const main = {
+    'step-prm': 'workspace', torus: 'workspace', potential: 'workspace', collision: 'workspace',
+    analysis: 'workspace', distances: 'circle', notation: 'robot',
+  };
+  const lessons = (await api(page, 'lessons')).map((x) => x.id);
+  assert.deepEqual([...lessons].sort(), Object.keys(main).sort(), 'every lesson is checked here');
+  for (const id of lessons) {
+    // Chosen the way a student does: the lesson menu, then the lesson.
+    await press('lesson-menu');
+    await press(`lesson:${id}`);
+    assert.equal((await api(page, 'status')).lesson, id);
+    l = await layout();
+    const v = view(l, main[id]);
+    assert.ok(v, `${id}: its view "${main[id]}" is drawn (${JSON.stringify(l.views)})`);
+    assert.ok(v.w >= 0.9 * PORTRAIT.width, `${id}: ${main[id]} is ${v.w} px wide of ${PORTRAIT.width}`);
+    assert.ok(v.h >= 150, `${id}: ${main[id]} is ${v.h} px tall`);
+    await screenshot(page, `phone-portrait-${id}.png`);
+  }
+  // The tabs' buttons are touch targets: at least 44 px high.
+  for (const name of ['tab:view', 'tab:controls', 'lesson-menu'])
+    assert.ok((await control(name)).h >= 44, `${name} is 44 px high`);
+  // Controls: the side panel, the whole width; no view is drawn meanwhile.
+  await press('tab:controls');
+  l = await layout();
+  assert.equal(l.tab, 'controls');
+  assert.deepEqual(l.views, []);
+  const panel = (await api(page, 'status')).panel;
+  assert.ok(panel.height > 300, `the panel has the screen's height (${panel.height})`);
+  await screenshot(page, 'phone-portrait-controls.png');
+  assert.deepEqual(errors, []);
+}));
+
+test('Phone upright: a finger draws and moves a disk, two fingers zoom, the strip steps PRM', () => withBrowser(async ({ browser, url }) => {
+  const { page, errors, touch, fingerDrag, press, layout } = await phone(browser, url, PORTRAIT, '?lesson=step-prm');
+  const before = (await api(page, 'get_scene')).obstacles.length;
+  // Draw: the Disk tool from the strip over the view, a drag from the centre to the rim.
+  await press('tool:disk');
+  const [c, rim] = await worldToPage(page, [[0.5, 0.85], [0.58, 0.85]]);
+  await fingerDrag(c, rim);
+  let scene = await api(page, 'get_scene');
+  assert.equal(scene.obstacles.length, before + 1, 'a disk was drawn');
+  const disk = scene.obstacles[scene.obstacles.length - 1];
+  assert.equal(disk.type, 'disk');
+  const px = (await api(page, 'view', { view: 'workspace' })).scale;
+  assert.ok(Math.hypot(disk.center[0] - 0.5, disk.center[1] - 0.85) < 3 / px, `centre ${disk.center}`);
+  assert.ok(Math.abs(disk.radius - 0.08) < 3 / px, `radius ${disk.radius}`);
+  // Move: the Select tool, the disk's body dragged by 0.1 to the left.
+  await press('tool:select');
+  const [inside, left] = await worldToPage(page, [[disk.center[0] + 0.02, disk.center[1]], [disk.center[0] - 0.08, disk.center[1]]]);
+  await fingerDrag(inside, left);
+  scene = await api(page, 'get_scene');
+  const moved = scene.obstacles[scene.obstacles.length - 1];
+  assert.ok(Math.abs(moved.center[0] - (disk.center[0] - 0.1)) < 3 / px, `moved to ${moved.center}`);
+  assert.ok(Math.abs(moved.center[1] - disk.center[1]) < 3 / px);
+  // The start marker is a 44 px target: a press 18 px off its centre still takes it.
+  const [start] = await worldToPage(page, [scene.start]);
+  const [to] = await worldToPage(page, [[scene.start[0] + 0.05, scene.start[1]]]);
+  await fingerDrag({ x: start.x + 18, y: start.y }, { x: to.x + 18, y: to.y });
+  const dragged = (await api(page, 'get_scene')).start;
+  assert.ok(Math.abs(dragged[0] - (scene.start[0] + 0.05)) < 3 / px, `start follows the finger: ${dragged}`);
+
+  // Pinch: two fingers spread apart over the view; the scene under them comes closer.
+  const fitted = (await api(page, 'view', { view: 'workspace' })).scale;
+  const w = view(await layout(), 'workspace');
+  const box = await page.locator('canvas').boundingBox();
+  const mid = { x: box.x + w.x + w.w / 2, y: box.y + w.y + w.h / 2 };
+  await touch('touchStart', [{ x: mid.x - 40, y: mid.y }, { x: mid.x + 40, y: mid.y }]);
+  for (let i = 1; i <= 8; ++i)
+    await touch('touchMove', [{ x: mid.x - 40 - 10 * i, y: mid.y }, { x: mid.x + 40 + 10 * i, y: mid.y }]);
+  await touch('touchEnd', []);
+  const zoomed = (await api(page, 'view', { view: 'workspace' })).scale;
+  // The fingers went from 80 px apart to 240: three times the scale.
+  assert.ok(Math.abs(zoomed / fitted - 3) < 0.1, `pinch zoomed ${fitted} -> ${zoomed}`);
+  assert.equal((await api(page, 'get_scene')).obstacles.length, before + 1, 'the pinch drew or moved nothing');
+  assert.deepEqual((await api(page, 'get_scene')).start, dragged, 'nor moved the start');
+  await screenshot(page, 'phone-portrait-zoomed.png');
+
+  // Step PRM from the strip over the view; then to the end.
+  await press('step');
+  await press('step');
+  assert.equal((await api(page, 'state')).steps, 2, 'two presses of Step, two steps');
+  await press('run-all');
+  const s = await api(page, 'state');
+  assert.ok(s.done, 'Run all ran PRM to the end');
+  // The log folds to its newest line; a press opens it.
+  await press('log-toggle');
+  assert.equal((await layout()).log_open, true);
+  await screenshot(page, 'phone-portrait-step-prm.png');
+  assert.deepEqual(errors, []);
+}));
+
+test('Phone on its side: compact, views side by side, PRM stepped', () => withBrowser(async ({ browser, url }) => {
+  const { page, errors, press, layout } = await phone(browser, url, LANDSCAPE, '?lesson=torus');
+  let l = await layout();
+  await screenshot(page, 'phone-landscape-torus.png');
+  assert.equal(l.mode, 'compact');
+  const ws = view(l, 'workspace'), cs = view(l, 'cspace');
+  assert.ok(ws && cs, 'the torus lesson shows the arm and its C-space');
+  assert.ok(cs.x >= ws.x + ws.w - 1, 'side by side on a wide screen');
+  assert.ok(ws.h >= 170, `the views have the height left (${ws.h})`);
+  await press('step');
+  assert.equal(await api(page, 'step', { count: 0 }), 1, 'one press of Step, one step');
+  await press('lesson-menu');
+  await press('lesson:step-prm');
+  l = await layout();
+  assert.ok(view(l, 'workspace').h >= 170);
+  await press('run-all');
+  assert.ok((await api(page, 'state')).done);
+  await screenshot(page, 'phone-landscape-step-prm.png');
+  assert.deepEqual(errors, []);
+}));
+
+test('A laptop keeps the wide layout; a tablet upright stacks two views', () => withBrowser(async ({ browser, url }) => {
+  for (const [viewport, mode] of [[{ width: 1280, height: 800 }, 'wide'], [{ width: 768, height: 1024 }, 'wide']]) {
+    const page = await browser.newPage({ viewport });
+    const errors = collectErrors(page);
+    await page.addInitScript(() => localStorage.setItem('cspacelab:v1:welcomed', '1'));
+    await openLab(page, url + '?lesson=torus');
+    await waitFrames(page, 3);
+    const l = (await api(page, 'status')).layout;
+    assert.equal(l.mode, mode);
+    const ws = view(l, 'workspace'), cs = view(l, 'cspace');
+    if (viewport.width > viewport.height) assert.ok(cs.x >= ws.x + ws.w - 1, 'side by side');
+    else assert.ok(cs.y >= ws.y + ws.h - 1 && cs.w > 400, `stacked, each the width (${ws.w}, ${cs.w})`);
+    await screenshot(page, `layout-${viewport.width}x${viewport.height}.png`);
+    assert.deepEqual(errors, []);
+    await page.close();
+  }
+}));
