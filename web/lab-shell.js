@@ -1331,6 +1331,14 @@
         if (document.activeElement !== canvas) canvas.focus({ preventScroll: true });
       });
       canvas.addEventListener('contextmenu', (e) => e.preventDefault());
+      // Tab leaves the lab, as it leaves any control: SDL cancels every Tab on the canvas (and
+      // ImGui would take it to step through its text fields), which made the canvas a keyboard
+      // trap. Stopped here, on the way down, neither sees it and the browser moves the focus on.
+      // The same for the textarea that takes typing while a field of the app has the keyboard.
+      root.addEventListener('keydown', (e) => {
+        if (e.key !== 'Tab' || e.ctrlKey || e.altKey || e.metaKey) return;
+        if (e.target === canvas || e.target === canvas.cslText) e.stopPropagation();
+      }, { capture: true });
       // SDL's wheel listener on the canvas cancels the event (no page scroll). Until the lab has
       // focus the event stops here, on the way down: SDL never sees it and the page scrolls.
       root.addEventListener('wheel', (e) => {

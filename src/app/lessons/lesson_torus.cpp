@@ -389,6 +389,9 @@ class TorusLesson : public Lesson {
     }
     SceneEditor::Options options;
     options.endpoints_are_points = false;
+    // Start and goal are angles, points of the square: the keyboard moves them there (when the
+    // square is on screen to show where they go).
+    if (right_view_ != 1) options.angle_view = &cspace_view_;
     if (editor_.edit(view_, scene_, ctx, options)) scene_edited();
     if (replay_pending() && !editor_.dragging()) scene_edited();  // released
   }
@@ -435,6 +438,7 @@ class TorusLesson : public Lesson {
     cspace_view_.draw_list()->AddCircleFilled(at, 6.0f, world().is_free(q_) ? theme::kRobot : theme::kHit, 16);
     cspace_view_.draw_list()->AddCircle(at, 6.0f, theme::rgba(255, 255, 255), 16, 2.0f);
     cspace_view_.pop_clip();
+    editor_.draw_endpoint_focus(cspace_view_, scene_);  // S or G with the keyboard's focus
 
     // Hover: a ghost of the arm; press and drag: pose it (or move start / goal when on them).
     ghost_.reset();

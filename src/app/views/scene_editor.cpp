@@ -60,7 +60,7 @@ bool SceneEditor::undo(Scene& scene) {
   redo_.push_back(scene);
   scene = undo_.back();
   undo_.pop_back();
-  selected_ = -1;
+  keep_focus_through(scene);
   return true;
 }
 
@@ -70,8 +70,15 @@ bool SceneEditor::redo(Scene& scene) {
   undo_.push_back(scene);
   scene = redo_.back();
   redo_.pop_back();
-  selected_ = -1;
+  keep_focus_through(scene);
   return true;
+}
+
+void SceneEditor::keep_focus_through(const Scene& now) {
+  // The mouse's selection ends with an undo or redo; the keyboard's focus stays where it was
+  // (one who undoes a press goes on with the same thing) while the obstacle is still there.
+  const bool keep = focus_ == Focus::Obstacle && selected_ >= 0 && selected_ < static_cast<int>(now.obstacles.size());
+  if (!keep) selected_ = -1;
 }
 
 void SceneEditor::clear_history() {
@@ -101,6 +108,7 @@ void SceneEditor::drop_drag() {
   drag_ = Drag::None;
   target_ = -1;
   handle_ = -1;
+  key_burst_ = false;  // a key still held makes its next change a new undo step
 }
 
 bool SceneEditor::add_obstacle(Scene& scene, Obstacle o, LabContext& ctx) {
@@ -157,9 +165,11 @@ bool SceneEditor::handle_keys(Scene& scene, LabContext& ctx) {
       polygon_.clear();
     } else {
       selected_ = -1;
+      focus_ = Focus::None;
     }
   }
-  if (key_pressed(ImGuiKey_Enter) && tool_ == Tool::Polygon) changed |= finish_polygon(scene, ctx);
+  // (Enter with no polygon begun places one by keyboard: handle_edit_keys.)
+  if (key_pressed(ImGuiKey_Enter) && tool_ == Tool::Polygon && !polygon_.empty()) changed |= finish_polygon(scene, ctx);
   if (key_pressed(ImGuiKey_Delete) || key_pressed(ImGuiKey_Backspace)) {
     if (!polygon_.empty()) {
       polygon_.pop_back();
@@ -330,14 +340,18 @@ bool SceneEditor::edit(WorkspaceView& view, Scene& scene, LabContext& ctx, const
   // A drag lives in consecutive frames of its view. If the view was off screen (another lesson
   // or tab), the drag ended there: it must not jump to wherever the mouse is on return.
   const int frame = ImGui::GetFrameCount();
-  if (drag_ != Drag::None && last_frame_ < frame - 1) end_drag(scene);
+  if ((drag_ != Drag::None || key_burst_) && last_frame_ < frame - 1) end_drag(scene);
   last_frame_ = frame;
   bool changed = false;
   // Keys work wherever the mouse is (the lesson on screen owns them); text fields keep theirs.
   changed |= handle_keys(scene, ctx);
   if (selected_ >= static_cast<int>(scene.obstacles.size())) selected_ = -1;
+  // No mouse needed: what has the keyboard focus moves by the arrows (scene_editor_keys.cpp).
+  changed |= handle_edit_keys(view, scene, ctx, options);
 
   if (drag_ == Drag::None && view.hovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+    focus_ = Focus::None;  // the mouse takes over; the arrows take its selection if pressed
+    focus_handle_ = -1;
     if (!begin_drag(view, scene, options) && tool_ == Tool::Polygon) {
       const Vec2 m = view.mouse_world();
       // Double-click, or a click on the first vertex, closes the polygon.
@@ -362,6 +376,7 @@ bool SceneEditor::edit(WorkspaceView& view, Scene& scene, LabContext& ctx, const
       ImGui::SetMouseCursor(ImGuiMouseCursor_Hand);
   }
   draw_overlays(view, scene);
+  if (options.endpoints_are_points) draw_endpoint_focus(view, scene);
   return changed;
 }
 
@@ -406,6 +421,7 @@ void SceneEditor::draw_overlays(WorkspaceView& view, const Scene& scene) const {
     for (const Vec2& v : polygon_) dl->AddCircleFilled(view.to_screen(v), 4.0f, theme::kPreview);
     if (polygon_.size() >= 3) dl->AddCircle(view.to_screen(polygon_.front()), kGrabPixels, theme::kPreview, 16, 1.5f);
   }
+  draw_focus(view, scene);  // over the selection look: the keyboard's ring
   dl->PopClipRect();
 }
 
@@ -417,10 +433,10 @@ bool SceneEditor::toolbar(Scene& scene, LabContext&) {
     const char* tip;
   };
   static const Item kItems[] = {
-      {Tool::Select, "Select", "V: select, move, resize, delete obstacles; drag start and goal"},
-      {Tool::Disk, "Disk", "D: drag from the centre to the rim"},
-      {Tool::Polygon, "Polygon", "P: click the vertices; double-click, Enter or the first vertex closes"},
-      {Tool::Wall, "Wall", "W: drag from one end to the other (zero thickness)"},
+      {Tool::Select, "Select", "V: select, move, resize, delete obstacles; drag start and goal (or N and the arrows)"},
+      {Tool::Disk, "Disk", "D: drag from the centre to the rim (or Enter: one in the middle of the view)"},
+      {Tool::Polygon, "Polygon", "P: click the vertices; double-click, Enter or the first vertex closes (Enter first: a square)"},
+      {Tool::Wall, "Wall", "W: drag from one end to the other, zero thickness (or Enter: one in the middle)"},
   };
   for (const Item& item : kItems) {
     if (&item != kItems) ui::flow(ui::button_width(item.label));
@@ -462,9 +478,16 @@ void SceneEditor::help_window() {
         {"drag (Select)", "move an obstacle, start or goal; its handles resize"},
         {"drag (Disk, Wall)", "draw one"},
         {"click (Polygon)", "add a vertex; double-click or Enter closes"},
+        {"Enter (Disk, Wall)", "place one in the middle of the view, focused"},
+        {"Enter (Polygon)", "close it; with no vertex yet, place a square (vertices: H)"},
+        {"N / Shift+N", "keyboard focus on the next / previous thing: start, goal, obstacles"},
+        {"H / Shift+H", "focus the focused obstacle's next / previous vertex or wall end"},
+        {"arrows", "move what has the focus by a step (1/50 of the view); Shift: 1/10 step"},
+        {"+ / - (= / _)", "grow / shrink the focused obstacle"},
         {"Backspace", "remove the last polygon vertex, or the selection"},
         {"Delete", "delete the selected obstacle"},
-        {"Esc", "cancel a drag or the polygon, or deselect"},
+        {"Esc", "cancel a drag or the polygon, or deselect (and unfocus)"},
+        {"Tab / Shift+Tab", "leave the lab for the page (no key trap)"},
         {"Ctrl+Z / Ctrl+Y", "undo / redo (Ctrl+Shift+Z redoes too)"},
         {"wheel / right drag", "zoom about the cursor / pan"},
         {"F", "fit the view"},

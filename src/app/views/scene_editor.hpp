@@ -3,6 +3,9 @@
 // vertices, double-click or Enter to close), walls (drag); select, move, resize (a disk's rim,
 // a polygon's vertices, a wall's ends), delete; drag start and goal; undo and redo.
 // Keys: V select, D disk, P polygon, W wall, Delete, Esc, Ctrl+Z, Ctrl+Y, F fit view, ? help.
+// And all of it by keyboard alone (scene_editor_keys.cpp): N / Shift+N focus the next / previous
+// thing (start, goal, each obstacle), H / Shift+H a handle of it (a vertex, a wall's end), the
+// arrows move what has the focus, + / - resize it, Enter places a disk, wall or polygon.
 // Edits that would make the scene invalid (a polygon with < 3 vertices or crossing edges, too
 // many obstacles) are refused with a message and change nothing.
 #include <optional>
@@ -21,6 +24,10 @@ class SceneEditor {
   struct Options {
     bool endpoints_are_points = true;  ///< start/goal are workspace points (point/polygon robot)
     bool editable = true;              ///< false: view only (no tools)
+    /// Where start and goal are points when they are not points of the edited view: an arm's
+    /// C-space square, whose coordinates are angles (the keyboard moves them there, wrapping
+    /// round). Null: the keyboard moves them only if endpoints_are_points.
+    const WorkspaceView* angle_view = nullptr;
   };
 
   /// Handles the mouse and keys over `view` (after view.begin() and after the scene is drawn)
@@ -36,13 +43,18 @@ class SceneEditor {
   void tool_buttons(float height, bool inline_);
   /// The keyboard help as a window, when asked for (? key or the toolbar's button).
   void help_window();
+  /// The keyboard focus ring on start or goal, if one has it, in `view` where they are drawn as
+  /// points: edit() draws it in its own view; a lesson whose start and goal are angles
+  /// (Options::angle_view) calls this after drawing them there.
+  void draw_endpoint_focus(const WorkspaceView& view, const Scene& scene) const;
 
   Tool tool() const { return tool_; }
   void set_tool(Tool t);
   /// The selected obstacle, or -1.
   int selected() const { return selected_; }
-  /// Whether a drag (of an obstacle, handle or endpoint) is in progress.
-  bool dragging() const { return drag_ != Drag::None; }
+  /// Whether a drag (of an obstacle, handle or endpoint) is in progress, or an editing key is
+  /// held: views that replay at a drag's release replay when the key is let go.
+  bool dragging() const { return drag_ != Drag::None || key_burst_; }
 
   /// Records `scene` as it is before an edit made elsewhere (e.g. through the API): undoable.
   void record(const Scene& before);
@@ -58,7 +70,20 @@ class SceneEditor {
 
  private:
   enum class Drag { None, Obstacle, DiskRim, Vertex, WallEnd, Start, Goal, NewDisk, NewWall };
+  // What the keyboard edits: start, goal, or the selected obstacle (selected_), whole or one of
+  // its handles (focus_handle_: a polygon's vertex, a wall's end; -1 the whole obstacle).
+  enum class Focus { None, Start, Goal, Obstacle };
   bool handle_keys(Scene& scene, LabContext& ctx);
+  // scene_editor_keys.cpp: editing by keyboard alone.
+  bool handle_edit_keys(WorkspaceView& view, Scene& scene, LabContext& ctx, const Options& options);
+  void cycle_focus(const Scene& scene, const Options& options, int by);
+  void cycle_handle(const Scene& scene, int by);
+  bool move_focused(Scene& scene, LabContext& ctx, const Options& options, const Vec2& by);
+  bool resize_focused(Scene& scene, LabContext& ctx, double step, int sign);
+  bool place(WorkspaceView& view, Scene& scene, LabContext& ctx);
+  void keep_focus_through(const Scene& now);  // after undo or redo
+  void draw_focus(const WorkspaceView& view, const Scene& scene) const;
+  Focus focus() const;
   bool begin_drag(WorkspaceView& view, Scene& scene, const Options& options);
   bool continue_drag(WorkspaceView& view, Scene& scene, LabContext& ctx);
   bool finish_polygon(Scene& scene, LabContext& ctx);
@@ -79,6 +104,9 @@ class SceneEditor {
   std::vector<Vec2> polygon_;  // vertices of the polygon being built
   std::vector<Scene> undo_, redo_;
   bool show_help_ = false;
+  Focus focus_ = Focus::None;
+  int focus_handle_ = -1;
+  bool key_burst_ = false;  // an edit key is held: its repeats join the press's undo step
 };
 
 }  // namespace csl::app

@@ -1,0 +1,201 @@
+// Scene editing by keyboard alone (issue "Keyboard alone"): no mouse event at all in this file
+// (no page.mouse, no click), the lab focused by Tab from page load, the API used only to open
+// lessons by URL and to read state. A disk placed with D and Enter, moved by the arrows by the
+// step the view defines, resized with + and -; the start focused with N and moved; the planner
+// stepped and played with '.' and Space; the arm's start moved in its C-space square; and Tab
+// leaves the canvas, in the page and in an embed.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { withBrowser, withPage, collectErrors, keys, waitFrames, screenshot, inspectPng, api } from './lib/harness.mjs';
+
+// The keyboard's step in a view: its visible width / 50, rounded down to 1, 2 or 5 times a power
+// of ten (scene_editor_keys.cpp says why).
+async function keyStep(page, view = 'workspace') {
+  const v = await page.evaluate((name) => window.cspacelab.view([], name), view);
+  const x = (v.canvas_max[0] - v.canvas_min[0]) / v.scale / 50;
+  const p = 10 ** Math.floor(Math.log10(x));
+  const m = x / p;
+  return (m >= 5 - 1e-9 ? 5 : m >= 2 - 1e-9 ? 2 : 1) * p;
+}
+
+// The world point at the middle of a view's canvas (where Enter places a new obstacle).
+async function viewMiddle(page, view = 'workspace') {
+  const v = await page.evaluate((name) => window.cspacelab.view([[0, 0], [1, 1]], name), view);
+  const [[x0, y0], [x1, y1]] = v.points;
+  const mx = (v.canvas_min[0] + v.canvas_max[0]) / 2, my = (v.canvas_min[1] + v.canvas_max[1]) / 2;
+  return [(mx - x0) / (x1 - x0), (my - y0) / (y1 - y0)];
+}
+
+const canvasFocused = (page) => page.evaluate(() => document.activeElement === document.querySelector('canvas'));
+
+// Tab until the canvas has the focus (the page may give it the focus on load: then Tab first
+// leaves it, which is checked too). Returns how many presses it took.
+async function tabToCanvas(page) {
+  if (await canvasFocused(page)) {
+    await keys(page, 'Tab');
+    assert.equal(await canvasFocused(page), false, 'Tab leaves the canvas: no keyboard trap');
+  }
+  for (let i = 1; i <= 6; ++i) {
+    await keys(page, 'Tab');
+    if (await canvasFocused(page)) return i;
+  }
+  assert.fail('Tab never reached the canvas');
+}
+
+const close = (a, b, what, eps = 1e-9) => assert.ok(Math.abs(a - b) <= eps, `${what}: ${a} vs ${b}`);
+
+test('place, move and resize a disk, move the start, and run PRM by keyboard alone',
+  () => withPage({ open: 'index.html?lesson=step-prm&samples=40&seed=3', viewport: { width: 1280, height: 800 } }, async ({ page, browser }) => {
+  await tabToCanvas(page);
+  const s = await keyStep(page);
+  assert.ok(s > 0.005 && s < 0.1, `a step of the 0..1 workspace: ${s}`);
+  const before = await api(page, 'get_scene');
+
+  // D, Enter: a disk in the middle of the view, radius 5 steps.
+  const mid = await viewMiddle(page);
+  await keys(page, 'd', 'Enter');
+  let scene = await api(page, 'get_scene');
+  assert.equal(scene.obstacles.length, before.obstacles.length + 1, 'Enter placed an obstacle');
+  const i = scene.obstacles.length - 1;
+  let disk = scene.obstacles[i];
+  assert.equal(disk.type, 'disk');
+  close(disk.center[0], mid[0], 'centre x', 1e-4);
+  close(disk.center[1], mid[1], 'centre y', 1e-4);
+  close(disk.radius, 5 * s, 'radius');
+  const c0 = disk.center;
+
+  // The arrows move it by exactly a step each; Shift by a tenth of one.
+  await keys(page, 'ArrowRight', 'ArrowRight', 'ArrowRight', 'ArrowUp');
+  disk = (await api(page, 'get_scene')).obstacles[i];
+  close(disk.center[0], c0[0] + 3 * s, 'three steps right');
+  close(disk.center[1], c0[1] + s, 'one step up');
+  await keys(page, 'Shift+ArrowLeft');
+  disk = (await api(page, 'get_scene')).obstacles[i];
+  close(disk.center[0], c0[0] + 3 * s - 0.1 * s, 'a fine step left', 1e-12 + 1e-9);
+  await keys(page, 'ArrowDown');
+  disk = (await api(page, 'get_scene')).obstacles[i];
+  close(disk.center[1], c0[1], 'back down');
+
+  // + and - resize it; each press is one undo step.
+  await keys(page, '+', '+', '-');
+  disk = (await api(page, 'get_scene')).obstacles[i];
+  close(disk.radius, 6 * s, 'two up, one down');
+  await keys(page, 'Control+z');
+  close((await api(page, 'get_scene')).obstacles[i].radius, 7 * s, 'Ctrl+Z undid the last press only');
+  await keys(page, 'Control+y');
+  close((await api(page, 'get_scene')).obstacles[i].radius, 6 * s, 'and Ctrl+Y redid it');
+  // A radius that would go to zero is refused, with a message, and nothing changes.
+  for (let k = 0; k < 6; ++k) await keys(page, '-');
+  assert.match((await api(page, 'status')).notice, /radius must stay above zero/);
+  close((await api(page, 'get_scene')).obstacles[i].radius, s, 'the smallest radius a step allows');
+  await keys(page, '+', '+', '+');
+  await waitFrames(page, 2);
+  const ringed = await screenshot(page, 'keyboard-edit-disk-focus.png');
+  const [x, y] = (await page.evaluate((c) => window.cspacelab.view([c]), disk.center)).points[0];
+  const box = await page.evaluate(() => document.querySelector('canvas').getBoundingClientRect().toJSON());
+  // The ring: yellow inside black, 8 px outside the rim (4 steps of radius now).
+  const rPx = 4 * s * (await page.evaluate(() => window.cspacelab.view([]))).scale + 8;
+  // (On the left: the selection's "r = ..." label is on the right.)
+  const { at: [probe] } = await inspectPng(browser, ringed.png, [[box.x + x - rPx, box.y + y]]);
+  assert.ok(probe[0] > 200 && probe[1] > 190 && probe[2] < 120, `the focus ring is drawn round the disk: ${probe}`);
+
+  // N: the next thing after the last obstacle is the start. The arrows move it.
+  const start0 = (await api(page, 'get_scene')).start;
+  await keys(page, 'n');
+  await keys(page, 'ArrowRight', 'ArrowRight', 'ArrowUp');
+  scene = await api(page, 'get_scene');
+  close(scene.start[0], Math.min(start0[0] + 2 * s, scene.workspace.max[0]), 'start moved right');
+  close(scene.start[1], Math.min(start0[1] + s, scene.workspace.max[1]), 'start moved up');
+  assert.deepEqual(scene.obstacles[i], (await api(page, 'get_scene')).obstacles[i], 'the disk stayed');
+  await waitFrames(page, 2);
+  await screenshot(page, 'keyboard-edit-start-focus.png');
+  // Delete with the start focused removes nothing (the disk is no longer selected).
+  await keys(page, 'Delete');
+  assert.equal((await api(page, 'get_scene')).obstacles.length, before.obstacles.length + 1);
+  // Esc leaves the focus: the arrows then move nothing.
+  await keys(page, 'Escape', 'ArrowLeft');
+  assert.deepEqual((await api(page, 'get_scene')).start, scene.start, 'no focus, no move');
+  // (That arrow walked ImGui's own keyboard navigation into the panel, where Space would press
+  // its first button: Esc leaves it.)
+  await keys(page, 'Escape');
+
+  // The planner by its keys: '.' steps, Space plays until the end.
+  await keys(page, '.', '.', '.');
+  assert.equal((await api(page, 'state')).steps, 3, "'.' stepped three times");
+  await keys(page, ' ');  // 40 samples at 20 steps/s: a few seconds
+  await page.waitForFunction(() => window.cspacelab.state().done, null, { timeout: 90000 });
+  const result = await api(page, 'state');
+  assert.equal(result.done, true);
+  assert.ok(result.nodes > 0, `a roadmap: ${result.nodes} nodes, solved ${result.solved}`);
+  assert.deepEqual(result.path.length > 0, result.solved, 'a path exactly when solved');
+  await screenshot(page, 'keyboard-edit-run.png');
+
+  // And Tab still leaves the canvas.
+  assert.equal(await canvasFocused(page), true);
+  await keys(page, 'Tab');
+  assert.equal(await canvasFocused(page), false, 'Tab leaves the canvas after all that');
+}));
+
+test("the arm's start moves by keyboard in its C-space square, round the torus",
+  () => withPage({ open: 'index.html?lesson=torus', viewport: { width: 1280, height: 800 } }, async ({ page }) => {
+  await tabToCanvas(page);
+  const s = await keyStep(page, 'cspace');
+  assert.ok(s > 0.01 && s < 0.5, `a step of the square [-pi, pi)^2: ${s}`);
+  const start0 = (await api(page, 'state')).start;
+  await keys(page, 'n', 'ArrowRight', 'ArrowRight', 'ArrowDown');
+  const start1 = (await api(page, 'state')).start;
+  const wrap = (a) => a - 2 * Math.PI * Math.floor((a + Math.PI) / (2 * Math.PI));
+  close(start1[0], wrap(start0[0] + 2 * s), 'theta1 two steps', 1e-12);
+  close(start1[1], wrap(start0[1] - s), 'theta2 a step down', 1e-12);
+  await waitFrames(page, 2);
+  await screenshot(page, 'keyboard-edit-torus-start.png');
+  // Held down, the key repeats: theta1 goes round the square's edge and comes back on the other
+  // side (below where it began), and the whole burst is one undo step.
+  await page.keyboard.down('ArrowRight');
+  await page.waitForFunction((t) => window.cspacelab.state().start[0] < t, start1[0], { timeout: 30000 });
+  await page.keyboard.up('ArrowRight');
+  await waitFrames(page, 3);
+  const start2 = (await api(page, 'state')).start;
+  assert.ok(start2[0] < start1[0] && start2[1] === start1[1], `theta1 wrapped round to ${start2[0]}`);
+  await keys(page, 'Control+z');
+  assert.deepEqual((await api(page, 'state')).start, start1, 'Ctrl+Z undid the whole burst');
+}));
+
+test('Tab goes into an embedded lab and out again to the page around it',
+  () => withBrowser(async ({ browser, url }) => {
+  const page = await browser.newPage({ viewport: { width: 1000, height: 700 } });
+  const errors = collectErrors(page);
+  const host = url + 'keyboard-host.html';
+  await page.route(host, (route) => route.fulfill({
+    contentType: 'text/html',
+    body: `<!doctype html><html><head><meta charset="utf-8"><title>host</title></head><body>
+      <a id="before" href="#x">before the lab</a>
+      <iframe id="f" src="embed.html?lesson=step-prm" style="width:640px;height:420px" title="lab"></iframe>
+      <button id="after">after the lab</button></body></html>`,
+  }));
+  await page.goto(host);
+  const frame = await (await page.waitForSelector('iframe')).contentFrame();
+  await frame.waitForFunction(() => window.cspacelab && window.cspacelab.status().frames >= 2, null, { timeout: 30000 });
+  const where = () => page.evaluate(() => document.activeElement.id || document.activeElement.tagName);
+  const inLab = () => frame.evaluate(() => document.activeElement === document.querySelector('canvas'));
+  const press = async (...names) => {  // the page's keyboard, the lab's frames
+    for (const k of names) { await page.keyboard.press(k); await waitFrames(frame, 1); }
+  };
+  await press('Tab');
+  assert.equal(await where(), 'before');
+  await press('Tab');
+  assert.equal(await where(), 'f');
+  assert.equal(await inLab(), true, 'Tab reached the lab');
+  // Keys reach it there: N and the arrows move the start.
+  const start0 = (await frame.evaluate(() => window.cspacelab.getScene())).start;
+  await press('n', 'ArrowUp');
+  assert.ok((await frame.evaluate(() => window.cspacelab.getScene())).start[1] > start0[1], 'the start moved up');
+  await press('Tab');
+  assert.equal(await where(), 'after', 'the next Tab left the lab for the page');
+  assert.equal(await inLab(), false);
+  await press('Shift+Tab');
+  assert.equal(await inLab(), true, 'Shift+Tab came back');
+  await press('Shift+Tab');
+  assert.equal(await where(), 'before', 'and Shift+Tab leaves it backwards');
+  assert.deepEqual(errors, []);
+}));
