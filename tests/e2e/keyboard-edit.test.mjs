@@ -136,6 +136,47 @@ test('place, move and resize a disk, move the start, and run PRM by keyboard alo
   assert.equal(await canvasFocused(page), false, 'Tab leaves the canvas after all that');
 }));
 
+test('a polygon and a wall placed by keyboard: vertices by H and the arrows, refusals kept',
+  () => withPage({ open: 'index.html?lesson=step-prm' }, async ({ page }) => {
+  await tabToCanvas(page);
+  const s = await keyStep(page);
+  const n = (await api(page, 'get_scene')).obstacles.length;
+  // P, Enter: a square of side 10 steps; H focuses its first vertex, the arrows move it alone.
+  await keys(page, 'p', 'Enter');
+  let poly = (await api(page, 'get_scene')).obstacles[n];
+  assert.equal(poly.type, 'polygon');
+  assert.equal(poly.vertices.length, 4);
+  close(poly.vertices[2][0] - poly.vertices[0][0], 10 * s, 'side');
+  const v0 = poly.vertices;
+  await keys(page, 'h', 'ArrowLeft');
+  poly = (await api(page, 'get_scene')).obstacles[n];
+  close(poly.vertices[0][0], v0[0][0] - s, 'the vertex moved a step left');
+  assert.deepEqual(poly.vertices.slice(1), v0.slice(1), 'the others stayed');
+  // Up and up: the vertex would cross the square's top edge; that move is refused.
+  for (let k = 0; k < 12; ++k) await keys(page, 'ArrowUp');
+  assert.match((await api(page, 'status')).notice, /cross itself/);
+  poly = (await api(page, 'get_scene')).obstacles[n];
+  assert.ok(poly.vertices[0][1] < v0[0][1] + 12 * s - 1e-9, `the vertex stopped short: ${poly.vertices[0][1]}`);
+  assert.ok(poly.vertices[0][1] >= v0[3][1] - 1e-9, 'after the moves that kept it simple');
+  // Shift+H back to the whole polygon; + scales it about its centroid by 10 %.
+  await keys(page, 'Shift+H');
+  const before = (await api(page, 'get_scene')).obstacles[n].vertices;
+  await keys(page, '+');
+  const after = (await api(page, 'get_scene')).obstacles[n].vertices;
+  const cx = before.reduce((a, v) => a + v[0], 0) / 4;
+  close(after[1][0] - cx, 1.1 * (before[1][0] - cx), 'scaled about the centroid', 1e-12);
+  // W, Enter: a wall 10 steps long; + lengthens it by a step.
+  await keys(page, 'w', 'Enter');
+  let wall = (await api(page, 'get_scene')).obstacles[n + 1];
+  assert.equal(wall.type, 'segment');
+  close(wall.b[0] - wall.a[0], 10 * s, 'length');
+  await keys(page, '+');
+  wall = (await api(page, 'get_scene')).obstacles[n + 1];
+  close(wall.b[0] - wall.a[0], 11 * s, 'a step longer');
+  await waitFrames(page, 2);
+  await screenshot(page, 'keyboard-edit-wall.png');
+}));
+
 test("the arm's start moves by keyboard in its C-space square, round the torus",
   () => withPage({ open: 'index.html?lesson=torus', viewport: { width: 1280, height: 800 } }, async ({ page }) => {
   await tabToCanvas(page);

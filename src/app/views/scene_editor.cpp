@@ -344,10 +344,11 @@ bool SceneEditor::edit(WorkspaceView& view, Scene& scene, LabContext& ctx, const
   last_frame_ = frame;
   bool changed = false;
   // Keys work wherever the mouse is (the lesson on screen owns them); text fields keep theirs.
+  const bool polygon_begun = !polygon_.empty();  // then Enter closes it, and places nothing
   changed |= handle_keys(scene, ctx);
   if (selected_ >= static_cast<int>(scene.obstacles.size())) selected_ = -1;
   // No mouse needed: what has the keyboard focus moves by the arrows (scene_editor_keys.cpp).
-  changed |= handle_edit_keys(view, scene, ctx, options);
+  changed |= handle_edit_keys(view, scene, ctx, options, !polygon_begun);
 
   if (drag_ == Drag::None && view.hovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
     focus_ = Focus::None;  // the mouse takes over; the arrows take its selection if pressed

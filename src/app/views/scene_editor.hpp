@@ -75,7 +75,7 @@ class SceneEditor {
   enum class Focus { None, Start, Goal, Obstacle };
   bool handle_keys(Scene& scene, LabContext& ctx);
   // scene_editor_keys.cpp: editing by keyboard alone.
-  bool handle_edit_keys(WorkspaceView& view, Scene& scene, LabContext& ctx, const Options& options);
+  bool handle_edit_keys(WorkspaceView& view, Scene& scene, LabContext& ctx, const Options& options, bool enter_places);
   void cycle_focus(const Scene& scene, const Options& options, int by);
   void cycle_handle(const Scene& scene, int by);
   bool move_focused(Scene& scene, LabContext& ctx, const Options& options, const Vec2& by);

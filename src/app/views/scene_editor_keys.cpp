@@ -244,7 +244,8 @@ bool SceneEditor::place(WorkspaceView& view, Scene& scene, LabContext& ctx) {
   return true;
 }
 
-bool SceneEditor::handle_edit_keys(WorkspaceView& view, Scene& scene, LabContext& ctx, const Options& options) {
+bool SceneEditor::handle_edit_keys(WorkspaceView& view, Scene& scene, LabContext& ctx, const Options& options,
+                                   bool enter_places) {
   const ImGuiIO& io = ImGui::GetIO();
   // A burst ends when every key is up: its repeats were one undo step, as one drag is.
   if (key_burst_ && std::none_of(std::begin(io.KeysDown), std::end(io.KeysDown), [](bool d) { return d; }))
@@ -273,8 +274,10 @@ bool SceneEditor::handle_edit_keys(WorkspaceView& view, Scene& scene, LabContext
     }
   }
 
-  // (Not repeated: a held Enter places one obstacle, not a stack of them.)
-  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) && tool_ != Tool::Select && polygon_.empty())
+  // (Not repeated: a held Enter places one obstacle, not a stack of them. Not either when it
+  // closed a polygon drawn with the mouse this frame: `enter_places` is false then.)
+  if (enter_places && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) && tool_ != Tool::Select &&
+      polygon_.empty())
     changed |= place(view, scene, ctx);
 
   Vec2 arrows(0, 0);
