@@ -24,6 +24,7 @@
 #include "app/shell/bundled_scenes.hpp"
 #include "app/shell/js_api.hpp"
 #include "app/shell/lesson.hpp"
+#include "core/base/text.hpp"
 #include "app/shell/panel.hpp"
 #include "app/shell/param_widgets.hpp"
 #include "app/shell/theme.hpp"
@@ -282,6 +283,24 @@ class AnalysisLesson : public Lesson, private NoSteps {
     if (p9_changed) sample_p9();
     if (cancel) experiment_.reset();
     if (run) start_experiment();
+  }
+
+  std::vector<ParamField> param_fields() const override {
+    return {{"sample_counts", "sample counts n", &kLabExperimentSamples},
+            {"trials", "trials", &kLabExperimentTrials},
+            {"tab", "tab", nullptr, {"bound", "tiling", "visibility"}},
+            {"mc_trials", "Monte Carlo samples", &kLabVisibilityTrials},
+            {"mc_seed", "Monte Carlo seed", &kMcSeed}};
+  }
+
+  std::string describe() const override {
+    std::string out = Lesson::describe();
+    if (!experiment_) return out + " No experiment has run yet.";
+    out += " The experiment's failure rates:";
+    for (const ExperimentRow& r : experiment_->rows())
+      out += " n = " + std::to_string(r.samples) + ": " + std::to_string(r.failures) + " failures in " +
+             std::to_string(r.trials) + " runs;";
+    return out;
   }
 
   json params() const override {

@@ -15,6 +15,7 @@
 #include "app/shell/fonts.hpp"
 #include "app/shell/js_api.hpp"
 #include "app/shell/lesson.hpp"
+#include "core/checking/scene_text.hpp"
 #include "app/shell/panel.hpp"
 #include "app/shell/param_widgets.hpp"
 #include "app/shell/theme.hpp"
@@ -237,6 +238,23 @@ class CollisionLesson : public Lesson, private Stepper {
 
   json params() const override {
     return {{"grid_n", grid_n_}, {"p", config_to_json(scene_.start)}, {"q", config_to_json(scene_.goal)}};
+  }
+
+  std::vector<ParamField> param_fields() const override {
+    return {{"grid_n", "grid N", &kTracedGridN},
+            {"p", "edge start p", nullptr, {}, "the edge's first configuration, comma-separated"},
+            {"q", "edge end q", nullptr, {}, "the edge's last configuration, comma-separated"}};
+  }
+
+  std::string describe() const override {
+    const auto verdict = [](const EdgeCheckResult& r) {
+      return std::string(r.collision ? "collision" : "free") + " after " + std::to_string(r.evaluations) +
+             " configurations";
+    };
+    return Lesson::describe() + " The edge from p " + config_text(scene_.start) + " to q " + config_text(scene_.goal) +
+           ": the grid of " + std::to_string(grid_n_) + " says " + verdict(grid_) + "; bisection says " +
+           verdict(bisection_) + ". Shown: step " + std::to_string(shown_) + " of " +
+           std::to_string(bisection_.trace.size()) + " of the bisection.";
   }
 
   Stepper* stepper() override { return this; }

@@ -16,6 +16,7 @@
 #include "app/shell/fonts.hpp"
 #include "app/shell/js_api.hpp"
 #include "app/shell/lesson.hpp"
+#include "core/base/text.hpp"
 #include "app/shell/panel.hpp"
 #include "app/shell/theme.hpp"
 #include "app/shell/ui.hpp"
@@ -221,6 +222,21 @@ class DistancesLesson : public Lesson {
     r_ = r;
     drag_ = Drag::None;
     recompute();
+  }
+
+  std::vector<ParamField> param_fields() const override {
+    return {{"tool", "tool", nullptr, {"s1", "segment"}}};
+  }
+
+  std::string describe() const override {
+    if (!segment_tool_)
+      return "Two angles on the circle S1: q1 = " + significant(s1_.q1) + " and q2 = " + significant(s1_.q2) +
+             " radians. Their distance on the circle is " + significant(s1_.distance) + " (case: " +
+             s1_case_name(s1_.kind) + ").";
+    return "A segment from (" + significant(p1_.x()) + ", " + significant(p1_.y()) + ") to (" + significant(p2_.x()) +
+           ", " + significant(p2_.y()) + ") and a disk at (" + significant(q_.x()) + ", " + significant(q_.y()) +
+           ") of radius " + significant(r_) + ". The segment's distance to the disk is " +
+           significant(segment_.distance) + (segment_.meets ? ": they meet." : ": they do not meet.");
   }
 
   json params() const override {

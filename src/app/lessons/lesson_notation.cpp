@@ -231,6 +231,17 @@ class NotationLesson : public Lesson {
     if (check) run_check();
   }
 
+  std::vector<ParamField> param_fields() const override {
+    return {{"mode", "mode", nullptr, {"build", "practice"}},
+            {"description", "robot", nullptr, {}, "base=..., joints=..., wrist=spherical, as the panel builds it"}};
+  }
+
+  std::string describe() const override {
+    const ConfigSpaceInfo info = configuration_space(shown());
+    return "The robot " + description(shown()) + " has the configuration space " + info.notation + ", of dimension " +
+           std::to_string(info.dimension) + ".";
+  }
+
   json params() const override {
     return {{"description", description(robot_)}, {"mode", practice_ ? "practice" : "build"}, {"exercise", exercise_}};
   }

@@ -18,6 +18,7 @@
 #include "app/shell/fonts.hpp"
 #include "app/shell/js_api.hpp"
 #include "app/shell/lesson.hpp"
+#include "core/checking/scene_text.hpp"
 #include "app/shell/panel.hpp"
 #include "app/shell/param_widgets.hpp"
 #include "app/shell/theme.hpp"
@@ -145,7 +146,7 @@ class PotentialLesson : public Lesson, private Stepper {
     const long steps = descent_ ? descent_->steps() : 0;
     if (logged_ != steps) {
       if (steps == 0 || steps < logged_ || steps > logged_ + 1) ctx.log.clear();
-      if (steps > 0) ctx.log.add(steps, describe(descent_->last_event()));
+      if (steps > 0) ctx.log.add(steps, csl::app::describe(descent_->last_event()));
       logged_ = steps;
     }
   }
@@ -379,6 +380,22 @@ class PotentialLesson : public Lesson, private Stepper {
             {"switch", field_params_.switch_distance}, {"step", descent_params_.step},
             {"escapes", descent_params_.escapes}, {"seed", descent_params_.seed}, {"from", config_to_json(from_)},
             {"point", chosen_}};
+  }
+
+  std::vector<ParamField> param_fields() const override {
+    return {{"rho0", "rho0", &kFieldRho0},   {"eta", "eta", &kFieldEta},       {"zeta", "zeta", &kFieldZeta},
+            {"switch", "switch d", &kFieldSwitch}, {"step", "step alpha", &kDescentStep}, {"escapes", "escapes", &kDescentEscapes},
+            {"seed", "seed", &kSeed},
+            {"from", "descent start", nullptr, {}, "the configuration the descent starts from, comma-separated"}};
+  }
+
+  std::string describe() const override {
+    const Config q = shown();
+    std::string out = Lesson::describe() + " The robot is at " + config_text(q) + ", " +
+                      (world_->is_free(q) ? "free" : "in collision") + ". ";
+    if (!descent_) return out + "No descent has started.";
+    out += "Descent step " + std::to_string(descent_->steps()) + ": ";
+    return out + (descent_->done() ? std::string("finished, ") + outcome_name(descent_->outcome()) + "." : "running.");
   }
 
   Stepper* stepper() override { return this; }

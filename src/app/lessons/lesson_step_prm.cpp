@@ -13,6 +13,8 @@
 #include "app/views/draw.hpp"
 #include "app/views/scene_editor.hpp"
 #include "core/planning/planner_json.hpp"
+#include "core/checking/scene_text.hpp"
+#include "core/planning/planner_text.hpp"
 #include "core/planning/prm_text.hpp"
 
 namespace csl::app {
@@ -106,6 +108,13 @@ class StepPrmLesson : public Lesson {
   }
 
   json params() const override { return prm_params_json(params_); }
+  std::vector<ParamField> param_fields() const override { return prm_param_fields(kLabPrmSamples); }
+
+  std::string describe() const override {
+    // The planner's scene: during a drag that would replay slowly it is the one from before.
+    return describe_scene(session_.planned_scene(), prm().world()) + " " + describe_planner(prm()) +
+           (replay_pending() ? " The roadmap is the scene's before the drag; it is replayed at the release." : "");
+  }
 
  public:
   Stepper* stepper() override { return &session_; }

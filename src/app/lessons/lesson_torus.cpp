@@ -11,6 +11,8 @@
 #include <optional>
 
 #include "app/lessons/planner_session.hpp"
+#include "core/checking/scene_text.hpp"
+#include "core/planning/planner_text.hpp"
 #include "app/lessons/prm_controls.hpp"
 #include "app/shell/bundled_scenes.hpp"
 #include "app/shell/js_api.hpp"
@@ -239,6 +241,17 @@ class TorusLesson : public Lesson {
     p["q"] = config_to_json(q_);
     p["view"] = right_view_ == 0 ? "square" : right_view_ == 1 ? "torus" : "both";
     return p;
+  }
+  std::vector<ParamField> param_fields() const override {
+    std::vector<ParamField> f = prm_param_fields(kLabTorusSamples);
+    f.push_back({"q", "arm configuration", nullptr, {}, "theta1, theta2 in radians (theta2 relative to link 1)"});
+    f.push_back({"view", "right-hand view", nullptr, {"square", "torus", "both"}});
+    return f;
+  }
+
+  std::string describe() const override {
+    return describe_scene(scene_, world()) + " The arm is at " + config_text(q_) + " radians, " +
+           (world().is_free(q_) ? "free" : "in collision") + ". The roadmap on the torus: " + describe_planner(prm());
   }
 
  public:

@@ -188,4 +188,11 @@ PrmParams prm_params_from_json(const nlohmann::json& j, PrmParams p, const Colli
   return p;
 }
 
+std::vector<ParamField> prm_param_fields(const ParamSpec& samples) {
+  return {{"samples", "samples n", &samples},
+          {"neighbors", "neighbour rule", nullptr, {}, "k:K (the K nearest), radius:R (all within R) or prm*"},
+          {"checker", "edge checker", nullptr, {}, "bisection, grid:N (N configurations) or step:D (spacing D)"},
+          {"seed", "seed", &kSeed}};
+}
+
 }  // namespace csl::app

@@ -3,6 +3,10 @@
 // the edge checker, the seed. Shared by every lesson that runs PRM.
 #include <nlohmann/json.hpp>
 
+#include <vector>
+
+#include "app/shell/param_fields.hpp"
+
 #include <string>
 
 #include "app/shell/context.hpp"
@@ -42,5 +46,9 @@ nlohmann::json prm_params_json(const PrmParams& params);
 /// kLabCheckerStepD's least.
 PrmParams prm_params_from_json(const nlohmann::json& j, PrmParams params, const CollisionWorld& world,
                                const ParamSpec& samples = kLabPrmSamples);
+
+/// The four PRM parameters for the page's controls: samples (the lesson's budget spec), the
+/// neighbour rule and the checker (their syntax), the seed.
+std::vector<ParamField> prm_param_fields(const ParamSpec& samples);
 
 }  // namespace csl::app

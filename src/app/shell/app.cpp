@@ -125,7 +125,11 @@ void App::register_api() {
                 {"notice", ImGui::GetTime() < ctx_.notice_until ? ctx_.notice : ""},
                 {"panel", panel::state()},
                 {"layout", layout_},
-                {"busy", busy_json()}};
+                {"busy", busy_json()},
+                // What the page's step buttons (web/lab-access.js) need: whether the lesson steps, where.
+                {"stepping", {{"controls", shows_controls(*lesson_)},
+                              {"steps", stepping(*lesson_).steps()},
+                              {"finished", stepping(*lesson_).finished()}}}};
   });
   api.add("lessons", "the lessons: [{id, name, category, open}] (open: started, has state)", [this](const json&) {
     json out = json::array();
@@ -140,6 +144,11 @@ void App::register_api() {
   });
   api.add("state", "the lesson's state ({roadmap: true} adds the roadmap)",
           [this](const json& args) { return lesson_->state(args); });
+  api.add("param_specs",
+          "the lesson's parameters for native controls: [{name, label, kind, min, max, step, unit, help, value, choices?, list?}]",
+          [this](const json&) { return param_specs_json(lesson_->params(), lesson_->param_fields()); });
+  api.add("describe", "what the lesson shows now, in sentences (the scene, the main view's result)",
+          [this](const json&) { return json(lesson_->describe()); });
   api.add("set_params", "the lesson's parameters: {params: {...}}", [this](const json& args) {
     lesson_->set_params(args.value("params", json::object()));
     finish(*lesson_, args);

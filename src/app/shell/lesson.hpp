@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "app/shell/context.hpp"
+#include "app/shell/param_fields.hpp"
 #include "app/shell/stepper.hpp"
 #include "core/scene/scene.hpp"
 
@@ -49,6 +50,13 @@ class Lesson {
   virtual void set_params(const nlohmann::json& params) = 0;
   /// The parameters set_params() takes, as they are now (for share links and autosave).
   virtual nlohmann::json params() const = 0;
+  /// The parameters that have a ParamSpec (or a set of choices), for the page's native controls
+  /// (the API's param_specs); a key of params() not listed gets its kind from its value.
+  virtual std::vector<ParamField> param_fields() const { return {}; }
+  /// What the lesson shows now, in sentences, for the page's text description (a screen reader
+  /// has nothing else of the canvas): by default its scene's (lesson_text.cpp); a lesson adds
+  /// what its main view shows.
+  virtual std::string describe() const;
 
   /// The algorithm the lesson steps (the shared playback controls, keys and API drive it), or
   /// nullptr for a lesson with nothing to step.

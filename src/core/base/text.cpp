@@ -94,3 +94,14 @@ std::string printable(std::string_view text, std::size_t max) {
 }
 
 }  // namespace csl
+
+namespace csl {
+
+std::string significant(double v, int digits) {
+  if (v == 0.0) return "0";  // (-0 too)
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+  return buf;
+}
+
+}  // namespace csl

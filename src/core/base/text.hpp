@@ -28,3 +28,12 @@ std::optional<long long> parse_integer(std::string_view text);
 std::string printable(std::string_view text, std::size_t max = std::string_view::npos);
 
 }  // namespace csl
+
+namespace csl {
+
+/// `v` rounded to `digits` significant digits as the lab's descriptions print it ("%.4g" with
+/// no exponent for ordinary sizes: 1.234, 0.02, 1235): what a screen reader reads out, short
+/// and the same in every build. "-0" prints as "0".
+std::string significant(double v, int digits = 4);
+
+}  // namespace csl
