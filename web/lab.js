@@ -9,7 +9,7 @@
 // Share links point (default: the full lab next to this script). The element's id keeps its
 // autosave apart from other labs on the page.
 //
-// This script loads the rest (cspacelab.js, lab-api.js, lab-url.js, lab-shell.js) from its own
+// This script loads the rest (cspacelab.js, lab-api.js, lab-url.js, lab-shell.js, lab-access.js) from its own
 // folder unless the page already has them. Each lab's API is element.cspacelab once it has
 // started (the element then fires "cspacelab-ready"); window.cspacelab is the page's first lab's.
 'use strict';
@@ -20,7 +20,8 @@
   // The folder of this script; an inlined copy (the single-file build) uses the page's.
   const base = script && script.src ? new URL('.', script.src).href : new URL('.', pageUrl).href;
   const PARTS = [['createCSpaceLab', 'cspacelab.js'], ['CSpaceLabApi', 'lab-api.js'],
-                 ['CSpaceLabUrl', 'lab-url.js'], ['CSpaceLabShell', 'lab-shell.js']];
+                 ['CSpaceLabUrl', 'lab-url.js'], ['CSpaceLabShell', 'lab-shell.js'],
+                 ['CSpaceLabAccess', 'lab-access.js']];
   const registry = window.CSpaceLab = window.CSpaceLab || { instances: [] };
   const shells = [];  // every lab's page shell, started or not (traps are routed to them)
 
@@ -223,6 +224,8 @@
       root.dispatchEvent(new CustomEvent('cspacelab-stopped', { detail: shell, bubbles: true }));
       return null;
     }
+    // The parallel DOM: what the canvas shows, as HTML a screen reader and the keyboard reach.
+    root.cspacelabAccess = new window.CSpaceLabAccess(root, canvas, api, { ui });
     root.cspacelab = api;
     registry.instances.push(api);
     if (index === 0) window.cspacelab = api;  // the first lab in the page's order

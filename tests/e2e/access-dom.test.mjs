@@ -1,0 +1,132 @@
+// The parallel DOM (web/lab-access.js): the native HTML beside the canvas that a screen reader
+// and the keyboard reach. Its lesson buttons switch lessons, its parameter controls set the
+// app's parameters (and show the app's changes and refusals), its Step button's event reaches
+// the live region, and its description states the path's length as state() has it.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { withPage, api, waitFrames, screenshot } from './lib/harness.mjs';
+
+const SEL = '.lab-access';
+
+// The pixels that differ between two PNGs of the same size (decoded in a page of the browser).
+async function changedPixels(browser, a, b) {
+  const page = await browser.newPage();
+  try {
+    return await page.evaluate(async ([x, y]) => {
+      const decode = async (b64) => {
+        const img = new Image();
+        img.src = 'data:image/png;base64,' + b64;
+        await img.decode();
+        const c = new OffscreenCanvas(img.width, img.height);
+        const ctx = c.getContext('2d');
+        ctx.drawImage(img, 0, 0);
+        return ctx.getImageData(0, 0, img.width, img.height).data;
+      };
+      const [p, q] = [await decode(x), await decode(y)];
+      let n = 0;
+      for (let i = 0; i < p.length; i += 4) if (p[i] !== q[i] || p[i + 1] !== q[i + 1] || p[i + 2] !== q[i + 2]) ++n;
+      return n;
+    }, [a.toString('base64'), b.toString('base64')]);
+  } finally {
+    await page.close();
+  }
+}
+
+// The workspace view's pixels (the roadmap), with the app's own mapping of its corners.
+async function viewShot(page) {
+  await waitFrames(page, 3);
+  const v = await api(page, 'view', { view: 'workspace' });
+  const box = await page.locator('canvas').boundingBox();
+  const [x0, y0] = v.canvas_min, [x1, y1] = v.canvas_max;
+  return page.screenshot({ clip: { x: box.x + x0, y: box.y + y0, width: x1 - x0, height: y1 - y0 } });
+}
+
+async function press(page, selector) {
+  await page.locator(selector).focus();
+  await page.keyboard.press('Enter');
+}
+
+test('parallel DOM: lessons, parameters both ways, steps into the live region, the path described',
+  () => withPage({ open: 'index.html?lesson=step-prm&scene=prm-demo&samples=150&seed=3' }, async ({ page, browser }) => {
+    await page.waitForSelector(`${SEL} input[name="samples"]`, { state: 'attached' });
+
+    // The keyboard: Tab from the canvas enters the section, which then shows over the lab.
+    await page.locator('canvas').focus();
+    assert.equal((await page.locator(SEL).boundingBox()).height <= 1, true, 'hidden until focused');
+    await page.keyboard.press('Tab');
+    assert.equal(await page.evaluate((s) => document.querySelector(s).contains(document.activeElement), SEL), true,
+                 'Tab from the canvas lands in the section');
+    const shown = await page.locator(SEL).boundingBox();
+    assert.ok(shown.height > 100 && shown.width > 400, `shown while focused: ${JSON.stringify(shown)}`);
+    await screenshot(page, 'access-dom-focused.png');
+
+    // (a) The lesson buttons switch lessons; the current one is aria-current.
+    await press(page, `${SEL} button[data-lesson="collision"]`);
+    assert.equal((await api(page, 'status')).lesson, 'collision');
+    await page.waitForFunction((s) => document.querySelector(`${s} button[data-lesson="collision"]`)
+      .getAttribute('aria-current') === 'true', SEL);
+    assert.equal(await page.locator(`${SEL} button[data-lesson="step-prm"]`).getAttribute('aria-current'), null);
+    // The collision lesson's N is its spec's range.
+    const gridN = page.locator(`${SEL} input[name="grid_n"]`);
+    await gridN.waitFor({ state: 'attached' });
+    assert.deepEqual([await gridN.getAttribute('min'), await gridN.getAttribute('max')], ['2', '100000']);
+    await press(page, `${SEL} button[data-lesson="step-prm"]`);
+    assert.equal((await api(page, 'status')).lesson, 'step-prm');
+
+    // (b) A parameter changed in the DOM changes params() and the roadmap drawn.
+    const seed = page.locator(`${SEL} input[name="seed"]`);
+    await page.waitForFunction((s) => document.querySelector(`${s} input[name="seed"]`).value === '3', SEL);
+    await api(page, 'run');
+    const before = await viewShot(page);
+    await seed.focus();
+    await seed.fill('8');
+    await seed.dispatchEvent('change');
+    assert.equal((await api(page, 'params')).seed, 8);
+    await api(page, 'run');
+    const after = await viewShot(page);
+    const changed = await changedPixels(browser, before, after);
+    assert.ok(changed > 500, `another roadmap drawn: ${changed} pixels changed`);
+    // The app's change shows in the control (once it is not being edited).
+    await page.locator(`${SEL} button[data-lesson="step-prm"]`).focus();
+    await api(page, 'set_params', { params: { seed: 11 } });
+    await page.waitForFunction((s) => document.querySelector(`${s} input[name="seed"]`).value === '11', SEL);
+    // A refused value: the app's message beside the control, aria-invalid, the app's value back.
+    const samples = page.locator(`${SEL} input[name="samples"]`);
+    await samples.focus();
+    await samples.fill('999999');
+    await samples.dispatchEvent('change');
+    assert.equal(await samples.getAttribute('aria-invalid'), 'true');
+    const error = await page.locator(`${SEL} #${await samples.getAttribute('id')}-error`).textContent();
+    assert.match(error, /^samples: an integer in \[0, 20000\]/);
+    assert.match(await samples.getAttribute('aria-describedby'), /-error/);
+    assert.equal(await samples.inputValue(), '150');
+    assert.equal((await api(page, 'params')).samples, 150);
+    await screenshot(page, 'access-dom-refused.png');
+
+    // (c) The DOM's Step: the step's event text reaches the live region.
+    await press(page, `${SEL} .lab-access-steps button:text-is("Reset")`);
+    assert.equal((await api(page, 'status')).stepping.steps, 0);
+    assert.equal(await page.locator(`${SEL} .lab-access-steps button:text-is("Back")`).isDisabled(), true);
+    await press(page, `${SEL} .lab-access-steps button:text-is("Step")`);
+    await page.waitForFunction(() => window.cspacelab.log().some((l) => l.step === 1));
+    const newest = (await api(page, 'log')).at(-1);
+    assert.equal(newest.step, 1);
+    await page.waitForFunction(([s, text]) => document.querySelector(`${s} [aria-live="polite"]`).textContent === text,
+                               [SEL, newest.text], { timeout: 5000 });
+
+    // (d) Run all: the description states the path and its length as state() has it.
+    await press(page, `${SEL} .lab-access-steps button:text-is("Run all")`);
+    await page.waitForFunction(() => { const s = window.cspacelab.status(); return !s.busy && s.stepping.finished; });
+    const state = await api(page, 'state');
+    assert.equal(state.solved, true);
+    const length = String(Number(state.path_length.toPrecision(4)));
+    await page.waitForFunction(([s, l]) => document.querySelector(`${s} .lab-access-description`).textContent.includes(
+      `Path found: ${l}`), [SEL, `${state.path.length - 1} edges, length ${length}.`]);
+    assert.equal(await page.locator(`${SEL} .lab-access-steps button:text-is("Step")`).isDisabled(), true);
+    await screenshot(page, 'access-dom-run.png');
+
+    // Tab leaves the lab from the section's last control: no trap.
+    await page.locator(`${SEL} .lab-access-steps button:text-is("Reset")`).focus();
+    await page.keyboard.press('Tab');
+    assert.equal(await page.evaluate(() => document.querySelector('.lab').contains(document.activeElement)), false);
+  }));

@@ -1,0 +1,268 @@
+// The parallel DOM of one lab: beside its canvas (which a screen reader cannot read), a
+// <section class="lab-access"> of native HTML kept in step with the app through its API: the
+// lessons as buttons, the lesson's parameters as labelled controls (param_specs: the same
+// ParamSpec that drives the ImGui slider and the CLI), the step buttons, a text description of
+// what the view shows (describe), and the event log's newest line as a polite live region.
+//
+// Visually it is hidden (clipped, as screen-reader-only text) until the keyboard enters it: Tab
+// from the canvas lands in it, and while focus is inside it shows as a panel over the lab's
+// bottom. Tab from its last control leaves the lab: nothing traps the keyboard.
+//
+// It polls the app on a short timer (not while the page is hidden) and touches the DOM only
+// where something changed. Nothing received is parsed as HTML: text goes in as textContent.
+'use strict';
+
+class CSpaceLabAccess {
+  /**
+   * root: the lab's [data-lab] element; canvas: its canvas; api: its CSpaceLabApi; options:
+   * {ui: 'full'|'minimal'} (a minimal lab, an embed, offers no lesson list, as its app does not).
+   */
+  constructor(root, canvas, api, options = {}) {
+    this.root = root;
+    this.canvas = canvas;
+    this.api = api;
+    this.options = options;
+    this.id = 'lab-access-' + (CSpaceLabAccess.count = (CSpaceLabAccess.count || 0) + 1);
+    this.seen = {};                 // what the DOM shows now, per part (to touch only changes)
+    this.lastAnnounced = -Infinity;  // when the live region last changed (ms)
+    this.pendingLine = null;         // a newer log line waiting for the rate limit
+    this.announceTimer = 0;
+    this.build();
+    this.freeTab();
+    this.timer = setInterval(() => this.poll(), CSpaceLabAccess.POLL_MS);
+    this.poll();
+  }
+
+  el(tag, props = {}, parent = null) {
+    const node = document.createElement(tag);
+    for (const [k, v] of Object.entries(props)) {
+      if (k === 'text') node.textContent = v;
+      else if (k === 'className') node.className = v;
+      else node.setAttribute(k, v);
+    }
+    if (parent) parent.appendChild(node);
+    return node;
+  }
+
+  build() {
+    const s = this.section = this.el('section', { className: 'lab-access', 'aria-labelledby': this.id + '-title' });
+    this.title = this.el('h2', { id: this.id + '-title', text: 'C-Space Lab' }, s);
+    if (this.options.ui !== 'minimal') {
+      const nav = this.el('nav', { 'aria-label': 'Lessons' }, s);
+      this.lessonList = this.el('ul', { className: 'lab-access-lessons' }, nav);
+    }
+    this.el('h3', { text: 'Parameters' }, s);
+    this.params = this.el('div', { className: 'lab-access-params' }, s);
+    this.stepHeading = this.el('h3', { text: 'Steps' }, s);
+    this.steps = this.el('div', { className: 'lab-access-steps', role: 'group', 'aria-label': 'Step controls' }, s);
+    this.stepButtons = {};
+    for (const [key, label, call] of [
+      ['back', 'Back', () => this.api.call('step_back', { background: true })],
+      ['step', 'Step', () => this.api.step()],
+      ['phase', 'Finish phase', () => this.api.call('finish_phase', { background: true })],
+      ['run', 'Run all', () => this.api.call('run', { background: true })],
+      ['reset', 'Reset', () => this.api.reset()],
+    ]) {
+      const b = this.stepButtons[key] = this.el('button', { type: 'button', text: label }, this.steps);
+      b.addEventListener('click', () => this.act(call));
+    }
+    this.el('h3', { text: 'What the view shows' }, s);
+    this.description = this.el('p', { className: 'lab-access-description', role: 'region',
+                                      'aria-label': 'Description of the view' }, s);
+    this.el('h3', { text: 'Latest event' }, s);
+    // Polite: read out after what the reader is saying; at most one a second (announce()).
+    this.live = this.el('p', { className: 'lab-access-log', 'aria-live': 'polite', 'aria-atomic': 'true' }, s);
+    // After the canvas and the app's text proxy: the keyboard reaches it right after the canvas.
+    this.root.appendChild(s);
+  }
+
+  // SDL takes Tab on the canvas (it cancels the key, so focus never moves on): a Tab pressed on
+  // the canvas itself goes to the page instead, to the section that follows it. While one of the
+  // app's text fields has the keyboard its proxy has the focus, and Tab moves between fields there.
+  freeTab() {
+    this.root.addEventListener('keydown', (e) => {
+      if (e.key !== 'Tab' || e.ctrlKey || e.altKey || e.metaKey || !e.isTrusted) return;
+      if (e.target === this.canvas && document.activeElement === this.canvas) e.stopPropagation();
+    }, true);
+  }
+
+  act(call) {
+    try {
+      call();
+    } catch (e) {
+      this.announce(e.message);
+    }
+    this.poll();
+  }
+
+  stop() {
+    clearInterval(this.timer);
+    clearTimeout(this.announceTimer);
+    this.section.remove();
+  }
+
+  poll() {
+    if (document.hidden || !this.section.isConnected) return;
+    let status, specs, text, log;
+    try {
+      status = this.api.status();
+      specs = this.api.call('param_specs');
+      text = this.api.call('describe');
+      log = this.api.log();
+    } catch {
+      return;  // a lab that stopped: its shell shows why; the section keeps its last state
+    }
+    this.showLessons(status.lesson);
+    this.showParams(status.lesson, specs);
+    this.showSteps(status.stepping || { controls: false }, !!status.busy);
+    if (text !== this.seen.text) this.description.textContent = this.seen.text = text;
+    const newest = log.length ? log[log.length - 1] : null;
+    const key = newest ? newest.step + '\u0000' + newest.text : '';
+    if (key !== this.seen.log) {
+      // The first poll shows where the lesson stands without announcing it as news.
+      const first = this.seen.log === undefined;
+      this.seen.log = key;
+      if (newest && !first) this.announce(newest.text);
+    }
+  }
+
+  // The newest line wins; lines that come faster than one a second (Play) are skipped.
+  announce(line) {
+    this.pendingLine = line;
+    if (this.announceTimer) return;
+    const wait = this.lastAnnounced + CSpaceLabAccess.ANNOUNCE_MS - performance.now();
+    const say = () => {
+      this.announceTimer = 0;
+      this.lastAnnounced = performance.now();
+      this.live.textContent = this.pendingLine;
+      this.pendingLine = null;
+    };
+    if (wait <= 0) say();
+    else this.announceTimer = setTimeout(say, wait);
+  }
+
+  showLessons(current) {
+    if (!this.lessonList) return;
+    if (!this.lessons) {
+      this.lessons = this.api.lessons();
+      for (const l of this.lessons) {
+        const b = this.el('button', { type: 'button', text: l.name, 'data-lesson': l.id },
+                          this.el('li', {}, this.lessonList));
+        b.addEventListener('click', () => this.act(() => this.api.selectLesson(l.id)));
+      }
+    }
+    if (current === this.seen.lesson) return;
+    this.seen.lesson = current;
+    for (const b of this.lessonList.querySelectorAll('button')) {
+      if (b.dataset.lesson === current) b.setAttribute('aria-current', 'true');
+      else b.removeAttribute('aria-current');
+    }
+    const info = this.lessons.find((l) => l.id === current);
+    this.title.textContent = 'C-Space Lab: ' + (info ? info.name : current);
+  }
+
+  // ---- parameters ----------------------------------------------------------------------------
+
+  showParams(lesson, specs) {
+    const shape = lesson + '\u0000' + specs.map((p) => p.name + ':' + p.kind).join(',');
+    if (shape !== this.seen.paramShape) {
+      this.seen.paramShape = shape;
+      this.params.textContent = '';
+      this.controls = new Map();
+      for (const spec of specs) this.controls.set(spec.name, this.makeControl(spec));
+    }
+    for (const spec of specs) {
+      const c = this.controls.get(spec.name);
+      c.spec = spec;
+      // A control being edited keeps what is typed; it shows the app's value once left.
+      if (c.input !== document.activeElement) this.setValue(c, spec.value);
+    }
+  }
+
+  makeControl(spec) {
+    const id = `${this.id}-p-${spec.name}`;
+    const row = this.el('div', { className: 'lab-access-param' }, this.params);
+    const label = this.el('label', { for: id, text: spec.label + (spec.unit ? ` (${spec.unit})` : '') }, row);
+    let input;
+    if (spec.kind === 'choice') {
+      input = this.el('select', { id }, row);
+      for (const c of spec.choices) this.el('option', { value: c, text: c }, input);
+    } else {
+      input = this.el('input', { id }, row);
+      if (spec.kind === 'boolean') input.type = 'checkbox';
+      else if (spec.kind === 'integer' || spec.kind === 'number') {
+        input.type = 'number';
+        if (spec.min !== null) input.min = spec.min;
+        if (spec.max !== null) input.max = spec.max;
+        input.step = spec.step !== null ? spec.step : 'any';
+      } else {
+        input.type = 'text';
+        input.spellcheck = false;
+      }
+    }
+    if (spec.kind === 'boolean') row.insertBefore(input, label);  // a checkbox before its label
+    input.name = spec.name;
+    const help = this.el('span', { id: id + '-help', className: 'lab-access-help', text: spec.help }, row);
+    const error = this.el('span', { id: id + '-error', className: 'lab-access-error' }, row);
+    input.setAttribute('aria-describedby', (spec.help ? help.id + ' ' : '') + error.id);
+    const control = { input, error, spec, row };
+    input.addEventListener('change', () => this.change(control));
+    return control;
+  }
+
+  setValue(c, value) {
+    if (c.spec.kind === 'boolean') c.input.checked = !!value;
+    else if (Array.isArray(value)) c.input.value = value.join(', ');
+    else c.input.value = String(value);
+  }
+
+  // The control's text as the JSON value set_params takes, or throws the reason.
+  parse(c) {
+    const { kind, list } = c.spec;
+    const text = c.input.value.trim();
+    const number = (t) => {
+      if (!/^-?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$/.test(t)) throw new Error(`${c.spec.name}: "${t}" is not a number`);
+      return Number(t);
+    };
+    if (kind === 'boolean') return c.input.checked;
+    if (kind === 'choice') return c.input.value;
+    if (kind === 'integer' || kind === 'number') return number(text);  // the app checks the range
+    if (list) return text.split(',').map((t) => number(t.trim()));
+    return c.input.value;
+  }
+
+  change(c) {
+    let message = '';
+    try {
+      this.api.setParams({ [c.spec.name]: this.parse(c) });
+    } catch (e) {
+      message = e.message;  // the app's refusal ("samples: an integer in [0, 20000] in the lab")
+    }
+    c.error.textContent = message;
+    if (message) {
+      c.input.setAttribute('aria-invalid', 'true');
+      this.setValue(c, c.spec.value);  // the app kept its value: show it
+    } else {
+      c.input.removeAttribute('aria-invalid');
+    }
+    this.poll();
+  }
+
+  // ---- steps ---------------------------------------------------------------------------------
+
+  showSteps(stepping, busy) {
+    const key = [stepping.controls, stepping.steps, stepping.finished, busy].join();
+    if (key === this.seen.steps) return;
+    this.seen.steps = key;
+    this.steps.hidden = this.stepHeading.hidden = !stepping.controls;
+    const b = this.stepButtons;
+    b.back.disabled = busy || stepping.steps === 0;
+    b.step.disabled = b.phase.disabled = b.run.disabled = busy || stepping.finished;
+    b.reset.disabled = busy;
+  }
+}
+
+CSpaceLabAccess.POLL_MS = 200;
+CSpaceLabAccess.ANNOUNCE_MS = 1000;
+
+if (typeof window !== 'undefined') window.CSpaceLabAccess = CSpaceLabAccess;
