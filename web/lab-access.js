@@ -106,8 +106,8 @@ class CSpaceLabAccess {
     let status, specs, text, log;
     try {
       status = this.api.status();
-      specs = this.api.call('param_specs');
-      text = this.api.call('describe');
+      specs = this.api.paramSpecs();
+      text = this.api.describe();
       log = this.api.log();
     } catch {
       return;  // a lab that stopped: its shell shows why; the section keeps its last state

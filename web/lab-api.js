@@ -42,6 +42,10 @@ class CSpaceLabApi {
   /** The current lesson's state; state({roadmap: true}) adds a PRM lesson's vertices and edges. */
   state(args = {}) { return this.call('state', args); }
   setParams(params) { return this.call('set_params', { params }); }
+  /** The lesson's parameters for native controls: [{name, label, kind, min, max, step, unit, help, value, choices?, list?}]. */
+  paramSpecs() { return this.call('param_specs'); }
+  /** What the lesson shows now, in sentences: the scene and the main view's result. */
+  describe() { return this.call('describe'); }
   step(count = 1) { return this.call('step', { count }); }
   stepBack(count = 1) { return this.call('step_back', { count }); }
   runTo(steps) { return this.call('run_to', { steps }); }
