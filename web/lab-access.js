@@ -64,7 +64,11 @@ class CSpaceLabAccess {
       ['reset', 'Reset', () => this.api.reset()],
     ]) {
       const b = this.stepButtons[key] = this.el('button', { type: 'button', text: label }, this.steps);
-      b.addEventListener('click', () => this.act(call));
+      // aria-disabled, not disabled: a focused button that became unavailable (Step at the end)
+      // keeps the focus, so the panel stays open and the reader where it was.
+      b.addEventListener('click', () => {
+        if (b.getAttribute('aria-disabled') !== 'true') this.act(call);
+      });
     }
     this.el('h3', { text: 'What the view shows' }, s);
     this.description = this.el('p', { className: 'lab-access-description', role: 'region',
@@ -182,7 +186,9 @@ class CSpaceLabAccess {
   makeControl(spec) {
     const id = `${this.id}-p-${spec.name}`;
     const row = this.el('div', { className: 'lab-access-param' }, this.params);
-    const label = this.el('label', { for: id, text: spec.label + (spec.unit ? ` (${spec.unit})` : '') }, row);
+    // The unit, unless the label says it already ("samples n", not "samples n (samples)").
+    const unit = spec.unit && !spec.label.includes(spec.unit) ? ` (${spec.unit})` : '';
+    const label = this.el('label', { for: id, text: spec.label + unit }, row);
     let input;
     if (spec.kind === 'choice') {
       input = this.el('select', { id }, row);
@@ -256,9 +262,10 @@ class CSpaceLabAccess {
     this.seen.steps = key;
     this.steps.hidden = this.stepHeading.hidden = !stepping.controls;
     const b = this.stepButtons;
-    b.back.disabled = busy || stepping.steps === 0;
-    b.step.disabled = b.phase.disabled = b.run.disabled = busy || stepping.finished;
-    b.reset.disabled = busy;
+    const off = (button, yes) => button.setAttribute('aria-disabled', String(yes));
+    off(b.back, busy || stepping.steps === 0);
+    for (const button of [b.step, b.phase, b.run]) off(button, busy || stepping.finished);
+    off(b.reset, busy);
   }
 }
 

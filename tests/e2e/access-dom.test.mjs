@@ -81,7 +81,7 @@ test('parallel DOM: lessons, parameters both ways, steps into the live region, t
     await seed.focus();
     await seed.fill('8');
     await seed.dispatchEvent('change');
-    assert.equal((await api(page, 'params')).seed, 8);
+    assert.equal((await api(page, 'snapshot')).params.seed, 8);
     await api(page, 'run');
     const after = await viewShot(page);
     const changed = await changedPixels(browser, before, after);
@@ -100,13 +100,13 @@ test('parallel DOM: lessons, parameters both ways, steps into the live region, t
     assert.match(error, /^samples: an integer in \[0, 20000\]/);
     assert.match(await samples.getAttribute('aria-describedby'), /-error/);
     assert.equal(await samples.inputValue(), '150');
-    assert.equal((await api(page, 'params')).samples, 150);
+    assert.equal((await api(page, 'snapshot')).params.samples, 150);
     await screenshot(page, 'access-dom-refused.png');
 
     // (c) The DOM's Step: the step's event text reaches the live region.
     await press(page, `${SEL} .lab-access-steps button:text-is("Reset")`);
     assert.equal((await api(page, 'status')).stepping.steps, 0);
-    assert.equal(await page.locator(`${SEL} .lab-access-steps button:text-is("Back")`).isDisabled(), true);
+    assert.equal(await page.locator(`${SEL} .lab-access-steps button:text-is("Back")`).getAttribute('aria-disabled'), 'true');
     await press(page, `${SEL} .lab-access-steps button:text-is("Step")`);
     await page.waitForFunction(() => window.cspacelab.log().some((l) => l.step === 1));
     const newest = (await api(page, 'log')).at(-1);
@@ -122,7 +122,8 @@ test('parallel DOM: lessons, parameters both ways, steps into the live region, t
     const length = String(Number(state.path_length.toPrecision(4)));
     await page.waitForFunction(([s, l]) => document.querySelector(`${s} .lab-access-description`).textContent.includes(
       `Path found: ${l}`), [SEL, `${state.path.length - 1} edges, length ${length}.`]);
-    assert.equal(await page.locator(`${SEL} .lab-access-steps button:text-is("Step")`).isDisabled(), true);
+    await page.waitForFunction((s) => document.querySelector(`${s} .lab-access-steps button:nth-child(2)`)
+      .getAttribute('aria-disabled') === 'true', SEL);
     await screenshot(page, 'access-dom-run.png');
 
     // Tab leaves the lab from the section's last control: no trap.
