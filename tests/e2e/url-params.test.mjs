@@ -40,6 +40,8 @@ test('garbage values: an in-app notice, the defaults, nothing else', () => withB
     assert.match(notice, part);
   assert.deepEqual(await api(page, 'snapshot'), defaults, 'the first lesson, exactly as it starts');
   assert.equal(await dom(page), cleanDom, 'no element added');
+  // The accessible section shows the scene and the refused text as text, never as markup.
+  assert.equal(await page.evaluate(() => document.querySelectorAll('.lab-access script, .lab-access img').length), 0);
   assert.deepEqual(errors, []);
   assert.deepEqual(dialogs, []);
   assert.deepEqual(await page.evaluate(() => window.__cspViolations), []);
@@ -101,7 +103,8 @@ test('a 10 MB scene, a zip bomb, broken encodings and an invalid scene', () => w
 
 test('script tags in strings stay text', () => withBrowser(async ({ browser, url }) => {
   const { page: clean } = await fresh(browser);
-  await openLab(clean, url);
+  // The same lesson: the page's accessible section holds the lesson's own controls.
+  await openLab(clean, url + '?lesson=step-prm');
   const cleanDom = await dom(clean);
 
   const evil = '<script>window.__pwned=1</script><img src=x onerror="window.__pwned=2">';
@@ -117,6 +120,8 @@ test('script tags in strings stay text', () => withBrowser(async ({ browser, url
   assert.equal((await api(page, 'get_scene')).name, evil, 'a scene name is data: kept as it is');
   assert.equal(await page.evaluate(() => window.__pwned), undefined, 'nothing ran');
   assert.equal(await dom(page), cleanDom, 'no element added');
+  // The accessible section shows the scene and the refused text as text, never as markup.
+  assert.equal(await page.evaluate(() => document.querySelectorAll('.lab-access script, .lab-access img').length), 0);
 
   // The share and embed dialogs carry the name and the link as field values, never markup.
   await page.evaluate(() => window.cspacelab.shell.action('embed'));
