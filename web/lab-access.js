@@ -178,8 +178,8 @@ class CSpaceLabAccess {
     for (const spec of specs) {
       const c = this.controls.get(spec.name);
       c.spec = spec;
-      // A control being edited keeps what is typed; it shows the app's value once left.
-      if (c.input !== document.activeElement) this.setValue(c, spec.value);
+      // A control being typed into keeps what is typed until its change is sent.
+      if (!c.typing) this.setValue(c, spec.value);
     }
   }
 
@@ -212,6 +212,7 @@ class CSpaceLabAccess {
     const error = this.el('span', { id: id + '-error', className: 'lab-access-error' }, row);
     input.setAttribute('aria-describedby', (spec.help ? help.id + ' ' : '') + error.id);
     const control = { input, error, spec, row };
+    input.addEventListener('input', () => { control.typing = true; });
     input.addEventListener('change', () => this.change(control));
     return control;
   }
@@ -238,6 +239,7 @@ class CSpaceLabAccess {
   }
 
   change(c) {
+    c.typing = false;
     let message = '';
     try {
       this.api.setParams({ [c.spec.name]: this.parse(c) });
