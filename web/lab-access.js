@@ -146,10 +146,9 @@ class CSpaceLabAccess {
   }
 
   showLessons(current) {
-    if (!this.lessonList) return;
     if (!this.lessons) {
       this.lessons = this.api.lessons();
-      for (const l of this.lessons) {
+      for (const l of this.lessonList ? this.lessons : []) {
         const b = this.el('button', { type: 'button', text: l.name, 'data-lesson': l.id },
                           this.el('li', {}, this.lessonList));
         b.addEventListener('click', () => this.act(() => this.api.selectLesson(l.id)));
@@ -157,7 +156,7 @@ class CSpaceLabAccess {
     }
     if (current === this.seen.lesson) return;
     this.seen.lesson = current;
-    for (const b of this.lessonList.querySelectorAll('button')) {
+    for (const b of this.lessonList ? this.lessonList.querySelectorAll('button') : []) {
       if (b.dataset.lesson === current) b.setAttribute('aria-current', 'true');
       else b.removeAttribute('aria-current');
     }

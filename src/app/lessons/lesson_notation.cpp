@@ -238,7 +238,7 @@ class NotationLesson : public Lesson {
 
   std::string describe() const override {
     const ConfigSpaceInfo info = configuration_space(shown());
-    return "The robot " + description(shown()) + " has the configuration space " + info.notation + ", of dimension " +
+    return "The robot (" + description(shown()) + ") has the configuration space " + info.notation + ", of dimension " +
            std::to_string(info.dimension) + ".";
   }
 

@@ -386,7 +386,8 @@ class PotentialLesson : public Lesson, private Stepper {
     return {{"rho0", "rho0", &kFieldRho0},   {"eta", "eta", &kFieldEta},       {"zeta", "zeta", &kFieldZeta},
             {"switch", "switch d", &kFieldSwitch}, {"step", "step alpha", &kDescentStep}, {"escapes", "escapes", &kDescentEscapes},
             {"seed", "seed", &kSeed},
-            {"from", "descent start", nullptr, {}, "the configuration the descent starts from, comma-separated"}};
+            {"from", "descent start", nullptr, {}, "the configuration the descent starts from, comma-separated"},
+            {"point", "control point shown", nullptr, {}, "the control point whose equations are worked (-1: the one pushed hardest)"}};
   }
 
   std::string describe() const override {
