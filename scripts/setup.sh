@@ -109,10 +109,11 @@ fi
 
 # ---------------------------------------------------------------- npm (browser tests)
 if [ "$mode" = all ]; then
-  if [ ! -d "$ROOT/node_modules/playwright-core" ] \
+  # (axe-core: the accessibility test's checker, tests/e2e/accessibility.test.mjs)
+  if [ ! -d "$ROOT/node_modules/playwright-core" ] || [ ! -d "$ROOT/node_modules/axe-core" ] \
      || [ "$ROOT/package-lock.json" -nt "$ROOT/node_modules/.package-lock.json" ]; then
     step "installing npm packages from package-lock.json"
-    (cd "$ROOT" && npm ci --no-audit --no-fund --loglevel=error) || fail "npm ci (playwright-core)"
+    (cd "$ROOT" && npm ci --no-audit --no-fund --loglevel=error) || fail "npm ci (playwright-core, axe-core)"
   else
     step "npm packages: present"
   fi

@@ -70,7 +70,9 @@ class CSpaceLabApi {
   notify(text, seconds) { return this.call('notify', seconds === undefined ? { text } : { text, seconds }); }
   /** The bundled scenes by name: what ?scene=NAME loads. */
   bundledScenes() { return this.call('bundled_scenes'); }
-  /** The page state the app shows ({attached, minimal, previous}); pageState({...}) changes it. */
+  /** The colours that carry meaning, by role, and text colours on their backgrounds. */
+  theme() { return this.call('theme'); }
+  /** The page state the app shows ({attached, minimal, reduced_motion, previous}); pageState({...}) changes it. */
   pageState(changes = {}) { return this.call('page_state', changes); }
   /** Homework P1-P13: the list, a problem opened, an exercise (seed optional), an answer checked. */
   homework() { return this.call('homework'); }

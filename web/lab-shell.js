@@ -305,6 +305,19 @@
 
     // ---- start ------------------------------------------------------------------------------
 
+    /**
+     * The browser's prefers-reduced-motion, now and whenever it changes: the app then moves
+     * nothing by itself (WCAG 2.3.3). Set before the link applies, which may start an exercise.
+     */
+    watchReducedMotion() {
+      const query = typeof matchMedia === 'function' ? matchMedia('(prefers-reduced-motion: reduce)') : null;
+      if (!query) return false;
+      query.addEventListener('change', () => {
+        if (!this.dead) this.api.pageState({ reduced_motion: query.matches });
+      });
+      return query.matches;
+    }
+
     async init() {
       const api = this.api;
       let notes = [];
@@ -316,7 +329,8 @@
         // A first visit without a link: the panel offers the homework map (once; "welcome-seen").
         const welcome = this.options.ui !== 'minimal' && !U.hasState(U.parseConfig(this.options.config).values) &&
                         welcomed() === null;
-        api.pageState({ attached: true, minimal: this.options.ui === 'minimal', welcome });
+        api.pageState({ attached: true, minimal: this.options.ui === 'minimal', welcome,
+                        reduced_motion: this.watchReducedMotion() });
         api.module.cslPageAction = (name) => setTimeout(() => this.action(name), 0);
         notes = await this.start();
       } catch (e) {

@@ -442,14 +442,14 @@ class AnalysisLesson : public Lesson, private NoSteps {
   void bound_section() {
     ImGui::TextWrapped("A free path of length L with clearance r is covered by m = ceil(L/(r/2)) balls of "
                        "radius r/2; PRM fails only if one of them gets no sample:");
-    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.0f, 0.3f, 0.55f, 1.0f));
+    ImGui::PushStyleColor(ImGuiCol_Text, theme::vec4(theme::kTextKey));
     ImGui::TextWrapped("P(fail) ≤ m exp(−σ r^d n),  σ = μ(B₁) / (2^d μ(F))");
     ImGui::PopStyleColor();
     if (too_dense_)
-      ImGui::TextColored(ImVec4(0.7f, 0.25f, 0.0f, 1.0f),
+      ImGui::TextColored(theme::vec4(theme::kTextBad),
                          "this scene is too dense to measure here: enter L, r and μ(F) by hand (or use cspacelab experiment)");
     else if (!path_exists_)
-      ImGui::TextColored(ImVec4(0.7f, 0.25f, 0.0f, 1.0f), "no path found in this scene: enter L, r by hand");
+      ImGui::TextColored(theme::vec4(theme::kTextBad), "no path found in this scene: enter L, r by hand");
     ImGui::PushItemWidth(-110);
     float l = static_cast<float>(length_), r = static_cast<float>(clearance_), v = static_cast<float>(free_volume_);
     if (ImGui::DragFloat("L (length)", &l, 0.01f, 0.001f, 100.0f, "%.4f")) length_ = static_cast<double>(l);
@@ -582,7 +582,7 @@ class AnalysisLesson : public Lesson, private NoSteps {
   }
 
   // A colour for the numbers a panel is about.
-  static ImVec4 key_colour() { return ImVec4(0.0f, 0.3f, 0.55f, 1.0f); }
+  static ImVec4 key_colour() { return theme::vec4(theme::kTextKey); }
   static void dim_text_wrapped(const char* text) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ImGui::TextWrapped("%s", text);
@@ -645,7 +645,7 @@ class AnalysisLesson : public Lesson, private NoSteps {
       }
     }
     if (!t) {
-      ImGui::TextColored(ImVec4(0.7f, 0.25f, 0.0f, 1.0f), "no clearance r > 0 (or too many balls): set r in tab Bound");
+      ImGui::TextColored(theme::vec4(theme::kTextBad), "no clearance r > 0 (or too many balls): set r in tab Bound");
       return;
     }
     const double lead = std::max(2.0, std::sqrt(static_cast<double>(dim_)));
@@ -747,9 +747,9 @@ class AnalysisLesson : public Lesson, private NoSteps {
     formula(ui::format("%lld samples: estimate %.5f", mc_.trials, mc_.estimate));
     formula(ui::format("95%% interval [%.5f, %.5f]", mc_.low, mc_.high));
     if (exact_in_interval())
-      ImGui::TextColored(ImVec4(0.0f, 0.45f, 0.3f, 1.0f), "the exact p is inside it");
+      ImGui::TextColored(theme::vec4(theme::kTextGood), "the exact p is inside it");
     else
-      ImGui::TextColored(ImVec4(0.7f, 0.25f, 0.0f, 1.0f), "the exact p is outside it");
+      ImGui::TextColored(theme::vec4(theme::kTextBad), "the exact p is outside it");
     dim_text_wrapped("(1 draw in 20 misses on average: chance, not an error)");
     if (ImGui::SmallButton("new samples")) {
       ++p9_seed_;

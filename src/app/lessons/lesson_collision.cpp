@@ -117,9 +117,9 @@ class CollisionLesson : public Lesson, private Stepper {
     if (param_slider(kTracedGridN, "N", grid_n_, 2, most, ImGuiSliderFlags_AlwaysClamp)) recompute();
     ImGui::PopItemWidth();
     if (grid_.collision)
-      ImGui::TextColored(ImVec4(0.0f, 0.45f, 0.3f, 1.0f), "N = %d finds the collision at t = %.4f", grid_n_, *grid_.collision_t);
+      ImGui::TextColored(theme::vec4(theme::kTextGood), "N = %d finds the collision at t = %.4f", grid_n_, *grid_.collision_t);
     else if (bisection_.collision)
-      ImGui::TextColored(ImVec4(0.7f, 0.25f, 0.0f, 1.0f), "N = %d misses the collision", grid_n_);
+      ImGui::TextColored(theme::vec4(theme::kTextBad), "N = %d misses the collision", grid_n_);
     else
       ImGui::Text("N = %d: no collision (and there is none)", grid_n_);
     if (min_grid_)
@@ -331,6 +331,16 @@ class CollisionLesson : public Lesson, private Stepper {
   }
 
   // The smallest N without the endpoints, and why the handout's answer may be 3, 4 or 5.
+  // A bisection's evaluated midpoint: green when free, vermillion with a white cross when in
+  // collision, so that the shape tells them apart too, not the colour alone (WCAG 1.4.1).
+  static void dot(ImDrawList* dl, ImVec2 at, bool free) {
+    dl->AddCircleFilled(at, 5.0f, free ? theme::kFree : theme::kHit, 16);
+    if (free) return;
+    const ImU32 white = theme::rgba(255, 255, 255);
+    dl->AddLine(ImVec2(at.x - 2.5f, at.y - 2.5f), ImVec2(at.x + 2.5f, at.y + 2.5f), white, 1.5f);
+    dl->AddLine(ImVec2(at.x - 2.5f, at.y + 2.5f), ImVec2(at.x + 2.5f, at.y - 2.5f), white, 1.5f);
+  }
+
   void interior_count_lines() {
     if (min_interior_)
       ImGui::TextWrapped("without p, q (t = i/(N+1)): %d", *min_interior_);
@@ -385,7 +395,7 @@ class CollisionLesson : public Lesson, private Stepper {
       ++number;
       const ImU32 c = e.free ? theme::kFree : theme::kHit;
       if (arm_) draw_robot(view_, robot, e.q, theme::with_alpha(c, i + 1 == shown_ ? 255 : 110), 2.0f);
-      else dl->AddCircleFilled(view_.to_screen(Vec2(e.q[0], e.q[1])), 5.0f, c, 16);
+      else dot(dl, view_.to_screen(Vec2(e.q[0], e.q[1])), e.free);
     }
     if (!arm_) {
       // Their numbers under them, newest first, none over another (p -> q need not be level,
@@ -493,7 +503,7 @@ class CollisionLesson : public Lesson, private Stepper {
       }
       if (e.kind != EdgeEvent::Kind::Evaluate) continue;
       ++number;
-      if (inside(e.t)) dl->AddCircleFilled(ImVec2(x(e.t), row), 5.0f, e.free ? theme::kFree : theme::kHit, 12);
+      if (inside(e.t)) dot(dl, ImVec2(x(e.t), row), e.free);
     }
     LabelRow labels;
     for (int i = shown_ - 1; i >= 0; --i) {
@@ -567,8 +577,8 @@ class CollisionLesson : public Lesson, private Stepper {
       for (std::size_t c = 0; c < r.size(); ++c) {
         ImGui::TableNextColumn();
         if (c == 1 && e.t0 == e.t1) ImGui::TextDisabled("%s", r[c].c_str());
-        else if (c == 3 && e.kind == EdgeEvent::Kind::Certify) ImGui::TextColored(ImVec4(0.0f, 0.45f, 0.3f, 1.0f), "%s", r[c].c_str());
-        else if (c == 6 && !e.free) ImGui::TextColored(ImVec4(0.75f, 0.2f, 0.0f, 1.0f), "%s", r[c].c_str());
+        else if (c == 3 && e.kind == EdgeEvent::Kind::Certify) ImGui::TextColored(theme::vec4(theme::kTextGood), "%s", r[c].c_str());
+        else if (c == 6 && !e.free) ImGui::TextColored(theme::vec4(theme::kTextBad), "%s", r[c].c_str());
         else ImGui::TextUnformatted(r[c].c_str());
       }
       if (i + 1 == shown_) ImGui::SetScrollHereY(1.0f);

@@ -320,7 +320,7 @@ class DistancesLesson : public Lesson {
 
     ImGui::Separator();
     ImGui::PushFont(fonts().title);
-    ImGui::TextColored(ImVec4(0.55f, 0.36f, 0.0f, 1.0f), "d(q₁, q₂) = %s rad", num(a.distance).c_str());
+    ImGui::TextColored(theme::vec4(theme::kTextAmount), "d(q₁, q₂) = %s rad", num(a.distance).c_str());
     ImGui::PopFont();
     text_flow(ui::format("= %.2f°: %s", degrees(a.distance), case_line().c_str()));
 
@@ -606,11 +606,11 @@ class DistancesLesson : public Lesson {
 
     ImGui::Separator();
     ImGui::PushFont(fonts().title);
-    ImGui::TextColored(ImVec4(0.55f, 0.36f, 0.0f, 1.0f), "d = %s", num(s.distance).c_str());
+    ImGui::TextColored(theme::vec4(theme::kTextAmount), "d = %s", num(s.distance).c_str());
     ImGui::PopFont();
     text_flow(ui::format("= max(0, |q − c| − r) = max(0, %s − %s)", num(s.centre_distance).c_str(), num(s.r).c_str()));
     text_flow(segment_case_text());
-    if (s.meets) ImGui::TextColored(ImVec4(0.7f, 0.25f, 0.0f, 1.0f), "|q − c| ≤ r: they meet, so d = 0.");
+    if (s.meets) ImGui::TextColored(theme::vec4(theme::kTextBad), "|q − c| ≤ r: they meet, so d = 0.");
 
     if (!panel::fold("the lab's clearance η keeps the sign", false)) return;
     text_flow(ui::format("η = |q − c| − r = %s", num(s.lab_clearance).c_str()));

@@ -282,7 +282,7 @@ class NotationLesson : public Lesson {
 
     const ConfigSpaceInfo info = configuration_space(robot_);
     ui::section("Its configuration space");
-    ImGui::TextColored(ImVec4(0.0f, 0.3f, 0.55f, 1.0f), "Q = %s", info.notation.c_str());
+    ImGui::TextColored(theme::vec4(theme::kTextKey), "Q = %s", info.notation.c_str());
     ImGui::TextWrapped("dimension %d: that many numbers fix a configuration", info.dimension);
     for (const NotationFactor& f : info.factors) {
       ImGui::Bullet();
@@ -348,7 +348,7 @@ class NotationLesson : public Lesson {
     }
     said("Next exercise");
     if (checked_) {
-      const ImVec4 colour = check_.correct ? ImVec4(0.0f, 0.45f, 0.3f, 1.0f) : ImVec4(0.7f, 0.25f, 0.0f, 1.0f);
+      const ImVec4 colour = check_.correct ? theme::vec4(theme::kTextGood) : theme::vec4(theme::kTextBad);
       ImGui::PushStyleColor(ImGuiCol_Text, colour);
       text(check_.explanation);
       ImGui::PopStyleColor();
@@ -665,11 +665,18 @@ class NotationLesson : public Lesson {
     ImGui::Dummy(ImVec2(0, 4));
     sphere_.begin("##sphere", ImVec2(size.x, h), 1.3);
     sphere_.draw_surface(sphere_point, 40, 20, [&](double, double) { return surface; });
-    // A loop of latitude sliding towards the pole and shrinking, again and again.
-    const double phase = 0.5 + 0.45 * std::cos(0.8 * t);
-    std::vector<SurfacePoint> latitude;
-    for (int i = 0; i <= 96; ++i) latitude.push_back(sphere_point(i / 96.0, 0.02 + 0.5 * (1.0 - phase)));
-    sphere_.draw_curve(latitude, theme::kGreen, 3.0f);
+    // A loop of latitude sliding towards the pole and shrinking, again and again; with reduced
+    // motion (the page's prefers-reduced-motion) the same story still: three loops, each smaller.
+    const auto loop = [&](double phase) {
+      std::vector<SurfacePoint> latitude;
+      for (int i = 0; i <= 96; ++i) latitude.push_back(sphere_point(i / 96.0, 0.02 + 0.5 * (1.0 - phase)));
+      sphere_.draw_curve(latitude, theme::kGreen, 3.0f);
+    };
+    if (web::page().reduced_motion) {
+      for (double phase : {0.95, 0.5, 0.1}) loop(phase);
+    } else {
+      loop(0.5 + 0.45 * std::cos(0.8 * t));
+    }
     const ImVec2 s0 = ImGui::GetItemRectMin();
     surface_caption(dl, ImVec2(s0.x + 6, s0.y + 4), named ? "S^2: every loop shrinks to a point" : "a sphere: every loop shrinks to a point",
                     size.x - 12);

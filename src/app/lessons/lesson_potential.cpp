@@ -574,7 +574,7 @@ class PotentialLesson : public Lesson, private Stepper {
 
   void status_text() {
     if (!problem_.empty()) {
-      ImGui::TextColored(ImVec4(0.75f, 0.25f, 0.0f, 1.0f), "%s", problem_.c_str());
+      ImGui::TextColored(theme::vec4(theme::kTextBad), "%s", problem_.c_str());
       return;
     }
     const Descent& d = *descent_;
@@ -583,18 +583,18 @@ class PotentialLesson : public Lesson, private Stepper {
     ImGui::Text("local minima %d  escapes used %d of %d", d.local_minima(), d.escapes_used(), d.params().escapes);
     switch (d.outcome()) {
       case DescentOutcome::Running: break;
-      case DescentOutcome::Goal: ImGui::TextColored(ImVec4(0.0f, 0.45f, 0.3f, 1.0f), "reached the goal"); break;
+      case DescentOutcome::Goal: ImGui::TextColored(theme::vec4(theme::kTextGood), "reached the goal"); break;
       case DescentOutcome::Escaped:
-        ImGui::TextColored(ImVec4(0.0f, 0.45f, 0.3f, 1.0f), "reached the goal after %d random walk(s)", d.escapes_used());
+        ImGui::TextColored(theme::vec4(theme::kTextGood), "reached the goal after %d random walk(s)", d.escapes_used());
         break;
       case DescentOutcome::LocalMinimum:
-        ImGui::TextColored(ImVec4(0.75f, 0.25f, 0.0f, 1.0f), "stuck in a local minimum");
+        ImGui::TextColored(theme::vec4(theme::kTextBad), "stuck in a local minimum");
         ImGui::TextWrapped("The descent makes no progress here, away from the goal: attraction and repulsion "
                            "nearly cancel, so its steps of fixed length go back and forth around a minimum of U "
                            "(|τ| is small there, not zero), or every step is blocked. Allow escapes: random "
                            "walks out of the basin, then descent again.");
         break;
-      case DescentOutcome::MaxSteps: ImGui::TextColored(ImVec4(0.75f, 0.25f, 0.0f, 1.0f), "out of steps"); break;
+      case DescentOutcome::MaxSteps: ImGui::TextColored(theme::vec4(theme::kTextBad), "out of steps"); break;
     }
   }
 
@@ -602,7 +602,7 @@ class PotentialLesson : public Lesson, private Stepper {
   void robot_summary() {
     const PotentialReport r = field_->evaluate(shown());
     if (r.contact) {
-      ImGui::TextColored(ImVec4(0.75f, 0.25f, 0.0f, 1.0f), "a control point is on an obstacle: U is infinite");
+      ImGui::TextColored(theme::vec4(theme::kTextBad), "a control point is on an obstacle: U is infinite");
       return;
     }
     ImGui::Text("U = %.4g  (attractive %.4g, repulsive %.4g)", r.U, r.U_att, r.U_rep);
@@ -754,8 +754,8 @@ class PotentialLesson : public Lesson, private Stepper {
         layout_.rows.push_back({lo.x, lo.y, hi.x, hi.y});
         for (int c = 1; c < 6; ++c) {
           ImGui::TableNextColumn();
-          const ImVec4 colour = c == 3 ? (t.outside[i] ? ImVec4(0.45f, 0.45f, 0.45f, 1.0f) : ImVec4(0.75f, 0.3f, 0.0f, 1.0f))
-                                : c == 4 ? ImVec4(0.0f, 0.5f, 0.35f, 1.0f) : ImGui::GetStyleColorVec4(ImGuiCol_Text);
+          const ImVec4 colour = c == 3 ? (t.outside[i] ? theme::vec4(theme::kTextDim) : theme::vec4(theme::kTextBad))
+                                : c == 4 ? theme::vec4(theme::kTextGood) : ImGui::GetStyleColorVec4(ImGuiCol_Text);
           ImGui::TextColored(colour, "%s", t.rows[i][static_cast<std::size_t>(c)].c_str());
         }
       }
@@ -771,7 +771,7 @@ class PotentialLesson : public Lesson, private Stepper {
     // Room for the longest case under the table (tau, and (5.5), (5.6) with one of them wrapped:
     // 8 lines), so that choosing another row or moving the robot does not move the table.
     const float reserved = ImGui::GetCursorPosY() + 8.0f * ImGui::GetTextLineHeightWithSpacing() + ImGui::GetStyle().ItemSpacing.y;
-    if (r.contact) ImGui::TextColored(ImVec4(0.75f, 0.25f, 0.0f, 1.0f), "a control point is on an obstacle: U is infinite");
+    if (r.contact) ImGui::TextColored(theme::vec4(theme::kTextBad), "a control point is on an obstacle: U is infinite");
     for (const std::string& line : t.tau) wrapped(line);
     ImGui::Spacing();
     for (const std::string& line : t.equations) wrapped(line);

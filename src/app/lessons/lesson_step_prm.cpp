@@ -196,10 +196,10 @@ class StepPrmLesson : public Lesson {
     ImGui::Text("samples drawn %d of %d", planner.samples_drawn(), params_.samples);
     ImGui::Text("edge checks %ld   evaluations %ld", planner.edge_checks(), planner.evaluations());
     if (planner.solved())
-      ImGui::TextColored(ImVec4(0.0f, 0.45f, 0.3f, 1.0f), "path found: length %.4f, %zu edges", planner.path_length(),
+      ImGui::TextColored(theme::vec4(theme::kTextGood), "path found: length %.4f, %zu edges", planner.path_length(),
                          planner.path().size() - 1);
     else if (planner.done())
-      ImGui::TextColored(ImVec4(0.7f, 0.25f, 0.0f, 1.0f), "no path found");
+      ImGui::TextColored(theme::vec4(theme::kTextBad), "no path found");
     if (replay_pending()) {
       ImGui::PushTextWrapPos(0.0f);
       ImGui::TextDisabled("(the roadmap of the scene before this drag: replayed at the release)");

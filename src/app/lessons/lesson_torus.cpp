@@ -86,8 +86,8 @@ class TorusLesson : public Lesson {
       const int parts = prm().components();
       ui::text_flow(ui::format("|V| = %zu  |E| = %ld (%d across a seam), %d component%s", prm().roadmap().vertices.size(),
                                prm().edges_alive(), seam_edges(), parts, parts == 1 ? "" : "s"));
-      if (prm().solved()) ImGui::TextColored(ImVec4(0.0f, 0.45f, 0.3f, 1.0f), "path found, length %.3f rad", prm().path_length());
-      else if (prm().done()) ImGui::TextColored(ImVec4(0.7f, 0.25f, 0.0f, 1.0f), "no path found");
+      if (prm().solved()) ImGui::TextColored(theme::vec4(theme::kTextGood), "path found, length %.3f rad", prm().path_length());
+      else if (prm().done()) ImGui::TextColored(theme::vec4(theme::kTextBad), "no path found");
       if (replay_pending()) {
         ImGui::PushTextWrapPos(0.0f);
         ImGui::TextDisabled("(the roadmap of the scene before this drag: replayed at the release)");
@@ -179,6 +179,7 @@ class TorusLesson : public Lesson {
              {"trail", trail_.size()},
              {"view", right_view_ == 0 ? "square" : right_view_ == 1 ? "torus" : "both"},
              {"exercise", exercise_ == Exercise::None ? "none" : exercise_ == Exercise::Around ? "around" : "shrink"},
+             {"animate", animate_},
              {"workspace_caption", workspace_caption() ? json(workspace_caption()) : json(nullptr)},
              {"prm", planner_state_json(prm(), false)}};
     out["prm"]["params"] = prm_params_json(params_);
@@ -350,8 +351,17 @@ class TorusLesson : public Lesson {
     exercise_ = e;
     loop_origin_ = q_;
     phase_ = 0.0;
-    animate_ = true;
+    // The arm walks the loop by itself, unless the student asked for reduced motion (then the
+    // "animate" box starts it, and the loop is drawn whole anyway).
+    animate_ = !web::page().reduced_motion;
     trail_.clear();
+    if (!animate_) {  // the whole loop at once, as its trail, and the arm at its start
+      for (int i = 0; i <= 200; ++i) {
+        q_ = loop_at(i / 200.0);
+        push_trail();
+      }
+      q_ = loop_at(0.0);
+    }
   }
 
   // --- the workspace: the arm, obstacles, the tip's trail; drag a link to turn its joint.
@@ -410,7 +420,7 @@ class TorusLesson : public Lesson {
   }
 
   const char* workspace_caption() const {
-    if (exercise_ == Exercise::None || !animate_) return nullptr;
+    if (exercise_ == Exercise::None) return nullptr;  // (also when still: reduced motion draws the loop whole)
     return loop_blocked() ? "a loop in C-space, not a path (red-orange: the arm hits)"
                           : "a loop in C-space, not a planned path";
   }

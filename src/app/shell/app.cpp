@@ -12,6 +12,7 @@
 #include "app/shell/js_api.hpp"
 #include "app/shell/panel.hpp"
 #include "app/shell/theme.hpp"
+#include "app/shell/theme_api.hpp"
 #include "app/shell/ui.hpp"
 #include "app/shell/web_bridge.hpp"
 #include "core/base/version.hpp"
@@ -272,6 +273,7 @@ void App::register_api() {
           });
   homework_.register_api(api);
   web::register_api(api, ctx_);  // notify, page_state, bundled_scenes: the page around the app
+  theme::register_api(api);      // the colours that carry meaning (accessibility tests)
   api.add("log", "the event log's lines", [this](const json&) {
     json out = json::array();
     for (const auto& [step, text] : ctx_.log.lines()) out.push_back({{"step", step}, {"text", text}});
@@ -371,7 +373,7 @@ void App::notice() {
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoFocusOnAppearing |
                    ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs);
   ImGui::PushTextWrapPos(std::max(200.0f, vp->WorkSize.x * 0.7f));  // long notices wrap
-  ImGui::TextColored(ImVec4(0.6f, 0.2f, 0.0f, 1.0f), "%s", ctx_.notice.c_str());
+  ImGui::TextColored(theme::vec4(theme::kTextNotice), "%s", ctx_.notice.c_str());
   ImGui::PopTextWrapPos();
   ImGui::End();
 }

@@ -1,5 +1,7 @@
 #include "app/shell/event_log.hpp"
 
+#include "app/shell/theme.hpp"
+
 #include "imgui.h"
 
 namespace csl::app {
@@ -19,7 +21,7 @@ void EventLog::draw(const char* id, float height) const {
       ImGui::SameLine();
     }
     if (newest)
-      ImGui::TextColored(ImVec4(0.0f, 0.35f, 0.6f, 1.0f), "%s", text.c_str());
+      ImGui::TextColored(theme::vec4(theme::kTextLog), "%s", text.c_str());
     else
       ImGui::TextUnformatted(text.c_str());
   }

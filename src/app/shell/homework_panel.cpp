@@ -234,7 +234,7 @@ void HomeworkPanel::card(const std::string& lesson_id) {
 
 void HomeworkPanel::problem_body(const HomeworkProblem& problem) {
   const HomeworkProblem* p = &problem;
-  ImGui::TextColored(ImVec4(0.0f, 0.3f, 0.55f, 1.0f), "%s", p->id.c_str());
+  ImGui::TextColored(theme::vec4(theme::kTextKey), "%s", p->id.c_str());
   ImGui::SameLine();
   ImGui::TextWrapped("%s", p->title.c_str());
   ImGui::TextWrapped("%s", p->task.c_str());

@@ -1,13 +1,22 @@
 #include "app/shell/theme.hpp"
 
+#include <cmath>
+
 namespace csl::app::theme {
 
 ImU32 component_color(int component, unsigned alpha) {
-  // The largest component is usually 0 (it holds the start): the calm blue; then distinct hues.
-  static const ImU32 kCycle[] = {rgba(0, 114, 178),  rgba(0, 158, 115),  rgba(204, 121, 167), rgba(86, 180, 233),
-                                 rgba(213, 94, 0),   rgba(120, 94, 240), rgba(0, 0, 0),       rgba(150, 150, 60)};
-  const ImU32 c = kCycle[static_cast<unsigned>(component) % (sizeof kCycle / sizeof kCycle[0])];
+  const ImU32 c = kComponents[static_cast<unsigned>(component) % kComponentCount];
   return with_alpha(c, alpha);
+}
+
+ImU32 text_on(ImU32 fill) {
+  // WCAG relative luminance; black on it reads better than white above L = 0.179.
+  const auto lin = [](unsigned v) {
+    const double c = v / 255.0;
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+  };
+  const double l = 0.2126 * lin(fill & 0xFF) + 0.7152 * lin((fill >> 8) & 0xFF) + 0.0722 * lin((fill >> 16) & 0xFF);
+  return l > 0.179 ? kBlack : rgba(255, 255, 255);
 }
 
 void apply_style() {
@@ -33,6 +42,8 @@ void apply_style() {
   c[ImGuiCol_HeaderHovered] = ImVec4(0.0f, 0.447f, 0.698f, 0.28f);
   c[ImGuiCol_HeaderActive] = ImVec4(0.0f, 0.447f, 0.698f, 0.40f);
   c[ImGuiCol_Text] = ImVec4(0.10f, 0.10f, 0.12f, 1.0f);
+  // ImGui's light grey (0.6) is 2.6:1 on the panel; secondary text must read too (4.5:1).
+  c[ImGuiCol_TextDisabled] = vec4(kTextDim);
 }
 
 }  // namespace csl::app::theme

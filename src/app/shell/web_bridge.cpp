@@ -6,6 +6,7 @@
 #include <map>
 
 #include "app/shell/bundled_scenes.hpp"
+#include "app/shell/theme.hpp"
 #include "core/base/version.hpp"
 #include "imgui.h"
 
@@ -168,19 +169,22 @@ void register_api(JsApi& api, LabContext& ctx) {
     ctx.notify(t, seconds);
     return json(true);
   });
-  api.add("page_state", "the page around the app: {attached?, minimal?, welcome?, previous?, history?: [{label}]}; also where its buttons are (CSS px)", [](const json& args) {
+  api.add("page_state", "the page around the app: {attached?, minimal?, welcome?, reduced_motion?, previous?, history?: [{label}]}; also where its buttons are (CSS px)", [](const json& args) {
     PageState next = state();
     for (auto it = args.begin(); it != args.end(); ++it) {
-      if (it.key() == "attached" || it.key() == "minimal" || it.key() == "welcome") {
+      if (it.key() == "attached" || it.key() == "minimal" || it.key() == "welcome" || it.key() == "reduced_motion") {
         if (!it->is_boolean()) throw ApiError(it.key() + ": true or false");
-        (it.key() == "attached" ? next.attached : it.key() == "minimal" ? next.minimal : next.welcome) = it->get<bool>();
+        (it.key() == "attached" ? next.attached
+         : it.key() == "minimal" ? next.minimal
+         : it.key() == "welcome" ? next.welcome
+                                 : next.reduced_motion) = it->get<bool>();
       } else if (it.key() == "previous") {
         if (!it->is_string() || it->get<std::string>().size() > 200) throw ApiError("previous: a string of at most 200 characters");
         next.previous = it->get<std::string>();
       } else if (it.key() == "history") {
         next.history = history_labels(*it);
       } else {
-        throw ApiError("unknown field \"" + it.key() + "\" (attached, minimal, welcome, previous, history)");
+        throw ApiError("unknown field \"" + it.key() + "\" (attached, minimal, welcome, reduced_motion, previous, history)");
       }
     }
     state() = next;
@@ -188,7 +192,8 @@ void register_api(JsApi& api, LabContext& ctx) {
     for (const auto& [name, r] : rects()) buttons[name] = r;
     json history = json::array();
     for (const std::string& label : next.history) history.push_back({{"label", label}});
-    return json{{"attached", next.attached}, {"minimal", next.minimal}, {"welcome", next.welcome}, {"previous", next.previous},
+    return json{{"attached", next.attached}, {"minimal", next.minimal}, {"welcome", next.welcome},
+                {"reduced_motion", next.reduced_motion}, {"previous", next.previous},
                 {"history", history}, {"buttons", buttons}};
   });
   api.add("bundled_scenes", "the bundled scenes by name (what ?scene=NAME loads)", [](const json&) {
@@ -223,7 +228,7 @@ void top_bar_actions(LabContext& ctx, const std::string& lesson_name) {
   }
   const char* restore = kRestore;
   if (!s.previous.empty()) {
-    ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.98f, 0.86f, 0.55f, 1.0f));
+    ImGui::PushStyleColor(ImGuiCol_Button, theme::vec4(theme::kRestoreButton));
     if (ImGui::Button(restore)) page_action("restore-previous");
     record("restore-previous");
     ImGui::PopStyleColor();

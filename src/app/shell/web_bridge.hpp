@@ -19,6 +19,8 @@ struct PageState {
   bool attached = false;  ///< a page shell has announced itself (page_state {attached: true})
   bool minimal = false;   ///< ui=minimal: an embed, no lesson menu
   bool welcome = false;   ///< a first visit: the panel offers the homework map (the page remembers a dismissal)
+  /// The browser asks for reduced motion (prefers-reduced-motion): nothing moves by itself.
+  bool reduced_motion = false;
   std::string previous;   ///< the newest previous work (shown on its button's tooltip), "" if none
   /// The page's history of previous work, newest first, one label each ("14:03 · before a link ·
   /// Step PRM"); the File menu lists them and asks for "restore-history:<i>".

@@ -1,0 +1,101 @@
+// WCAG 2.1 AA as axe-core checks it in the browser: no serious or critical violation on the full
+// lab, the embed and the course page, in every lesson, with the Share and Embed dialogs open and
+// on the panel that takes a stopped lab's place. axe sees the page's DOM: the canvas's label and
+// the dialogs now, any HTML the page grows for screen readers later (it runs over all of it).
+// A failure lists every state with its violations' ids and the elements they were found on.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { withBrowser, collectErrors, openLab, openLabs, waitFrames, screenshot } from './lib/harness.mjs';
+import { newAxeContext, runAxe } from './lib/axe.mjs';
+
+/**
+ * Checks `target` in each lesson of the lab `lab` (a CSS selector of its [data-lab] element, or
+ * null: window.cspacelab), then goes back to the first; pushes "state: violation" onto `found`.
+ */
+async function everyLesson(target, where, found, lab = null) {
+  const call = (fn, ...args) => target.evaluate(([sel, f, a]) => {
+    const api = sel ? document.querySelector(sel).cspacelab : window.cspacelab;
+    return api[f](...a);
+  }, [lab, fn, args]);
+  const lessons = await call('lessons');
+  assert.ok(lessons.length >= 5, `${where}: the lessons are listed`);
+  for (const { id } of lessons) {
+    await call('selectLesson', id);
+    await target.waitForFunction(([sel, want]) => {
+      const api = sel ? document.querySelector(sel).cspacelab : window.cspacelab;
+      return api.status().lesson === want;
+    }, [lab, id]);
+    await waitFrames(target, 2);
+    await check(target, `${where}, lesson ${id}`, found);
+  }
+  await call('selectLesson', lessons[0].id);
+}
+
+async function check(target, state, found) {
+  const { blocking, other } = await runAxe(target);
+  for (const v of blocking) found.push(`${state}: ${v}`);
+  // Moderate and minor findings do not fail the test; they are shown for the record.
+  for (const v of other) console.log(`# axe, not blocking: ${state}: ${v}`);
+}
+
+function expectNone(found) {
+  assert.deepEqual(found, [], `axe found ${found.length} serious or critical violation(s):\n  ${found.join('\n  ')}`);
+}
+
+test('index.html and embed.html: no serious or critical axe violation in any lesson, nor in their dialogs',
+  () => withBrowser(async ({ browser, url }) => {
+  const context = await newAxeContext(browser);
+  await context.addInitScript(() => localStorage.setItem('cspacelab:v1:welcomed', '1'));
+  const found = [];
+  for (const file of ['index.html', 'embed.html?lesson=collision&scene=p12']) {
+    const page = await context.newPage();
+    const errors = collectErrors(page);
+    await openLab(page, url + file);
+    await check(page, file, found);
+    await everyLesson(page, file, found);
+    // Share and Embed: the page's dialogs, opened as the app's buttons open them.
+    for (const action of ['share', 'embed']) {
+      await page.evaluate((a) => window.cspacelab.module.cslPageAction(a), action);
+      await page.waitForSelector('.lab-dialog[role=dialog]');
+      await check(page, `${file}, ${action} dialog`, found);
+      await page.keyboard.press('Escape');
+      await page.waitForSelector('.lab-dialog', { state: 'detached' });
+    }
+    assert.deepEqual(errors, [], `${file}: no console errors`);
+    await page.close();
+  }
+  // The first visit's welcome (drawn in the app, but it changes what the panel holds).
+  const fresh = await browser.newContext({ bypassCSP: true, viewport: { width: 1280, height: 800 } });
+  const first = await fresh.newPage();
+  await openLab(first, url);
+  assert.equal((await first.evaluate(() => window.cspacelab.pageState())).welcome, true);
+  await check(first, 'index.html, first visit', found);
+  await fresh.close();
+  expectNone(found);
+}));
+
+test('a lab that stopped: the panel in its place passes axe', () => withBrowser(async ({ browser, url }) => {
+  const context = await newAxeContext(browser);
+  const page = await context.newPage();
+  await openLab(page, url);
+  // What Emscripten calls when the wasm aborts (lab.js routes it to the page shell).
+  await page.evaluate(() => window.cspacelab.module.onAbort('an abort injected by the accessibility test'));
+  await page.waitForSelector('.lab-crash[role=dialog]');
+  await screenshot(page, 'accessibility-crash-panel.png');
+  const found = [];
+  await check(page, 'index.html, the crash panel', found);
+  expectNone(found);
+}));
+
+test('the course page: no serious or critical axe violation, each lesson in its first lab',
+  () => withBrowser(async ({ browser, url }) => {
+  const context = await newAxeContext(browser, { viewport: { width: 1100, height: 800 } });
+  const page = await context.newPage();
+  const errors = collectErrors(page);
+  await openLabs(page, url + 'examples/course-page.html', ['#lab-collision', '#lab-prm']);
+  const found = [];
+  await check(page, 'course page', found);
+  await everyLesson(page, 'course page', found, '#lab-collision');
+  assert.deepEqual(errors, [], 'no console errors');
+  expectNone(found);
+}));
