@@ -70,6 +70,11 @@ test('the theme: meaning stays apart for every dichromacy; text reads at 4.5:1',
     pairs.push([`roadmap component ${i} vs the path`, a, c.path]);
     for (let j = i + 1; j < components.length; ++j) pairs.push([`roadmap components ${i} vs ${j}`, a, components[j]]);
   });
+  // For the record: the closest pairs and the faintest text.
+  for (const p of pairs.map(([name, a, b]) => ({ name, ...worst(a, b) })).sort((x, y) => x.de - y.de).slice(0, 6))
+    console.log(`# ${p.name}: ΔE00 ${p.de.toFixed(1)} (${p.kind})`);
+  for (const t of text.map((x) => ({ ...x, ratio: contrast(x.fg, x.bg) })).sort((x, y) => x.ratio - y.ratio).slice(0, 6))
+    console.log(`# ${t.name}: ${t.ratio.toFixed(2)}:1`);
   assert.deepEqual(tooClose(pairs), [], `pairs closer than ΔE00 ${MIN_DE}`);
 
   const faint = [['start', c.start], ['goal', c.goal], ['free', c.free], ['in collision', c.hit], ['robot', c.robot],
