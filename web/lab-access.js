@@ -28,7 +28,6 @@ class CSpaceLabAccess {
     this.pendingLine = null;         // a newer log line waiting for the rate limit
     this.announceTimer = 0;
     this.build();
-    this.freeTab();
     this.timer = setInterval(() => this.poll(), CSpaceLabAccess.POLL_MS);
     this.poll();
   }
@@ -78,16 +77,6 @@ class CSpaceLabAccess {
     this.live = this.el('p', { className: 'lab-access-log', 'aria-live': 'polite', 'aria-atomic': 'true' }, s);
     // After the canvas and the app's text proxy: the keyboard reaches it right after the canvas.
     this.root.appendChild(s);
-  }
-
-  // SDL takes Tab on the canvas (it cancels the key, so focus never moves on): a Tab pressed on
-  // the canvas itself goes to the page instead, to the section that follows it. While one of the
-  // app's text fields has the keyboard its proxy has the focus, and Tab moves between fields there.
-  freeTab() {
-    this.root.addEventListener('keydown', (e) => {
-      if (e.key !== 'Tab' || e.ctrlKey || e.altKey || e.metaKey || !e.isTrusted) return;
-      if (e.target === this.canvas && document.activeElement === this.canvas) e.stopPropagation();
-    }, true);
   }
 
   act(call) {

@@ -29,13 +29,17 @@ async function viewMiddle(page, view = 'workspace') {
 const canvasFocused = (page) => page.evaluate(() => document.activeElement === document.querySelector('canvas'));
 
 // Tab until the canvas has the focus (the page may give it the focus on load: then Tab first
-// leaves it, which is checked too). Returns how many presses it took.
+// leaves it, which is checked too, and Shift+Tab comes back). Returns how many presses it took.
+// After the canvas come the lab's own HTML controls (web/lab-access.js), so the way round to it
+// by Tab alone is long.
 async function tabToCanvas(page) {
   if (await canvasFocused(page)) {
     await keys(page, 'Tab');
     assert.equal(await canvasFocused(page), false, 'Tab leaves the canvas: no keyboard trap');
+    await keys(page, 'Shift+Tab');
+    if (await canvasFocused(page)) return 2;
   }
-  for (let i = 1; i <= 6; ++i) {
+  for (let i = 1; i <= 60; ++i) {
     await keys(page, 'Tab');
     if (await canvasFocused(page)) return i;
   }
@@ -231,12 +235,80 @@ test('Tab goes into an embedded lab and out again to the page around it',
   const start0 = (await frame.evaluate(() => window.cspacelab.getScene())).start;
   await press('n', 'ArrowUp');
   assert.ok((await frame.evaluate(() => window.cspacelab.getScene())).start[1] > start0[1], 'the start moved up');
+  // Tab goes on through the lab's own HTML controls (web/lab-access.js), then out to the page.
+  const inSection = () => frame.evaluate(() => document.querySelector('.lab-access').contains(document.activeElement));
   await press('Tab');
-  assert.equal(await where(), 'after', 'the next Tab left the lab for the page');
-  assert.equal(await inLab(), false);
+  assert.equal(await inLab(), false, 'Tab left the canvas');
+  assert.equal(await inSection(), true, 'for the lab\'s HTML controls');
+  let tabs = 1;
+  while ((await where()) === 'f' && tabs < 60) { await press('Tab'); ++tabs; }
+  assert.equal(await where(), 'after', `Tab left the lab for the page (after ${tabs} presses)`);
   await press('Shift+Tab');
-  assert.equal(await inLab(), true, 'Shift+Tab came back');
-  await press('Shift+Tab');
+  assert.equal(await where(), 'f', 'Shift+Tab came back into the lab');
+  let back = 1;
+  while ((await where()) === 'f' && back < 60) { await press('Shift+Tab'); ++back; }
   assert.equal(await where(), 'before', 'and Shift+Tab leaves it backwards');
+  assert.equal(back, tabs + 1, 'through the same controls and the canvas (one more: the canvas)');
   assert.deepEqual(errors, []);
+}));
+
+// The issue's whole journey with no mouse event: from the front page, a lesson chosen in the
+// lab's own HTML, a disk placed and the start moved on the canvas, PRM run from the HTML's Run
+// all, and the result read in the HTML's description, which must agree with the app's state.
+test('from page load to a planned path by keyboard alone, the result read from the DOM',
+  () => withPage({ open: 'index.html' }, async ({ page }) => {
+  const focused = () => page.evaluate(() => {
+    const a = document.activeElement;
+    return { lesson: a && a.dataset ? a.dataset.lesson || null : null, text: a ? a.textContent : '' };
+  });
+  await tabToCanvas(page);
+  // Tab on from the canvas into the lab's HTML, to the Step PRM lesson button.
+  let found = false;
+  for (let i = 0; i < 40 && !found; ++i) {
+    await keys(page, 'Tab');
+    found = (await focused()).lesson === 'step-prm';
+  }
+  assert.ok(found, 'Tab reaches the Step PRM lesson button');
+  await keys(page, 'Enter');
+  await page.waitForFunction(() => window.cspacelab.status().lesson === 'step-prm');
+  // Back to the canvas with Shift+Tab.
+  for (let i = 0; i < 40 && !(await canvasFocused(page)); ++i) await keys(page, 'Shift+Tab');
+  assert.equal(await canvasFocused(page), true, 'Shift+Tab returns to the canvas');
+
+  const s = await keyStep(page);
+  const before = await api(page, 'get_scene');
+  await keys(page, 'd', 'Enter');
+  const after = await api(page, 'get_scene');
+  assert.equal(after.obstacles.length, before.obstacles.length + 1, 'a disk placed by D, Enter');
+  // N after the new disk (the last obstacle) focuses the start; two steps left.
+  await keys(page, 'n', 'ArrowLeft', 'ArrowLeft');
+  const moved = (await api(page, 'get_scene')).start;
+  close(moved[0], Math.max(before.start[0] - 2 * s, before.workspace.min[0]), 'the start moved two steps left');
+  close(moved[1], before.start[1], 'and no step up or down');
+
+  // Run all, in the HTML after the canvas.
+  found = false;
+  for (let i = 0; i < 60 && !found; ++i) {
+    await keys(page, 'Tab');
+    found = (await focused()).text.trim() === 'Run all';
+  }
+  assert.ok(found, 'Tab reaches Run all');
+  await keys(page, 'Enter');
+  await page.waitForFunction(() => window.cspacelab.state().done && !window.cspacelab.status().busy, null, { timeout: 90000 });
+  const state = await api(page, 'state');
+  // The description says what the app's state says (4 significant digits).
+  await page.waitForFunction((solved) => {
+    const d = document.querySelector('.lab-access-description');
+    return d && (solved ? /Path found/.test(d.textContent) : /No path/.test(d.textContent));
+  }, state.solved, { timeout: 10000 });
+  const text = await page.evaluate(() => document.querySelector('.lab-access-description').textContent);
+  if (state.solved) {
+    const m = text.match(/Path found: (\d+) edges?, length ([0-9]+(?:\.[0-9]+)?)/);
+    assert.ok(m, `the description gives the path: ${text}`);
+    assert.equal(Number(m[1]), state.path.length - 1, 'its edges');
+    assert.equal(Number(m[2]), Number(state.path_length.toPrecision(4)), 'its length');
+  }
+  const at = text.match(/Start at \(([-0-9.e]+), ([-0-9.e]+)\)/);
+  assert.ok(at, `the description gives the start: ${text}`);
+  assert.deepEqual([Number(at[1]), Number(at[2])], moved.map((v) => Number(v.toPrecision(4))), 'the moved start in words');
 }));

@@ -39,6 +39,9 @@ test('Step PRM: edit with the mouse, step, step back, run, and match the CLI',
   await api(page, 'set_params', { params: { samples: 120, neighbors: 'k:8', checker: 'bisection', seed: 7 } });
   await page.mouse.move(700, 400);
   for (let i = 0; i < 50; ++i) await page.keyboard.press('.');
+  // (Presses sent faster than frames are drawn queue up: the platform hands ImGui one press of a
+  // key a frame, so a loaded machine may still be working through them here.)
+  await page.waitForFunction(() => window.cspacelab.state().steps >= 50, null, { timeout: 30000 });
   await waitFrames(page, 3);
   assert.equal((await api(page, 'state')).steps, 50);
   const at40 = await (async () => { await api(page, 'run_to', { steps: 40 }); return api(page, 'state'); })();
