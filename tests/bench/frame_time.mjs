@@ -3,6 +3,9 @@
 //   node tests/bench/frame_time.mjs torus-drag                 the torus lesson while an obstacle is dragged
 //   node tests/bench/frame_time.mjs potential                  P13's rectangle descending (its slice's heat
 //                                                              map, 97 x 97 potentials, redone every step)
+//   node tests/bench/frame_time.mjs phone [samples=2000]       a phone upright (390 x 844 CSS px, pixel ratio 3,
+//                                                              touch, the compact layout): Step PRM's roadmap
+//                                                              and the torus lesson (3.4 M device pixels)
 //   node tests/bench/frame_time.mjs heavy-link                 links that start long runs (issue 27): every
 //                                                              frame from the first until the run is done
 // Headless Chromium renders WebGL with SwiftShader, on the CPU: the browser's frame interval
@@ -37,9 +40,25 @@ async function measure(page, during) {
 }
 
 try {
-  const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
+  const page = scenario === 'phone'
+    ? await (await browser.newContext({ viewport: { width: 390, height: 844 }, deviceScaleFactor: 3, hasTouch: true, isMobile: true })).newPage()
+    : await browser.newPage({ viewport: { width: 1280, height: 800 } });
   await openLab(page, url);
-  if (scenario === 'roadmap') {
+  if (scenario === 'phone') {
+    const samples = Number(process.argv[3] || 2000);
+    await api(page, 'select_lesson', { id: 'step-prm' });
+    await api(page, 'set_params', { params: { samples, neighbors: 'k:10', seed: 1 } });
+    await api(page, 'run');
+    const s = await api(page, 'state');
+    const layout = (await api(page, 'status')).layout;
+    console.log(`phone, ${layout.mode} layout: Step PRM, ${s.nodes} vertices, ${s.edges} edges (n = ${samples})`);
+    await page.waitForTimeout(1000);
+    await measure(page);
+    await api(page, 'select_lesson', { id: 'torus' });
+    await page.waitForTimeout(1000);
+    console.log('phone: the torus lesson (arm and C-space square stacked)');
+    await measure(page);
+  } else if (scenario === 'roadmap') {
     const samples = Number(process.argv[3] || 5000);
     await api(page, 'select_lesson', { id: 'step-prm' });
     await api(page, 'set_params', { params: { samples, neighbors: 'k:10', seed: 1 } });

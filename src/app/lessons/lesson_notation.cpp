@@ -143,7 +143,11 @@ class NotationLesson : public Lesson {
 
   void views(LabContext& ctx, ImVec2 size) override {
     const ImGuiWindowFlags still = ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse;
-    const Split s = split(size);
+    Split s = split(size);
+    if (!s.stacked) {  // (half the width to the robot exactly, as the golden pictures have it)
+      s.first.x = 0.5f * size.x;
+      s.second.x = size.x - s.first.x - ImGui::GetStyle().ItemSpacing.x;
+    }
     ImGui::BeginChild("robot-picture", s.first, true, still);
     robot_picture(ImGui::GetContentRegionAvail());
     ImGui::EndChild();

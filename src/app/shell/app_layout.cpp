@@ -19,15 +19,25 @@ namespace csl::app {
 using json = nlohmann::json;
 
 namespace {
-// Narrower than this (logical = CSS px), or short and not wide, the compact layout.
+// The compact layout below this width (logical = CSS px), or when short and not wide (a phone
+// on its side). An embed without the lesson menu (ui=minimal) has one row of bar over its
+// views, and keeps the wide layout down to kCompactMinimalWidth: its side panel and views
+// side by side serve a 600 x 380 course-page embed better than tabs.
 constexpr float kCompactWidth = 700.0f;
 constexpr float kCompactHeight = 480.0f;
 constexpr float kCompactHeightWidth = 900.0f;
-// At least this wide, the compact layout puts its tabs, playback strip and tools on one row.
-constexpr float kCompactRowWidth = 600.0f;
+constexpr float kCompactMinimalWidth = 520.0f;
+// At least this wide, the compact layout's playback strip and tools follow the tabs on their
+// row, each as wide as its label, wrapping where they no longer fit; narrower, each group has a
+// row of its own, its buttons sharing the width.
+constexpr float kCompactRowWidth = 460.0f;
+
+// Narrower than this, the compact bar leaves the lab's name out.
+constexpr float kTitledWidth = 480.0f;
 
 bool wants_compact(ImVec2 size) {
-  return size.x < kCompactWidth || (size.y < kCompactHeight && size.x < kCompactWidth + (kCompactHeightWidth - kCompactWidth));
+  if (web::page().minimal) return size.x < kCompactMinimalWidth;
+  return size.x < kCompactWidth || (size.y < kCompactHeight && size.x < kCompactHeightWidth);
 }
 
 // A row of buttons a finger can hit: 44 px high (WCAG's target size) under a finger, else the
@@ -196,12 +206,17 @@ void App::compact_bar() {
   const float bar_h = bar_height();
   // Row 1: the title and Homework; on a wide screen the lesson menu next; the page's actions at
   // the right (or on a row of their own).
-  ImGui::PushFont(fonts().title);
-  ImGui::AlignTextToFramePadding();
-  ImGui::TextUnformatted(web::page().minimal ? current_name.c_str() : "C-Space Lab");
-  ImGui::PopFont();
+  // (On a phone upright the lab's name gives way: Homework and the page's actions then share
+  // the first row, and the lesson menu below names what is on screen.)
+  const bool titled = web::page().minimal || ImGui::GetContentRegionAvail().x >= kTitledWidth;
+  if (titled) {
+    ImGui::PushFont(fonts().title);
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted(web::page().minimal ? current_name.c_str() : "C-Space Lab");
+    ImGui::PopFont();
+  }
   if (!web::page().minimal) {
-    ImGui::SameLine(0, 12);
+    if (titled) ImGui::SameLine(0, 12);
     homework_.menu_button();
   }
   const float actions_w = web::top_bar_actions_width();
