@@ -47,6 +47,7 @@ test('Step PRM: edit with the mouse, step, step back, run, and match the CLI',
   const at40 = await (async () => { await api(page, 'run_to', { steps: 40 }); return api(page, 'state'); })();
   await api(page, 'run_to', { steps: 50 });
   for (let i = 0; i < 10; ++i) await page.keyboard.press(',');
+  await page.waitForFunction(() => window.cspacelab.state().steps <= 40, null, { timeout: 30000 });
   await waitFrames(page, 3);
   const back = await api(page, 'state');
   assert.equal(back.steps, 40);

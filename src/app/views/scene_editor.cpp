@@ -26,18 +26,6 @@ bool hits(const Obstacle& o, const Vec2& p, double tolerance) {
                     o);
 }
 
-void translate(Obstacle& o, const Vec2& by) {
-  std::visit(Overloaded{[&](Disk& d) { d.center += by; },
-                        [&](PolygonObstacle& g) {
-                          for (Vec2& v : g.vertices) v += by;
-                        },
-                        [&](Wall& w) {
-                          w.a += by;
-                          w.b += by;
-                        }},
-             o);
-}
-
 Vec2 endpoint(const Config& q) { return Vec2(q[0], q[1]); }
 
 }  // namespace

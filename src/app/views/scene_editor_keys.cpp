@@ -155,15 +155,7 @@ bool SceneEditor::move_focused(Scene& scene, LabContext& ctx, const Options& opt
   Obstacle& o = scene.obstacles[static_cast<std::size_t>(selected_)];
   Obstacle moved = o;
   if (focus_handle_ < 0) {
-    std::visit(Overloaded{[&](Disk& d) { d.center += by; },
-                          [&](PolygonObstacle& g) {
-                            for (Vec2& v : g.vertices) v += by;
-                          },
-                          [&](Wall& w) {
-                            w.a += by;
-                            w.b += by;
-                          }},
-               moved);
+    translate(moved, by);
   } else if (auto* g = std::get_if<PolygonObstacle>(&moved)) {
     g->vertices[static_cast<std::size_t>(focus_handle_)] += by;
     if (*polygon_problem(g->vertices)) {

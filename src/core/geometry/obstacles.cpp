@@ -46,4 +46,16 @@ Box obstacle_bounds(const Obstacle& o) {
       o);
 }
 
+void translate(Obstacle& o, const Vec2& by) {
+  std::visit(Overloaded{[&](Disk& d) { d.center += by; },
+                        [&](PolygonObstacle& g) {
+                          for (Vec2& v : g.vertices) v += by;
+                        },
+                        [&](Wall& w) {
+                          w.a += by;
+                          w.b += by;
+                        }},
+             o);
+}
+
 }  // namespace csl

@@ -41,5 +41,7 @@ double polygon_clearance(const Obstacle& o, const Polygon& poly);
 
 /// Axis-aligned bounds of the obstacle.
 Box obstacle_bounds(const Obstacle& o);
+/// Moves the whole obstacle by `by` (a disk's centre, every vertex, both ends of a wall).
+void translate(Obstacle& o, const Vec2& by);
 
 }  // namespace csl
