@@ -1345,13 +1345,15 @@
         if (document.activeElement !== canvas) canvas.focus({ preventScroll: true });
       });
       canvas.addEventListener('contextmenu', (e) => e.preventDefault());
-      // Tab leaves the lab, as it leaves any control: SDL cancels every Tab on the canvas (and
-      // ImGui would take it to step through its text fields), which made the canvas a keyboard
-      // trap. Stopped here, on the way down, neither sees it and the browser moves the focus on.
-      // The same for the textarea that takes typing while a field of the app has the keyboard.
+      // Tab leaves the lab, as it leaves any control: SDL cancels every Tab on the canvas, which
+      // made the canvas a keyboard trap. Stopped here, on the way down, SDL never sees it and the
+      // browser moves the focus on (to the lab's own HTML, lab-access.js, then the page). While
+      // one of the app's text fields has the keyboard, its proxy has the focus and passes its
+      // keys to the canvas as untrusted events: those go through, so Tab steps between the
+      // app's fields (Esc leaves the field, and then Tab leaves the lab).
       root.addEventListener('keydown', (e) => {
-        if (e.key !== 'Tab' || e.ctrlKey || e.altKey || e.metaKey) return;
-        if (e.target === canvas || e.target === canvas.cslText) e.stopPropagation();
+        if (e.key !== 'Tab' || e.ctrlKey || e.altKey || e.metaKey || !e.isTrusted) return;
+        if (e.target === canvas && document.activeElement === canvas) e.stopPropagation();
       }, { capture: true });
       // SDL's wheel listener on the canvas cancels the event (no page scroll). Until the lab has
       // focus the event stops here, on the way down: SDL never sees it and the page scrolls.
