@@ -256,7 +256,7 @@ void App::compact_bar() {
   if (!menu_done) lesson_menu(-1);
   // Row 3: the tabs, each half the width (or, on a wide screen, the start of a row that holds
   // the playback strip and the tools too).
-  const bool wide = ImGui::GetContentRegionAvail().x >= kCompactRowWidth;
+  const bool wide = strip_wide();
   const float w = wide ? 84.0f : 0.5f * (ImGui::GetContentRegionAvail().x - spacing);
   const struct {
     Tab tab;
