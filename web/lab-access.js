@@ -60,6 +60,7 @@ class CSpaceLabAccess {
       ['step', 'Step', () => this.api.step()],
       ['phase', 'Finish phase', () => this.api.call('finish_phase', { background: true })],
       ['run', 'Run all', () => this.api.call('run', { background: true })],
+      ['play', 'Play', () => this.api.call('play', { on: !this.seen.playing })],
       ['reset', 'Reset', () => this.api.reset()],
     ]) {
       const b = this.stepButtons[key] = this.el('button', { type: 'button', text: label }, this.steps);
@@ -69,14 +70,50 @@ class CSpaceLabAccess {
         if (b.getAttribute('aria-disabled') !== 'true') this.act(call);
       });
     }
+    this.stepButtons.play.setAttribute('aria-pressed', 'false');  // a toggle: a reader says "pressed" while playing
+    // The speed of Play, as the app's slider (1 to 5000 steps a second).
+    const speedRow = this.el('div', { className: 'lab-access-param' }, this.steps);
+    this.el('label', { for: this.id + '-speed', text: 'Play speed (steps per second)' }, speedRow);
+    this.speed = this.el('input', { id: this.id + '-speed', type: 'number', min: '1', max: '5000', step: '1' }, speedRow);
+    this.speed.addEventListener('change', () => this.act(() => this.api.call('play', { speed: Number(this.speed.value) })));
     this.el('h3', { text: 'What the view shows' }, s);
     this.description = this.el('p', { className: 'lab-access-description', role: 'region',
                                       'aria-label': 'Description of the view' }, s);
     this.el('h3', { text: 'Latest event' }, s);
     // Polite: read out after what the reader is saying; at most one a second (announce()).
     this.live = this.el('p', { className: 'lab-access-log', 'aria-live': 'polite', 'aria-atomic': 'true' }, s);
+    this.buildDisplay(s);
     // After the canvas and the app's text proxy: the keyboard reaches it right after the canvas.
     this.root.appendChild(s);
+  }
+
+  // Display: the app's File > Display as two native selects (the page keeps the choice).
+  buildDisplay(s) {
+    this.el('h3', { text: 'Display' }, s);
+    const group = this.el('div', { className: 'lab-access-display', role: 'group', 'aria-label': 'Display' }, s);
+    this.display = {};
+    for (const [key, label, options] of [
+      ['scheme', 'Colours', [['system', 'like the system'], ['light', 'light'], ['dark', 'dark']]],
+      ['contrast', 'Contrast', [['system', 'like the system'], ['normal', 'normal'], ['high', 'high']]],
+    ]) {
+      const row = this.el('div', { className: 'lab-access-param' }, group);
+      const id = `${this.id}-${key}`;
+      this.el('label', { for: id, text: label }, row);
+      const select = this.display[key] = this.el('select', { id }, row);
+      for (const [value, text] of options) this.el('option', { value, text }, select);
+      select.addEventListener('change', () => this.act(() => {
+        this.api.pageState({ [key]: select.value });
+        const action = this.api.module && this.api.module.cslPageAction;
+        if (typeof action === 'function') action('look');  // remembered, and the page follows
+      }));
+    }
+  }
+
+  showDisplay(state) {
+    for (const key of ['scheme', 'contrast']) {
+      const select = this.display[key];
+      if (state[key] && select.value !== state[key] && document.activeElement !== select) select.value = state[key];
+    }
   }
 
   act(call) {
@@ -102,6 +139,7 @@ class CSpaceLabAccess {
       specs = this.api.paramSpecs();
       text = this.api.describe();
       log = this.api.log();
+      this.showDisplay(this.api.pageState());
     } catch {
       return;  // a lab that stopped: its shell shows why; the section keeps its last state
     }
@@ -247,15 +285,20 @@ class CSpaceLabAccess {
   // ---- steps ---------------------------------------------------------------------------------
 
   showSteps(stepping, busy) {
-    const key = [stepping.controls, stepping.steps, stepping.finished, busy].join();
+    const key = [stepping.controls, stepping.steps, stepping.finished, busy, stepping.playing, stepping.speed].join();
     if (key === this.seen.steps) return;
     this.seen.steps = key;
+    this.seen.playing = !!stepping.playing;
     this.steps.hidden = this.stepHeading.hidden = !stepping.controls;
     const b = this.stepButtons;
     const off = (button, yes) => button.setAttribute('aria-disabled', String(yes));
     off(b.back, busy || stepping.steps === 0);
     for (const button of [b.step, b.phase, b.run]) off(button, busy || stepping.finished);
     off(b.reset, busy);
+    off(b.play, busy || (stepping.finished && !stepping.playing));
+    b.play.setAttribute('aria-pressed', String(!!stepping.playing));
+    if (typeof stepping.speed === 'number' && document.activeElement !== this.speed)
+      this.speed.value = String(Math.round(stepping.speed));
   }
 }
 

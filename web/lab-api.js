@@ -72,7 +72,7 @@ class CSpaceLabApi {
   bundledScenes() { return this.call('bundled_scenes'); }
   /** The colours that carry meaning, by role, and text colours on their backgrounds. */
   theme() { return this.call('theme'); }
-  /** The page state the app shows ({attached, minimal, reduced_motion, previous}); pageState({...}) changes it. */
+  /** The page state the app shows ({attached, minimal, reduced_motion, previous, scheme, contrast, look, ...}); pageState({...}) changes it. */
   pageState(changes = {}) { return this.call('page_state', changes); }
   /** Homework P1-P13: the list, a problem opened, an exercise (seed optional), an answer checked. */
   homework() { return this.call('homework'); }

@@ -91,6 +91,24 @@
   /** What makes two work records the same work (not when they were saved). */
   const workText = (r) => JSON.stringify({ config: r.config, current: r.current, lessons: r.lessons });
 
+  // The look the student chose in the app's File > Display ({scheme, contrast}; one per origin,
+  // every lab on it: a student who needs high contrast needs it in every lab they meet).
+  const LOOK = STORAGE_PREFIX + 'look';
+  const SCHEMES = ['system', 'light', 'dark'];
+  const CONTRASTS = ['system', 'normal', 'high'];
+  const storedLook = (look) => {
+    try {
+      if (look) return global.localStorage.setItem(LOOK, JSON.stringify(look));
+      const v = JSON.parse(global.localStorage.getItem(LOOK) || 'null');
+      const out = {};
+      if (v && SCHEMES.includes(v.scheme)) out.scheme = v.scheme;
+      if (v && CONTRASTS.includes(v.contrast)) out.contrast = v.contrast;
+      return out;
+    } catch {
+      return {};
+    }
+  };
+
   // ---- storage: one lab's keys, without the wasm (a lab that stopped still offers its work) --
 
   // Whether this browser saw the welcome (one flag per origin; no storage: never shown).
@@ -318,6 +336,40 @@
       return query.matches;
     }
 
+    /**
+     * What the browser prefers for the look, now and whenever it changes: dark colours
+     * (prefers-color-scheme) and more contrast (prefers-contrast: more, or forced colours as
+     * Windows' contrast themes set them). The app follows them unless the student chose.
+     */
+    watchLook() {
+      const queries = typeof matchMedia === 'function'
+        ? { dark: matchMedia('(prefers-color-scheme: dark)'), more: matchMedia('(prefers-contrast: more)'),
+            forced: matchMedia('(forced-colors: active)') }
+        : null;
+      if (!queries) return {};
+      const now = () => ({ system_dark: queries.dark.matches, system_high_contrast: queries.more.matches || queries.forced.matches });
+      for (const q of Object.values(queries)) {
+        q.addEventListener('change', () => {
+          if (!this.dead) this.showLook(this.api.pageState(now()));
+        });
+      }
+      return now();
+    }
+
+    /** The lab's element says the look in use (data-look="dark high"): the page's dialogs follow it. */
+    showLook(state) {
+      if (!state || !state.look) return;
+      this.root.dataset.look = (state.look.dark ? 'dark' : 'light') + (state.look.high_contrast ? ' high' : '');
+    }
+
+    /** The look a link asks for (scheme=, contrast=) over the one the student chose before. */
+    lookChoice(values) {
+      const look = storedLook();
+      if (values.has('scheme') && SCHEMES.includes(values.get('scheme'))) look.scheme = values.get('scheme');
+      if (values.has('contrast') && CONTRASTS.includes(values.get('contrast'))) look.contrast = values.get('contrast');
+      return look;
+    }
+
     async init() {
       const api = this.api;
       let notes = [];
@@ -327,10 +379,11 @@
         this.installFrameHook();
         this.installInput();
         // A first visit without a link: the panel offers the homework map (once; "welcome-seen").
-        const welcome = this.options.ui !== 'minimal' && !U.hasState(U.parseConfig(this.options.config).values) &&
-                        welcomed() === null;
-        api.pageState({ attached: true, minimal: this.options.ui === 'minimal', welcome,
-                        reduced_motion: this.watchReducedMotion() });
+        const config = U.parseConfig(this.options.config).values;
+        const welcome = this.options.ui !== 'minimal' && !U.hasState(config) && welcomed() === null;
+        this.showLook(api.pageState({ attached: true, minimal: this.options.ui === 'minimal', welcome,
+                                      reduced_motion: this.watchReducedMotion(), ...this.watchLook(),
+                                      ...this.lookChoice(config) }));
         api.module.cslPageAction = (name) => setTimeout(() => this.action(name), 0);
         notes = await this.start();
       } catch (e) {
@@ -544,7 +597,7 @@
         }
         part((e) => `problem ${U.excerpt(raw)} (${e.message})`, () => api.call('open_problem', args));
         for (const key of values.keys())
-          if (!['problem', 'seed', 'ui', 'id'].includes(key)) problems.push(`${key} (a problem link sets up its own)`);
+          if (key !== 'problem' && key !== 'seed' && !U.PRESENTATION.has(key)) problems.push(`${key} (a problem link sets up its own)`);
         return problems;
       }
       let lesson = this.lessons[0].id;  // the app's first lesson, as on a fresh start
@@ -589,6 +642,10 @@
       }
       if (values.has('ui') && !['full', 'minimal'].includes(values.get('ui')))
         problems.push(`ui ${U.excerpt(values.get('ui'))} (full or minimal)`);
+      if (values.has('scheme') && !SCHEMES.includes(values.get('scheme')))
+        problems.push(`scheme ${U.excerpt(values.get('scheme'))} (${SCHEMES.join(', ')})`);
+      if (values.has('contrast') && !CONTRASTS.includes(values.get('contrast')))
+        problems.push(`contrast ${U.excerpt(values.get('contrast'))} (${CONTRASTS.join(', ')})`);
       if (values.has('id') && !U.ID.test(values.get('id')))
         problems.push(`id ${U.excerpt(values.get('id'))} (letters, digits, - and _)`);
       return problems;
@@ -920,6 +977,11 @@
         if (history) return await this.restoreEntry(this.historyIds[Number(history[1])]);
         switch (name) {
           case 'welcome-seen': return welcomed(true);
+          case 'look': {  // File > Display: keep the choice for every later visit
+            const state = this.api.pageState({});
+            this.showLook(state);
+            return storedLook({ scheme: state.scheme, contrast: state.contrast });
+          }
           case 'share': return await this.share();
           case 'embed': return await this.embed();
           case 'import': return this.pickFile();

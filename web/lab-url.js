@@ -4,7 +4,9 @@
 //
 // The same syntax configures an instance on a page: <div data-lab="lesson=collision&amp;scene=p12">.
 // ?problem=P10[&seed=S] opens a homework problem instead.
-// Keys: lesson, scene, steps, ui, id, and the lesson's own parameters (whatever its params()
+// scheme=system|light|dark and contrast=system|normal|high set the look for this visit (the
+// student's own choice in File > Display is kept by the page; the browser's preference otherwise).
+// Keys: lesson, scene, steps, ui, id, scheme, contrast, and the lesson's own parameters (whatever its params()
 // reports: samples, neighbors, checker, seed for Step PRM; grid_n, p, q for Collision checking).
 // Values are never evaluated: numbers must match a number's syntax, lists are comma-separated
 // numbers, strings go to the app, which checks them. A scene is a bundled scene's name or
@@ -22,7 +24,9 @@
     entries: 64,             // key=value pairs
     depth: 64,               // levels of JSON nesting (the app's kMaxJsonDepth, src/core/scene/scene.hpp)
   });
-  const RESERVED = new Set(['lesson', 'scene', 'steps', 'ui', 'id', 'problem']);
+  const RESERVED = new Set(['lesson', 'scene', 'steps', 'ui', 'id', 'problem', 'scheme', 'contrast']);
+  // Keys that say how the lab looks or where it saves, not what it shows: they are no state.
+  const PRESENTATION = new Set(['ui', 'id', 'scheme', 'contrast']);
   const KEY = /^[a-z][a-z0-9_]{0,31}$/;
   const NAME = /^[a-z0-9][a-z0-9-]{0,39}$/;
   const NUMBER = /^-?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d{1,3})?$/;
@@ -103,16 +107,16 @@
     return { values, problems };
   }
 
-  /** Whether parsed values hold state (anything besides ui and id). */
+  /** Whether parsed values hold state (anything besides ui, id, scheme and contrast). */
   function hasState(values) {
-    for (const key of values.keys()) if (key !== 'ui' && key !== 'id') return true;
+    for (const key of values.keys()) if (!PRESENTATION.has(key)) return true;
     return false;
   }
 
-  /** A short key for the state part of parsed values (not ui, not id): "length:hash". */
+  /** A short key for the state part of parsed values (not ui, id, scheme, contrast): "length:hash". */
   function stateKey(values) {
     const parts = [];
-    for (const [k, v] of values) if (k !== 'ui' && k !== 'id') parts.push(k + '=' + v);
+    for (const [k, v] of values) if (!PRESENTATION.has(k)) parts.push(k + '=' + v);
     const text = parts.join('&');
     return text.length + ':' + hash(text);
   }
@@ -312,7 +316,7 @@
   }
 
   const api = Object.freeze({
-    LIMITS, RESERVED, NAME, STEPS, ID,
+    LIMITS, RESERVED, PRESENTATION, NAME, STEPS, ID,
     excerpt, sizeText, parseConfig, hasState, stateKey, parseValue, formatValue, encodeValue,
     encodeScene, decodeScene, tooDeep, buildQuery, hash, toBase64Url, fromBase64Url,
   });

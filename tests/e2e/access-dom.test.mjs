@@ -113,6 +113,31 @@ test('parallel DOM: lessons, parameters both ways, steps into the live region, t
     await page.waitForFunction(([s, text]) => document.querySelector(`${s} [aria-live="polite"]`).textContent === text,
                                [SEL, newest.text], { timeout: 5000 });
 
+    // (c') Play from the DOM: a toggle (aria-pressed), at the speed typed beside it; while it
+    // plays the live region changes at most once a second however fast the steps come.
+    const speed = page.locator(`${SEL} input[id$="-speed"]`);
+    await speed.fill('200');
+    await speed.dispatchEvent('change');
+    assert.equal((await api(page, 'status')).stepping.speed, 200);
+    const play = page.locator(`${SEL} .lab-access-steps button:text-is("Play")`);
+    const heard = [];
+    await page.exposeFunction('heardLive', (t) => heard.push([Date.now(), t]));
+    await page.evaluate((s) => new MutationObserver(() => window.heardLive(document.querySelector(`${s} [aria-live="polite"]`).textContent))
+      .observe(document.querySelector(`${s} [aria-live="polite"]`), { childList: true, characterData: true, subtree: true }), SEL);
+    const atStart = (await api(page, 'status')).stepping.steps;
+    await press(page, `${SEL} .lab-access-steps button:text-is("Play")`);
+    await page.waitForFunction(() => window.cspacelab.status().stepping.playing === true);
+    await page.waitForFunction((s) => document.querySelector(`${s} .lab-access-steps button[aria-pressed]`).getAttribute('aria-pressed') === 'true', SEL);
+    await page.waitForTimeout(2500);
+    await play.click();  // pause
+    await page.waitForFunction(() => window.cspacelab.status().stepping.playing === false);
+    const played = (await api(page, 'status')).stepping.steps - atStart;
+    assert.ok(played > 50, `it played: ${played} steps in about 2.5 s`);
+    assert.ok(heard.length >= 2, `the live region spoke while playing: ${heard.length}`);
+    for (let i = 1; i < heard.length; ++i)
+      assert.ok(heard[i][0] - heard[i - 1][0] >= 900, `at most one announcement a second (${heard[i][0] - heard[i - 1][0]} ms)`);
+    assert.equal(await play.getAttribute('aria-pressed'), 'false');
+
     // (d) Run all: the description states the path and its length as state() has it.
     await press(page, `${SEL} .lab-access-steps button:text-is("Run all")`);
     await page.waitForFunction(() => { const s = window.cspacelab.status(); return !s.busy && s.stepping.finished; });
@@ -126,7 +151,9 @@ test('parallel DOM: lessons, parameters both ways, steps into the live region, t
     await screenshot(page, 'access-dom-run.png');
 
     // Tab leaves the lab from the section's last control: no trap.
-    await page.locator(`${SEL} .lab-access-steps button:text-is("Reset")`).focus();
+    const focusable = await page.locator(`${SEL} :is(button, input, select)`).all();
+    await focusable.at(-1).focus();  // the last: Display's contrast
+    assert.match(await page.evaluate(() => document.activeElement.id), /-contrast$/);
     await page.keyboard.press('Tab');
     assert.equal(await page.evaluate(() => document.querySelector('.lab').contains(document.activeElement)), false);
   }));

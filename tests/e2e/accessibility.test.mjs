@@ -99,3 +99,34 @@ test('the course page: no serious or critical axe violation, each lesson in its 
   assert.deepEqual(errors, [], 'no console errors');
   expectNone(found);
 }));
+
+test('the dark look and high contrast: the page\'s dialogs and the parallel DOM pass axe in each',
+  () => withBrowser(async ({ browser, url }) => {
+  // The browser's own preferences (what a student's system sets), not the app's menu: the
+  // page must pick them up by itself.
+  const found = [];
+  for (const [name, media] of [['dark', { colorScheme: 'dark' }], ['high contrast', { contrast: 'more' }],
+                               ['dark, high contrast', { colorScheme: 'dark', contrast: 'more' }]]) {
+    const context = await newAxeContext(browser);
+    await context.addInitScript(() => localStorage.setItem('cspacelab:v1:welcomed', '1'));
+    const page = await context.newPage();
+    await page.emulateMedia(media);
+    const errors = collectErrors(page);
+    await openLab(page, url + '?lesson=step-prm');
+    const look = await page.evaluate(() => window.cspacelab.pageState().look);
+    assert.deepEqual(look, { dark: !!media.colorScheme, high_contrast: !!media.contrast }, `${name}: the app follows the browser`);
+    assert.equal(await page.evaluate(() => document.querySelector('.lab').dataset.look),
+                 (media.colorScheme ? 'dark' : 'light') + (media.contrast ? ' high' : ''));
+    await check(page, name, found);
+    // The parallel DOM shown (keyboard inside it), then a dialog.
+    await page.focus('.lab-access button');
+    await check(page, `${name}, the parallel DOM shown`, found);
+    await page.evaluate(() => window.cspacelab.module.cslPageAction('share'));
+    await page.waitForSelector('.lab-dialog[role=dialog]');
+    await screenshot(page, `accessibility-${name.replace(/[ ,]+/g, '-')}-share.png`);
+    await check(page, `${name}, share dialog`, found);
+    assert.deepEqual(errors, [], `${name}: no console errors`);
+    await context.close();
+  }
+  expectNone(found);
+}));

@@ -47,8 +47,24 @@ test('the colour maths: published values', () => {
   assert.ok(distance(red, green, 'tritanopia') > distance(red, green) / 2);
 });
 
-test('the theme: meaning stays apart for every dichromacy; text reads at 4.5:1', () => withPage(async ({ page }) => {
-  const { colours: c, components, text } = await api(page, 'theme');
+const LOOKS = [['light', {}], ['dark', { scheme: 'dark' }], ['light, high contrast', { contrast: 'high' }],
+               ['dark, high contrast', { scheme: 'dark', contrast: 'high' }]];
+
+test('the theme, in every look: meaning stays apart for every dichromacy; text reads at 4.5:1', () => withPage(async ({ page }) => {
+  const seen = new Set();
+  for (const [look, choice] of LOOKS) {
+    await api(page, 'page_state', { scheme: 'system', contrast: 'system', ...choice });
+    await waitFrames(page, 2);  // the look changes between frames
+    const theme = await api(page, 'theme');
+    assert.deepEqual(theme.look, { dark: !!choice.scheme, high_contrast: !!choice.contrast }, `${look}: in use`);
+    seen.add(JSON.stringify(theme.colours));
+    console.log(`# ${look}:`);
+    checkTheme(theme, look);
+  }
+  assert.equal(seen.size, LOOKS.length, 'each look has colours of its own');
+}));
+
+function checkTheme({ colours: c, components, text }, look) {
   const canvas = c.canvas;
   const onCanvas = (x) => over(x, canvas);
   const obstacle = onCanvas(c.obstacle);
@@ -75,20 +91,25 @@ test('the theme: meaning stays apart for every dichromacy; text reads at 4.5:1',
     console.log(`# ${p.name}: ΔE00 ${p.de.toFixed(1)} (${p.kind})`);
   for (const t of text.map((x) => ({ ...x, ratio: contrast(x.fg, x.bg) })).sort((x, y) => x.ratio - y.ratio).slice(0, 6))
     console.log(`# ${t.name}: ${t.ratio.toFixed(2)}:1`);
-  assert.deepEqual(tooClose(pairs), [], `pairs closer than ΔE00 ${MIN_DE}`);
+  assert.deepEqual(tooClose(pairs), [], `${look}: pairs closer than ΔE00 ${MIN_DE}`);
 
   const faint = [['start', c.start], ['goal', c.goal], ['free', c.free], ['in collision', c.hit], ['robot', c.robot],
-                 ['an obstacle', obstacle], ['the path\'s outline', onCanvas(c.path_outline)],
+                 ['an obstacle', obstacle],
                  ...components.map((x, i) => [`roadmap component ${i}`, x])]
     .map(([name, x]) => [name, contrast(onCanvas(x), canvas)]).filter(([, r]) => r < MIN_GRAPHIC)
     .map(([name, r]) => `${name} on the canvas: ${r.toFixed(2)}:1`);
-  assert.deepEqual(faint, [], `marks under ${MIN_GRAPHIC}:1 on the canvas`);
+  assert.deepEqual(faint, [], `${look}: marks under ${MIN_GRAPHIC}:1 on the canvas`);
+  // The path stands out from the canvas and from an obstacle under it: by its own colour or by
+  // its outline (orange on white is 2.1:1, so the light look's dark outline does that there).
+  const standsOut = (bg) => Math.max(contrast(onCanvas(c.path), bg), contrast(over(c.path_outline, bg), bg));
+  for (const [name, bg] of [['the canvas', canvas], ['an obstacle', obstacle]])
+    assert.ok(standsOut(bg) >= MIN_GRAPHIC, `${look}: the path or its outline at ${MIN_GRAPHIC}:1 on ${name}: ${standsOut(bg).toFixed(2)}`);
 
   assert.ok(text.length >= 15, 'the text colours are listed');
   const unreadable = text.map((t) => ({ ...t, ratio: contrast(t.fg, t.bg) })).filter((t) => t.ratio < MIN_TEXT)
     .map((t) => `${t.name}: rgb(${t.fg.slice(0, 3)}) on rgb(${t.bg.slice(0, 3)}) is ${t.ratio.toFixed(2)}:1`);
-  assert.deepEqual(unreadable, [], `text under ${MIN_TEXT}:1`);
-}));
+  assert.deepEqual(unreadable, [], `${look}: text under ${MIN_TEXT}:1`);
+}
 
 test('on the screen: the start, goal and path pixels as drawn stay apart for every dichromacy',
   () => withPage({ open: '?lesson=step-prm&scene=wall-gap&samples=120&neighbors=k:8&seed=7' }, async ({ page, browser }) => {

@@ -551,7 +551,7 @@ class AnalysisLesson : public Lesson, private NoSteps {
     n_lo = std::pow(10.0, std::floor(std::log10(std::max(n_lo, 1.0))));
     Plot& plot = plot_;
     plot.begin("##bound-plot", size, {n_lo, n_hi, true, "samples n (log scale)"}, {1e-4, 1e3, true, "P(failure)"});
-    plot.shade_above(1.0, theme::rgba(0, 0, 0, 18), "above 1: the bound says nothing");
+    plot.shade_above(1.0, theme::with_alpha(theme::kInk, 18), "above 1: the bound says nothing");
     std::vector<double> xs, path_bound, handout, refined;
     const std::optional<TilingBound> cube = tiling();
     constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
@@ -815,8 +815,8 @@ class AnalysisLesson : public Lesson, private NoSteps {
                         p[2] > 0 ? theme::with_alpha(theme::kGreen, 160) : theme::with_alpha(theme::kVermillion, 160));
     }
     // The wall, the rays through the opening's ends, the point.
-    v.draw_segment(Vec2(0.5, 0), Vec2(0.5, lo), theme::kBlack, 4.0f);
-    v.draw_segment(Vec2(0.5, hi), Vec2(0.5, 1), theme::kBlack, 4.0f);
+    v.draw_segment(Vec2(0.5, 0), Vec2(0.5, lo), theme::kInk, 4.0f);
+    v.draw_segment(Vec2(0.5, hi), Vec2(0.5, 1), theme::kInk, 4.0f);
     for (double end : {lo, hi}) {
       const double far_y = end + (end - p9_y_) / run * 0.5;
       v.draw_segment(Vec2(p9_x_, p9_y_), Vec2(1.0, far_y), theme::with_alpha(theme::kBlue, 150), 1.5f);

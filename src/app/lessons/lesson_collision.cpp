@@ -336,7 +336,7 @@ class CollisionLesson : public Lesson, private Stepper {
   static void dot(ImDrawList* dl, ImVec2 at, bool free) {
     dl->AddCircleFilled(at, 5.0f, free ? theme::kFree : theme::kHit, 16);
     if (free) return;
-    const ImU32 white = theme::rgba(255, 255, 255);
+    const ImU32 white = theme::kCanvasBg;  // a halo that separates a marker from what is under it
     dl->AddLine(ImVec2(at.x - 2.5f, at.y - 2.5f), ImVec2(at.x + 2.5f, at.y + 2.5f), white, 1.5f);
     dl->AddLine(ImVec2(at.x - 2.5f, at.y + 2.5f), ImVec2(at.x + 2.5f, at.y - 2.5f), white, 1.5f);
   }
@@ -362,7 +362,7 @@ class CollisionLesson : public Lesson, private Stepper {
     const Robot& robot = scene_.robot;
     if (!arm_) {
       view_.draw_segment(Vec2(scene_.start[0], scene_.start[1]), Vec2(scene_.goal[0], scene_.goal[1]),
-                         theme::rgba(60, 60, 60), 1.5f);
+                         theme::kInk, 1.5f);
     } else {
       draw_robot(view_, robot, scene_.start, theme::kStart, 3.0f);
       draw_robot(view_, robot, scene_.goal, theme::kGoal, 3.0f);

@@ -41,9 +41,9 @@ constexpr ImU32 kQ1 = theme::kBlue;
 constexpr ImU32 kQ2 = theme::kVermillion;
 constexpr ImU32 kShortArc = theme::kOrange;
 constexpr ImU32 kLongArc = theme::rgba(86, 180, 233, 110);  // sky blue, faint
-constexpr ImU32 kSegment = theme::rgba(40, 40, 48);
+const ImU32& kSegment = theme::kInk;
 constexpr ImU32 kClosest = theme::kPurple;
-constexpr ImU32 kGuide = theme::rgba(120, 120, 120);
+const ImU32& kGuide = theme::kFaint;
 constexpr ImU32 kMeetColour = theme::kVermillion;
 
 const char* const kS1Hint =
@@ -100,7 +100,7 @@ void boxed_text(ImDrawList* dl, ImVec2 at, ImU32 colour, const std::string& text
   at.x = std::max(lo.x + 4.0f, std::min(at.x, hi.x - size.x - 4.0f));
   at.y = std::max(lo.y + 2.0f, std::min(at.y, hi.y - size.y - 2.0f));
   dl->AddRectFilled(ImVec2(at.x - 3, at.y - 1), ImVec2(at.x + size.x + 3, at.y + size.y + 1),
-                    theme::rgba(255, 255, 255, 225), 3.0f);
+                    theme::kLabelBox, 3.0f);
   dl->AddText(at, colour, text.c_str());
 }
 // The same, centred on a point.
@@ -423,13 +423,13 @@ class DistancesLesson : public Lesson {
     if (a.kind == S1Case::General) {
       arc(v, a.wrapped1, other, kLongArc, 5.0f);
       arc(v, a.wrapped1, turn, kShortArc, 8.0f);
-      arc_label(v, a.wrapped1 + 0.5 * turn, "d = " + num(a.distance), theme::rgba(140, 90, 0));
-      arc_label(v, a.wrapped1 + 0.5 * other, "2π − d = " + num(kTwoPi - a.distance), theme::rgba(40, 110, 150));
+      arc_label(v, a.wrapped1 + 0.5 * turn, "d = " + num(a.distance), theme::kTextAmount);
+      arc_label(v, a.wrapped1 + 0.5 * other, "2π − d = " + num(kTwoPi - a.distance), theme::kTextKey);
     } else if (a.kind == S1Case::Antipodal) {
       dashed_arc(v, a.wrapped1, turn);
       dashed_arc(v, a.wrapped1, other);
-      arc_label(v, a.wrapped1 + 0.5 * turn, "π", theme::rgba(140, 90, 0));
-      arc_label(v, a.wrapped1 + 0.5 * other, "π", theme::rgba(140, 90, 0));
+      arc_label(v, a.wrapped1 + 0.5 * turn, "π", theme::kTextAmount);
+      arc_label(v, a.wrapped1 + 0.5 * other, "π", theme::kTextAmount);
     }
     // The unit vectors (cos q, sin q): the first columns of R(q1) and R(q2).
     for (int which = 0; which < 2; ++which) {
@@ -502,7 +502,7 @@ class DistancesLesson : public Lesson {
       dl->AddCircle(c, size, colour, 32, 4.0f);
     } else {
       dl->AddCircleFilled(c, size, colour, 24);
-      dl->AddCircle(c, size, theme::rgba(255, 255, 255), 24, 2.0f);
+      dl->AddCircle(c, size, theme::kCanvasBg, 24, 2.0f);
     }
     const ImVec2 at = v.to_screen(Vec2(1.3 * std::cos(angle), 1.3 * std::sin(angle)));
     boxed_text_centred(dl, ImVec2(at.x, at.y + label_dy), colour, std::string(label) + " = " + num(angle));
@@ -692,11 +692,11 @@ class DistancesLesson : public Lesson {
     if (s.where == SegmentDiskCase::Interior && length > v.pixels(12.0f)) right_angle(v, s);
     // c, labelled with t.
     dl->AddCircleFilled(v.to_screen(s.closest), 6.0f, kClosest, 16);
-    dl->AddCircle(v.to_screen(s.closest), 6.0f, theme::rgba(255, 255, 255), 16, 1.5f);
+    dl->AddCircle(v.to_screen(s.closest), 6.0f, theme::kCanvasBg, 16, 1.5f);
     // The handles.
     marker(v, s.p1, kQ1, "p₁", Drag::P1);
     marker(v, s.p2, theme::kGreen, "p₂", Drag::P2);
-    marker(v, s.q, theme::rgba(70, 70, 80), "q", Drag::Centre);
+    marker(v, s.q, theme::kLabel, "q", Drag::Centre);
     // Labels last, over everything, each pushed away from what it would cover: c's beyond c from
     // q, t*'s beyond the foot from c, d's across the line q - c on the side away from the foot.
     const ImVec2 cs = v.to_screen(s.closest), qs = v.to_screen(s.q), fs = v.to_screen(s.foot);
@@ -710,7 +710,7 @@ class DistancesLesson : public Lesson {
       ImVec2 across(-along.y, along.x);
       const bool towards_foot = foot_shown && (fs.x - mid.x) * across.x + (fs.y - mid.y) * across.y > 0.0f;
       if (towards_foot || (!foot_shown && across.x < 0.0f)) across = ImVec2(-across.x, -across.y);
-      boxed_text_beside(dl, mid, across, 8.0f, theme::rgba(140, 90, 0), "d = " + num(s.distance));
+      boxed_text_beside(dl, mid, across, 8.0f, theme::kTextAmount, "d = " + num(s.distance));
     } else if (s.meets) {
       boxed_text(dl, ImVec2(qs.x + 12, qs.y + 10), kMeetColour, "meets: d = 0, η = " + num(s.lab_clearance));
     }

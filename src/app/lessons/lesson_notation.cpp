@@ -66,7 +66,7 @@ const char* const kBaseNames[] = {"fixed", "planar, sliding only", "planar, slid
                                   "spatial, free"};
 const char* const kBaseTokens[] = {"fixed", "planar-translating", "planar", "spatial-translating", "spatial"};
 
-const ImU32 kInk = theme::rgba(40, 40, 48);
+const ImU32& kInk = theme::kInk;
 const ImU32 kMotion = theme::kOrange;  // arrows: how the robot moves
 
 ImVec2 add(ImVec2 a, ImVec2 b) { return ImVec2(a.x + b.x, a.y + b.y); }
@@ -459,7 +459,7 @@ class NotationLesson : public Lesson {
     for (const char* line : lines) {
       if (!*line) continue;
       dl->AddRectFilled(ImVec2(f.o.x + 4, y), ImVec2(f.o.x + 12 + std::min(wrap, font->CalcTextSizeA(fs, 1e9f, wrap, line).x), y + font->CalcTextSizeA(fs, 1e9f, wrap, line).y),
-                        theme::rgba(255, 255, 255, 220));
+                        theme::with_alpha(theme::kLabelBox, 220));
       caption(dl, ImVec2(f.o.x + 8, y), theme::kLabel, line, wrap);
       y += font->CalcTextSizeA(fs, 1e9f, wrap, line).y;
     }

@@ -49,6 +49,7 @@ constexpr double kSliceStep = 0.02;  // rad: how far the angle turns before a pl
 constexpr float kForcePixels = 250.0f;  // arrow pixels per unit of force: the largest pull (0.2) is 50 px
 const ImU32 kAttract = theme::kGreen;
 const ImU32 kRepel = theme::kVermillion;
+// Over the heat map (light yellow to brown) in every look: dark ink reads on all of it.
 const ImU32 kTotal = theme::rgba(30, 30, 30);
 const ImU32 kRing = theme::with_alpha(theme::kBlue, 200);
 const ImU32 kIso = theme::rgba(60, 40, 20, 110);
@@ -922,7 +923,7 @@ class PotentialLesson : public Lesson, private Stepper {
       const ImVec2 ts = ImGui::CalcTextSize(name.c_str());
       const ImVec2 c(at.x + d.x * (10.0f + 0.5f * ts.x), at.y + d.y * (8.0f + 0.5f * ts.y));
       const ImVec2 lo(c.x - 0.5f * ts.x, c.y - 0.5f * ts.y);
-      dl->AddRectFilled(ImVec2(lo.x - 2, lo.y), ImVec2(lo.x + ts.x + 2, lo.y + ts.y), theme::rgba(255, 255, 255, 190), 3.0f);
+      dl->AddRectFilled(ImVec2(lo.x - 2, lo.y), ImVec2(lo.x + ts.x + 2, lo.y + ts.y), theme::with_alpha(theme::kLabelBox, 190), 3.0f);
       dl->AddText(lo, theme::kLabel, name.c_str());
     }
     ImGui::PopFont();
@@ -989,7 +990,7 @@ class PotentialLesson : public Lesson, private Stepper {
     draw_heat_map(cspace_view_, map_u_);
     draw_level_set(cspace_view_, map_u_.levels, kIso, 1.0f);
     // Over the level lines: the exact edges are the ones seen.
-    if (arm) draw_arm_cobstacles(cspace_view_, *map_, theme::rgba(96, 96, 104));
+    if (arm) draw_arm_cobstacles(cspace_view_, *map_, theme::with_alpha(theme::kCObstacle, 255));
     const Space& space = world_->space();
     if (descent_) {
       const auto& t = descent_->trajectory();
@@ -999,7 +1000,7 @@ class PotentialLesson : public Lesson, private Stepper {
     const Config q = shown();
     const ImVec2 at = cspace_view_.to_screen(Vec2(q[0], q[1]));
     cspace_view_.draw_list()->AddCircleFilled(at, 6.0f, world_->is_free(q) ? theme::kRobot : theme::kHit, 16);
-    cspace_view_.draw_list()->AddCircle(at, 6.0f, theme::rgba(255, 255, 255), 16, 2.0f);
+    cspace_view_.draw_list()->AddCircle(at, 6.0f, theme::kCanvasBg, 16, 2.0f);
     cspace_view_.pop_clip();
     const std::string text = arm ? "U(θ₁, θ₂) on the torus; grey: C-obstacles"
                                   : "U(x, y, θ) at θ = " + fmt("%.3f", cspace_key_) + "; grey: a vertex on an obstacle";

@@ -39,7 +39,6 @@ namespace {
 using json = nlohmann::json;
 
 constexpr std::size_t kTrail = 400;
-const ImU32 kCObstacle = theme::rgba(96, 96, 104, 210);
 
 enum class Exercise { None, Around, Shrink };
 
@@ -443,14 +442,14 @@ class TorusLesson : public Lesson {
     cspace_view_.draw_grid("θ₁", "θ₂");
     cspace_view_.push_clip();
     const bool stale = replay_pending() || session_.replaying();
-    if (!stale) draw_arm_cobstacles(cspace_view_, *map_, kCObstacle);  // else over the faded roadmap
+    if (!stale) draw_arm_cobstacles(cspace_view_, *map_, theme::kCObstacle);  // else over the faded roadmap
     const Space& space = world().space();
     refresh_labels();
     roadmap_layer_.draw(cspace_view_, space, prm().roadmap(), labels_, throttle_(session_.version(), session_.busy()));
     if (prm().solved()) draw_path(cspace_view_, space, prm().roadmap(), prm().path());
     if (stale) {  // the old roadmap faded under the C-obstacles as they are now
       draw_replay_pending(cspace_view_, session_.replaying() ? replaying_text(session_) : std::string());
-      draw_arm_cobstacles(cspace_view_, *map_, kCObstacle);
+      draw_arm_cobstacles(cspace_view_, *map_, theme::kCObstacle);
     }
     for (std::size_t i = 1; i < trail_.size(); ++i)
       draw_chart_segment(cspace_view_, space, trail_[i - 1], space.difference(trail_[i - 1], trail_[i]),
@@ -459,7 +458,7 @@ class TorusLesson : public Lesson {
     cspace_view_.draw_marker(Vec2(scene_.goal[0], scene_.goal[1]), theme::kGoal, "G", !world().is_free(scene_.goal));
     const ImVec2 at = cspace_view_.to_screen(Vec2(q_[0], q_[1]));
     cspace_view_.draw_list()->AddCircleFilled(at, 6.0f, world().is_free(q_) ? theme::kRobot : theme::kHit, 16);
-    cspace_view_.draw_list()->AddCircle(at, 6.0f, theme::rgba(255, 255, 255), 16, 2.0f);
+    cspace_view_.draw_list()->AddCircle(at, 6.0f, theme::kCanvasBg, 16, 2.0f);
     cspace_view_.pop_clip();
     editor_.draw_endpoint_focus(cspace_view_, scene_);  // S or G with the keyboard's focus
 

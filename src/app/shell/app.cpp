@@ -130,7 +130,9 @@ void App::register_api() {
                 // What the page's step buttons (web/lab-access.js) need: whether the lesson steps, where.
                 {"stepping", {{"controls", shows_controls(*lesson_)},
                               {"steps", stepping(*lesson_).steps()},
-                              {"finished", stepping(*lesson_).finished()}}}};
+                              {"finished", stepping(*lesson_).finished()},
+                              {"playing", ctx_.playback.playing},
+                              {"speed", ctx_.playback.steps_per_second}}}};
   });
   api.add("lessons", "the lessons: [{id, name, category, open}] (open: started, has state)", [this](const json&) {
     json out = json::array();
@@ -165,6 +167,23 @@ void App::register_api() {
     stepping(*lesson_).run_to(std::max(0L, stepping(*lesson_).wanted_steps() - count_arg(args, "count", 1, 10000000)));
     finish(*lesson_, args);
     return json(stepping(*lesson_).steps());
+  });
+  api.add("play", "Play or pause, and its speed: {on?: bool, speed?: steps/s in [1, 5000]} -> {playing, speed}", [this](const json& args) {
+    Playback& pb = ctx_.playback;
+    for (auto it = args.begin(); it != args.end(); ++it)
+      if (it.key() != "on" && it.key() != "speed") throw ApiError("unknown field \"" + it.key() + "\" (on, speed)");
+    if (args.contains("speed")) {
+      const json& v = args["speed"];
+      if (!v.is_number() || !(v.get<double>() >= 1.0 && v.get<double>() <= 5000.0)) throw ApiError("speed: steps per second in [1, 5000]");
+      pb.steps_per_second = v.get<float>();
+    }
+    if (args.contains("on")) {
+      if (!args["on"].is_boolean()) throw ApiError("on: true or false");
+      if (!shows_controls(*lesson_)) throw ApiError("this lesson has nothing to play");
+      // As the button: nothing to play at the end (Reset or Back first).
+      pb.playing = args["on"].get<bool>() && !stepping(*lesson_).finished();
+    }
+    return json{{"playing", pb.playing}, {"speed", pb.steps_per_second}};
   });
   api.add("run_to", "to step {steps} ({background: true}: over frames, see status().busy)", [this](const json& args) {
     stepping(*lesson_).run_to(count_arg(args, "steps", 0, 100000000));

@@ -2,6 +2,7 @@
 #include <string>
 
 #include "app/shell/app.hpp"
+#include "app/shell/theme.hpp"
 #include "app/shell/fonts.hpp"
 #include "app/shell/input_mode.hpp"
 #include "app/shell/panel.hpp"
@@ -50,6 +51,7 @@ json rect_json(const std::string& name, ImVec2 min, ImVec2 max) {
 }  // namespace
 
 void App::frame() {
+  theme::apply_requested_look();  // a Display choice or the page's preference, from this frame on
   web::begin_controls();
   // A finger gets more room around every widget, and a scroll bar it can hold.
   ImGuiStyle& style = ImGui::GetStyle();

@@ -13,8 +13,6 @@ namespace csl::app {
 using json = nlohmann::json;
 
 namespace {
-const ImVec4 kRight(0.0f, 0.42f, 0.28f, 1.0f);
-const ImVec4 kWrong(0.66f, 0.24f, 0.0f, 1.0f);
 
 // Text with line breaks, each line wrapped at spaces only (numbers stay whole).
 void paragraphs(const std::string& text) {
@@ -47,6 +45,8 @@ void boxed(ImU32 colour, Body body) {
   const float left = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMin().x;
   const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
   dl->AddRectFilled(ImVec2(left, lo.y - pad), ImVec2(right, hi.y + pad), colour, 4.0f);
+  // High contrast: the tint is gone (white or black), an edge marks the card instead.
+  if (theme::look().high_contrast) dl->AddRect(ImVec2(left, lo.y - pad), ImVec2(right, hi.y + pad), theme::kInk, 4.0f);
   dl->ChannelsMerge();
 }
 
@@ -203,7 +203,7 @@ void HomeworkPanel::menu_button() {
 
 void HomeworkPanel::card(const std::string& lesson_id) {
   if (web::page().welcome && problem_.empty()) {
-    boxed(theme::rgba(232, 242, 255), [&] {
+    boxed(theme::kCardWelcome, [&] {
     // Short: a first visit's panel must still fit 1280 x 800 with it (tests/e2e/panel-layout).
     ImGui::TextWrapped("Welcome! Homework P1 to P13: each has a tool here, and an exercise the lab checks.");
     if (ImGui::Button("Open the homework map")) {
@@ -218,7 +218,7 @@ void HomeworkPanel::card(const std::string& lesson_id) {
     ImGui::Spacing();
   }
   if (!error_.empty()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, kWrong);
+    ImGui::PushStyleColor(ImGuiCol_Text, theme::vec4(theme::kTextBad));
     ImGui::TextWrapped("%s", error_.c_str());
     ImGui::PopStyleColor();
   }
@@ -227,7 +227,7 @@ void HomeworkPanel::card(const std::string& lesson_id) {
   if (!p || p->lesson != lesson_id) return;
 
   ImGui::PushID("homework");  // its Check and answer field apart from a lesson's own
-  boxed(theme::rgba(248, 245, 234), [&] { problem_body(*p); });
+  boxed(theme::kCardProblem, [&] { problem_body(*p); });
   ImGui::PopID();
   ImGui::Spacing();
 }
@@ -262,7 +262,7 @@ void HomeworkPanel::problem_body(const HomeworkProblem& problem) {
   }
   web::record_control("check");
   if (checked_) {
-    ImGui::PushStyleColor(ImGuiCol_Text, checked_->correct ? kRight : kWrong);
+    ImGui::PushStyleColor(ImGuiCol_Text, checked_->correct ? theme::vec4(theme::kTextGood) : theme::vec4(theme::kTextBad));
     ImGui::TextWrapped("%s", checked_->correct ? "Right." : "Not right yet.");
     ImGui::PopStyleColor();
     paragraphs(checked_->explanation);

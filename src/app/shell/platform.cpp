@@ -286,7 +286,8 @@ void Platform::frame_once() {
   const ImGuiIO& io = ImGui::GetIO();
   glViewport(0, 0, static_cast<int>(io.DisplaySize.x * io.DisplayFramebufferScale.x),
              static_cast<int>(io.DisplaySize.y * io.DisplayFramebufferScale.y));
-  glClearColor(0.94f, 0.94f, 0.93f, 1.0f);
+  const ImVec4 clear = ImGui::GetStyle().Colors[ImGuiCol_WindowBg];  // behind everything: the look's panel
+  glClearColor(clear.x, clear.y, clear.z, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   SDL_GL_SwapWindow(window_);

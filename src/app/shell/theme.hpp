@@ -23,52 +23,96 @@ inline constexpr ImU32 kVermillion = rgba(213, 94, 0);
 inline constexpr ImU32 kPurple = rgba(204, 121, 167);
 inline constexpr ImU32 kBlack = rgba(0, 0, 0);
 
-// Roles.
-inline constexpr ImU32 kCanvasBg = rgba(255, 255, 255);
-inline constexpr ImU32 kGridMinor = rgba(232, 232, 232);
-inline constexpr ImU32 kGridMajor = rgba(200, 200, 200);
-inline constexpr ImU32 kFrame = rgba(90, 90, 90);
-inline constexpr ImU32 kObstacleFill = rgba(96, 96, 104, 200);
-inline constexpr ImU32 kObstacleEdge = rgba(40, 40, 48);
-inline constexpr ImU32 kStart = kGreen;
-inline constexpr ImU32 kGoal = kVermillion;
-inline constexpr ImU32 kPreview = kBlue;
-inline constexpr ImU32 kLabel = rgba(70, 70, 70);
-inline constexpr ImU32 kSelectedFill = rgba(0, 114, 178, 110);
-inline constexpr ImU32 kSelectedEdge = rgba(0, 114, 178);
-inline constexpr ImU32 kWarning = rgba(213, 94, 0);
-inline constexpr ImU32 kFree = kGreen;
-inline constexpr ImU32 kHit = kVermillion;
-inline constexpr ImU32 kPath = rgba(230, 159, 0);          // orange, wide
-inline constexpr ImU32 kPathOutline = rgba(60, 40, 0, 200);
-inline constexpr ImU32 kRobot = rgba(0, 114, 178);
-inline constexpr ImU32 kCurrent = rgba(204, 121, 167);     // the step being shown
+// The look: light or dark, normal or high contrast. Each role below is the active look's
+// colour, read at draw time (set_look changes them all, and ImGui's style, between frames).
+struct Palette {
+  ImU32 canvas_bg, grid_minor, grid_major, frame, obstacle_fill, obstacle_edge, cobstacle;
+  ImU32 start, goal, preview, label, selected_fill, selected_edge, warning, free, hit;
+  ImU32 path, path_outline, robot, current;
+  ImU32 ink;        ///< the strongest stroke on the canvas (black on light, near white on dark)
+  ImU32 faint;      ///< guides and construction lines on the canvas
+  ImU32 label_box;  ///< the translucent box behind a label on the canvas
+  // Text in colour on the panel: each at least 4.5:1 there (WCAG 2.1 AA, 1.4.3), as
+  // tests/e2e/colour.test.mjs checks through the `theme` command, in every look.
+  ImU32 text_good;    ///< a path found, a check passed
+  ImU32 text_bad;     ///< no path, a collision missed, stuck
+  ImU32 text_key;     ///< a headline figure
+  ImU32 text_amount;  ///< a distance being measured
+  ImU32 text_log;     ///< the event log's newest line
+  ImU32 text_notice;  ///< the one-line notice
+  ImU32 text_dim;     ///< secondary text (ImGui's TextDisabled)
+  ImU32 restore_button;  ///< "Restore my previous work" stands out
+  ImU32 card_welcome;    ///< the first visit's welcome box on the panel
+  ImU32 card_problem;    ///< the homework card on the panel (its text is the panel's)
+  /// Roadmap components' colours, cycled. The largest component is usually 0 (it holds the
+  /// start): the calm blue; then hues that stay at least CIEDE2000 10 apart from each other and
+  /// from the path for every dichromacy (Machado 2009), and 3:1 on the canvas.
+  ImU32 components[8];
+};
 
-// Text in colour on the panel (WindowBg, about (245, 245, 242)): each at least 4.5:1 there
-// (WCAG 2.1 AA, 1.4.3), as tests/e2e/colour.test.mjs checks through the `theme` command.
-inline constexpr ImU32 kTextGood = rgba(0, 115, 77);       // a path found, a check passed
-inline constexpr ImU32 kTextBad = rgba(179, 64, 0);        // no path, a collision missed, stuck
-inline constexpr ImU32 kTextKey = rgba(0, 77, 140);        // a headline figure
-inline constexpr ImU32 kTextAmount = rgba(140, 92, 0);     // a distance being measured
-inline constexpr ImU32 kTextLog = rgba(0, 89, 153);        // the event log's newest line
-inline constexpr ImU32 kTextNotice = rgba(153, 51, 0);     // the one-line notice
-inline constexpr ImU32 kTextDim = rgba(97, 97, 97);        // secondary text (ImGui's TextDisabled)
-inline constexpr ImU32 kRestoreButton = rgba(250, 219, 140);  // "Restore my previous work" stands out
+struct Look {
+  bool dark = false;
+  bool high_contrast = false;
+  bool operator==(const Look& o) const { return dark == o.dark && high_contrast == o.high_contrast; }
+};
+
+namespace detail {
+extern Palette g_active;  // constant-initialised (light) in theme.cpp, before any other static
+}  // namespace detail
+/// The palette of a look.
+const Palette& palette_of(Look look);
+
+/// The look in use; a new one now (palette and ImGui style: between frames), or from the next
+/// frame on (`apply_requested_look` at a frame's start: a menu or an API call asks mid-frame).
+Look look();
+void set_look(Look look);
+void request_look(Look look);
+void apply_requested_look();
+
+// Roles, named as constants because they are read like constants: they change only with the look.
+inline const ImU32& kCanvasBg = detail::g_active.canvas_bg;
+inline const ImU32& kGridMinor = detail::g_active.grid_minor;
+inline const ImU32& kGridMajor = detail::g_active.grid_major;
+inline const ImU32& kFrame = detail::g_active.frame;
+inline const ImU32& kObstacleFill = detail::g_active.obstacle_fill;
+inline const ImU32& kObstacleEdge = detail::g_active.obstacle_edge;
+inline const ImU32& kCObstacle = detail::g_active.cobstacle;
+inline const ImU32& kStart = detail::g_active.start;
+inline const ImU32& kGoal = detail::g_active.goal;
+inline const ImU32& kPreview = detail::g_active.preview;
+inline const ImU32& kLabel = detail::g_active.label;
+inline const ImU32& kSelectedFill = detail::g_active.selected_fill;
+inline const ImU32& kSelectedEdge = detail::g_active.selected_edge;
+inline const ImU32& kWarning = detail::g_active.warning;
+inline const ImU32& kFree = detail::g_active.free;
+inline const ImU32& kHit = detail::g_active.hit;
+inline const ImU32& kPath = detail::g_active.path;                  // orange, wide
+inline const ImU32& kPathOutline = detail::g_active.path_outline;
+inline const ImU32& kRobot = detail::g_active.robot;
+inline const ImU32& kCurrent = detail::g_active.current;            // the step being shown
+inline const ImU32& kInk = detail::g_active.ink;
+inline const ImU32& kFaint = detail::g_active.faint;
+inline const ImU32& kLabelBox = detail::g_active.label_box;
+inline const ImU32& kTextGood = detail::g_active.text_good;
+inline const ImU32& kTextBad = detail::g_active.text_bad;
+inline const ImU32& kTextKey = detail::g_active.text_key;
+inline const ImU32& kTextAmount = detail::g_active.text_amount;
+inline const ImU32& kTextLog = detail::g_active.text_log;
+inline const ImU32& kTextNotice = detail::g_active.text_notice;
+inline const ImU32& kTextDim = detail::g_active.text_dim;
+inline const ImU32& kRestoreButton = detail::g_active.restore_button;
+inline const ImU32& kCardWelcome = detail::g_active.card_welcome;
+inline const ImU32& kCardProblem = detail::g_active.card_problem;
+inline const ImU32 (&kComponents)[8] = detail::g_active.components;
+inline constexpr unsigned kComponentCount = 8;
 
 /// The colour as ImGui's float RGBA (TextColored, PushStyleColor).
 inline ImVec4 vec4(ImU32 c) { return ImGui::ColorConvertU32ToFloat4(c); }
 /// Black or white, whichever reads better on `fill` (WCAG contrast): a marker's letter.
 ImU32 text_on(ImU32 fill);
-/// Roadmap components' colours, cycled. The largest component is usually 0 (it holds the
-/// start): the calm blue; then hues that stay at least CIEDE2000 10 apart from each other and
-/// from the path for every dichromacy (Machado 2009), and 3:1 on the canvas. (Okabe–Ito's sky
-/// blue, a violet and an olive in this place came within 6 to 8 of a neighbour.)
-inline constexpr ImU32 kComponents[] = {rgba(0, 114, 178), rgba(0, 158, 115), rgba(204, 121, 167), rgba(51, 34, 136),
-                                        rgba(213, 94, 0),  rgba(120, 60, 0),   rgba(0, 0, 0),       rgba(170, 51, 119)};
-inline constexpr unsigned kComponentCount = sizeof kComponents / sizeof kComponents[0];
 ImU32 component_color(int component, unsigned alpha = 255);
 
-/// Applies the lab's ImGui style (light, rounded, readable spacing).
+/// Applies the lab's ImGui style (rounded, readable spacing) in the look in use.
 void apply_style();
 
 }  // namespace csl::app::theme

@@ -23,7 +23,7 @@ ImU32 style(ImGuiCol which) { return ImGui::ColorConvertFloat4ToU32(ImGui::GetSt
 }  // namespace
 
 void register_api(JsApi& api) {
-  api.add("theme", "the colours that carry meaning: {colours: {role: [r,g,b,a]}, components, text: [{name, fg, bg}]}",
+  api.add("theme", "the colours that carry meaning in the look in use: {look: {dark, high_contrast}, colours: {role: [r,g,b,a]}, components, text: [{name, fg, bg}]}",
           [](const json&) {
             const json colours = {
                 {"canvas", rgba_of(kCanvasBg)},       {"obstacle", rgba_of(kObstacleFill)},
@@ -60,11 +60,21 @@ void register_api(JsApi& api) {
             pair("a distance being measured", kTextAmount, panel);
             pair("the log's newest line", kTextLog, panel);
             pair("the notice", kTextNotice, panel);
+            pair("text on the welcome card", text, kCardWelcome);
+            pair("secondary text on the welcome card", dim, kCardWelcome);
+            pair("text on the homework card", text, kCardProblem);
+            pair("secondary text on the homework card", dim, kCardProblem);
+            pair("a found path on the homework card", kTextGood, kCardProblem);
+            pair("a wrong answer on the homework card", kTextBad, kCardProblem);
+            pair("a label's text in its box on the canvas", kLabel, kLabelBox);
+            pair("a measured distance's label on the canvas", kTextAmount, kLabelBox);
             pair("a label on the canvas", kLabel, kCanvasBg);
             pair("the start marker's letter", text_on(kStart), kStart);
             pair("the goal marker's letter", text_on(kGoal), kGoal);
             pair("a blue marker's letter", text_on(kBlue), kBlue);
-            return json{{"colours", colours}, {"components", components}, {"text", pairs}};
+            const Look l = look();
+            return json{{"look", {{"dark", l.dark}, {"high_contrast", l.high_contrast}}},
+                        {"colours", colours}, {"components", components}, {"text", pairs}};
           });
 }
 

@@ -53,6 +53,38 @@ void tooltip(const char* text) {
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
 }
 
+// The look that the choice and the browser's preferences give.
+theme::Look look_of(const PageState& s) {
+  theme::Look look;
+  look.dark = s.scheme == "dark" || (s.scheme == "system" && s.system_dark);
+  look.high_contrast = s.contrast == "high" || (s.contrast == "system" && s.system_high_contrast);
+  return look;
+}
+
+// Display: light, dark or the system's; high contrast or not. The page remembers the choice.
+void display_menu() {
+  PageState& s = state();
+  if (!ImGui::BeginMenu("Display")) return;
+  const auto choice = [&](const char* label, std::string& field, const char* value) {
+    if (ImGui::MenuItem(label, nullptr, field == value)) {
+      field = value;
+      theme::request_look(look_of(s));
+      page_action("look");
+    }
+    record(std::string(&field == &s.scheme ? "scheme-" : "contrast-") + value);
+  };
+  ImGui::TextDisabled("Colours");
+  choice("Like the system", s.scheme, "system");
+  choice("Light", s.scheme, "light");
+  choice("Dark", s.scheme, "dark");
+  ImGui::Separator();
+  ImGui::TextDisabled("Contrast");
+  choice("Like the system##contrast", s.contrast, "system");
+  choice("Normal", s.contrast, "normal");
+  choice("High", s.contrast, "high");
+  ImGui::EndMenu();
+}
+
 void file_menu(const std::string& lesson_name) {
   const PageState& s = state();
   if (ImGui::MenuItem("Import scene (JSON)...")) page_action("import");
@@ -83,6 +115,9 @@ void file_menu(const std::string& lesson_name) {
       ImGui::PopID();
     }
   }
+  ImGui::Separator();
+  display_menu();
+  record("display");
   ImGui::Separator();
   ImGui::TextDisabled("C-Space Lab v%s", kVersion);
 }
@@ -169,32 +204,46 @@ void register_api(JsApi& api, LabContext& ctx) {
     ctx.notify(t, seconds);
     return json(true);
   });
-  api.add("page_state", "the page around the app: {attached?, minimal?, welcome?, reduced_motion?, previous?, history?: [{label}]}; also where its buttons are (CSS px)", [](const json& args) {
+  api.add("page_state", "the page around the app: {attached?, minimal?, welcome?, reduced_motion?, previous?, history?: [{label}], scheme?: system|light|dark, contrast?: system|normal|high, system_dark?, system_high_contrast?}; also the look in use and where its buttons are (CSS px)", [](const json& args) {
     PageState next = state();
     for (auto it = args.begin(); it != args.end(); ++it) {
-      if (it.key() == "attached" || it.key() == "minimal" || it.key() == "welcome" || it.key() == "reduced_motion") {
+      if (it.key() == "attached" || it.key() == "minimal" || it.key() == "welcome" || it.key() == "reduced_motion" ||
+          it.key() == "system_dark" || it.key() == "system_high_contrast") {
         if (!it->is_boolean()) throw ApiError(it.key() + ": true or false");
-        (it.key() == "attached" ? next.attached
-         : it.key() == "minimal" ? next.minimal
-         : it.key() == "welcome" ? next.welcome
-                                 : next.reduced_motion) = it->get<bool>();
+        (it.key() == "attached"    ? next.attached
+         : it.key() == "minimal"   ? next.minimal
+         : it.key() == "welcome"   ? next.welcome
+         : it.key() == "system_dark" ? next.system_dark
+         : it.key() == "system_high_contrast" ? next.system_high_contrast
+                                   : next.reduced_motion) = it->get<bool>();
+      } else if (it.key() == "scheme" || it.key() == "contrast") {
+        const bool scheme = it.key() == "scheme";
+        const std::string v = it->is_string() ? it->get<std::string>() : "";
+        const bool ok = v == "system" || (scheme ? (v == "light" || v == "dark") : (v == "normal" || v == "high"));
+        if (!ok) throw ApiError(scheme ? "scheme: system, light or dark" : "contrast: system, normal or high");
+        (scheme ? next.scheme : next.contrast) = v;
       } else if (it.key() == "previous") {
         if (!it->is_string() || it->get<std::string>().size() > 200) throw ApiError("previous: a string of at most 200 characters");
         next.previous = it->get<std::string>();
       } else if (it.key() == "history") {
         next.history = history_labels(*it);
       } else {
-        throw ApiError("unknown field \"" + it.key() + "\" (attached, minimal, welcome, reduced_motion, previous, history)");
+        throw ApiError("unknown field \"" + it.key() +
+                       "\" (attached, minimal, welcome, reduced_motion, previous, history, scheme, contrast, system_dark, system_high_contrast)");
       }
     }
     state() = next;
+    const theme::Look look = look_of(next);
+    theme::request_look(look);
     json buttons = json::object();
     for (const auto& [name, r] : rects()) buttons[name] = r;
     json history = json::array();
     for (const std::string& label : next.history) history.push_back({{"label", label}});
     return json{{"attached", next.attached}, {"minimal", next.minimal}, {"welcome", next.welcome},
                 {"reduced_motion", next.reduced_motion}, {"previous", next.previous},
-                {"history", history}, {"buttons", buttons}};
+                {"history", history}, {"buttons", buttons}, {"scheme", next.scheme}, {"contrast", next.contrast},
+                {"system_dark", next.system_dark}, {"system_high_contrast", next.system_high_contrast},
+                {"look", {{"dark", look.dark}, {"high_contrast", look.high_contrast}}}};
   });
   api.add("bundled_scenes", "the bundled scenes by name (what ?scene=NAME loads)", [](const json&) {
     json out = json::object();

@@ -25,6 +25,13 @@ struct PageState {
   /// The page's history of previous work, newest first, one label each ("14:03 · before a link ·
   /// Step PRM"); the File menu lists them and asks for "restore-history:<i>".
   std::vector<std::string> history;
+  /// The look the student chose in Display ("system", "light" or "dark"; "system", "normal" or
+  /// "high"), and what the browser prefers (prefers-color-scheme: dark; prefers-contrast: more
+  /// or forced-colors: active). The page keeps the choice; a link may set it for one visit.
+  std::string scheme = "system";
+  std::string contrast = "system";
+  bool system_dark = false;
+  bool system_high_contrast = false;
 };
 
 /// At most this many history entries, each label at most kMaxHistoryLabel bytes (page_state).

@@ -18,7 +18,7 @@ void draw_robot(const WorkspaceView& view, const Robot& robot, const Config& q, 
     arm_joints(*arm, q, joints);
     const int n = arm->links();
     for (int i = 0; i < n; ++i) dl->AddLine(view.to_screen(joints[i]), view.to_screen(joints[i + 1]), color, thickness);
-    dl->AddCircleFilled(view.to_screen(joints[0]), thickness + 2.0f, theme::kBlack, 16);
+    dl->AddCircleFilled(view.to_screen(joints[0]), thickness + 2.0f, theme::kInk, 16);
     for (int i = 1; i < n; ++i) dl->AddCircleFilled(view.to_screen(joints[i]), thickness + 1.0f, color, 16);
     dl->AddCircle(view.to_screen(joints[n]), thickness, color, 12, 1.5f);
   } else if (const auto* poly = std::get_if<PolygonRobot>(&robot)) {
@@ -152,7 +152,7 @@ void draw_roadmap(const WorkspaceView& view, const Space& space, const Roadmap& 
     const int c = labels.empty() ? 0 : labels[i];
     const ImVec2 at = view.to_screen(Vec2(v[i][0], v[i][1]));
     // (Past 3000 vertices no rim: twice the quads for a rim too small to see.)
-    if (n <= 3000) batch.square(at, half + 1.0f, theme::rgba(30, 30, 30, 200));
+    if (n <= 3000) batch.square(at, half + 1.0f, theme::with_alpha(theme::kInk, 200));
     batch.square(at, half, theme::component_color(c));
   }
   if (every > 1) {
@@ -162,7 +162,7 @@ void draw_roadmap(const WorkspaceView& view, const Space& space, const Roadmap& 
     const ImVec2 clip_lo = dl->GetClipRectMin(), clip_hi = dl->GetClipRectMax();
     const ImVec2 size = ImGui::CalcTextSize(text);
     const ImVec2 at(clip_lo.x + 8.0f, clip_hi.y - size.y - 8.0f);
-    dl->AddRectFilled(ImVec2(at.x - 4, at.y - 2), ImVec2(at.x + size.x + 4, at.y + size.y + 2), theme::rgba(255, 255, 255, 230), 3.0f);
+    dl->AddRectFilled(ImVec2(at.x - 4, at.y - 2), ImVec2(at.x + size.x + 4, at.y + size.y + 2), theme::with_alpha(theme::kLabelBox, 230), 3.0f);
     dl->AddText(at, theme::kLabel, text);
   }
 }

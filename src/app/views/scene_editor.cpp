@@ -378,7 +378,7 @@ void SceneEditor::draw_overlays(WorkspaceView& view, const Scene& scene) const {
     view.draw_obstacle(o, true);
     auto handle = [&](const Vec2& p) {
       const ImVec2 s = view.to_screen(p);
-      dl->AddRectFilled(ImVec2(s.x - 4, s.y - 4), ImVec2(s.x + 4, s.y + 4), theme::rgba(255, 255, 255));
+      dl->AddRectFilled(ImVec2(s.x - 4, s.y - 4), ImVec2(s.x + 4, s.y + 4), theme::kCanvasBg);
       dl->AddRect(ImVec2(s.x - 4, s.y - 4), ImVec2(s.x + 4, s.y + 4), theme::kSelectedEdge, 0.0f, 0, 1.5f);
     };
     std::visit(Overloaded{[&](const Disk& d) {

@@ -90,7 +90,7 @@ void ring_rect(ImDrawList* dl, ImVec2 a, ImVec2 b) {
 void ring_caption(ImDrawList* dl, ImVec2 at, const char* text) {
   const ImVec2 size = ImGui::CalcTextSize(text);
   dl->AddRectFilled(ImVec2(at.x - 3, at.y - 1), ImVec2(at.x + size.x + 3, at.y + size.y + 1),
-                    theme::rgba(255, 255, 255, 225), 3.0f);
+                    theme::kLabelBox, 3.0f);
   dl->AddText(at, theme::kLabel, text);
 }
 

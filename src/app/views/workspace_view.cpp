@@ -289,7 +289,7 @@ void WorkspaceView::draw_marker(const Vec2& p, ImU32 color, const char* label, b
   ImDrawList* dl = draw_list();
   if (warn) dl->AddCircle(c, 14.0f, theme::kWarning, 32, 3.0f);
   dl->AddCircleFilled(c, 9.0f, color, 24);
-  dl->AddCircle(c, 9.0f, theme::kBlack, 24, 1.5f);
+  dl->AddCircle(c, 9.0f, theme::kInk, 24, 1.5f);
   ImFont* font = fonts().small;
   const float fs = font->FontSize * ImGui::GetIO().FontGlobalScale;
   const ImVec2 ts = font->CalcTextSizeA(fs, 1e9f, 0.0f, label);
