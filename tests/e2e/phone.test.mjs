@@ -187,3 +187,57 @@ test('A laptop keeps the wide layout; a tablet upright stacks two views', () => 
     await page.close();
   }
 }));
+
+test('Phone: a long press opens the context menu; add a disk where the finger was, then delete it',
+  () => withBrowser(async ({ browser, url }) => {
+  const { page, errors, touch, tap, control } = await phone(browser, url, PORTRAIT, '?lesson=step-prm&scene=prm-demo');
+  const longPress = async (at) => {
+    await touch('touchStart', [at]);
+    // The app opens the menu after 0.5 s and 30 frames held still (a busy machine draws slowly).
+    await page.waitForFunction(() => Object.keys(window.cspacelab.pageState().buttons).some((b) => b.startsWith('context-')),
+                               null, { timeout: 10000 });
+    await touch('touchEnd', []);
+    await waitFrames(page, 2);
+  };
+  const before = await api(page, 'get_scene');
+  const spot = [0.2, 0.45];  // free in prm-demo: between the lower disk and the upper polygon
+  const [at] = await worldToPage(page, [spot]);
+  // A short tap opens nothing.
+  await tap(at);
+  assert.equal(await control('context-add-disk'), null, 'a tap is not a long press');
+  // Nor is a press with the Disk tool held still: it draws (a slow start of a disk).
+  await tap(await control('tool:disk'));
+  await touch('touchStart', [at]);
+  await page.waitForTimeout(700);
+  await waitFrames(page, 40);
+  assert.equal(await control('context-add-disk'), null, 'no menu while drawing');
+  await touch('touchEnd', []);
+  assert.deepEqual(await api(page, 'get_scene'), before, 'a disk of no size is not added');
+  await tap(await control('tool:select'));
+  await longPress(at);
+  assert.ok(await control('context-add-disk'), 'the menu for empty space');
+  assert.equal(await control('context-delete'), null, 'no obstacle there to delete');
+  await screenshot(page, 'phone-context-menu.png');
+  await tap(await control('context-add-disk'));
+  const added = await api(page, 'get_scene');
+  assert.equal(added.obstacles.length, before.obstacles.length + 1);
+  const disk = added.obstacles.at(-1);
+  assert.equal(disk.type, 'disk');
+  const scale = (await page.evaluate(() => window.cspacelab.status())).layout.views.find((v) => v.name === 'workspace').w;
+  assert.ok(Math.hypot(disk.center[0] - spot[0], disk.center[1] - spot[1]) < 3 / scale, `where the finger was: ${disk.center}`);
+  assert.ok(disk.radius > 0.01 && disk.radius < 0.2, `a disk of a sensible size: ${disk.radius}`);
+  assert.deepEqual(added.start, before.start, 'nothing else moved');
+  // The new disk, long-pressed: its menu deletes it.
+  await longPress(at);
+  assert.ok(await control('context-delete'), 'the menu for an obstacle');
+  await tap(await control('context-delete'));
+  assert.deepEqual(await api(page, 'get_scene'), before, 'deleted: the scene as it was');
+  // A long press on the start opens the menu and moves nothing (the press began a drag).
+  const [start] = await worldToPage(page, [before.start]);
+  await longPress(start);
+  assert.ok(await control('context-undo'), 'the menu opened on the start');
+  await tap(await control('context-undo'));
+  assert.equal((await api(page, 'get_scene')).obstacles.length, before.obstacles.length + 1, 'Undo brought the disk back');
+  assert.deepEqual((await api(page, 'get_scene')).start, before.start);
+  assert.deepEqual(errors, []);
+}));

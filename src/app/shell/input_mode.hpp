@@ -25,6 +25,13 @@ void set_touch(bool on);
 const Pinch& pinch();
 void set_pinch(const Pinch& p);
 
+/// How far (logical px) the finger that pressed first has been from where it pressed, at most,
+/// since it pressed; infinity once a second finger joined (a pinch is no long press). Read from
+/// SDL's finger events themselves: ImGui's mouse, which SDL makes of that finger, can lag them
+/// by frames on a busy page, and a long press must not be mistaken for a slow drag.
+float finger_travel();
+void set_finger_travel(float px);
+
 /// A handle's reach in logical px: `mouse_px` for a mouse, at least 22 (a 44 px target, WCAG's
 /// target size) for a finger, which covers what it touches.
 float reach(float mouse_px);

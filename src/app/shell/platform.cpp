@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <limits>
 #include <cstdio>
 #include <cstring>
 
@@ -314,8 +315,16 @@ void Platform::track_pointer(const SDL_Event& event) {
       input::set_touch(true);
       // SDL gives a finger's place as a fraction of the window.
       const ImVec2 at(event.tfinger.x * static_cast<float>(w), event.tfinger.y * static_cast<float>(h));
-      if (event.type == SDL_FINGERDOWN && fingers_.empty()) first_press_ = at;
-      fingers_[static_cast<long long>(event.tfinger.fingerId)] = at;
+      const long long id = static_cast<long long>(event.tfinger.fingerId);
+      if (event.type == SDL_FINGERDOWN && fingers_.empty()) {
+        first_press_ = at;
+        first_finger_ = id;
+        input::set_finger_travel(0.0f);
+      }
+      fingers_[id] = at;
+      if (fingers_.size() > 1) input::set_finger_travel(std::numeric_limits<float>::infinity());
+      else if (id == first_finger_)
+        input::set_finger_travel(std::max(input::finger_travel(), std::hypot(at.x - first_press_.x, at.y - first_press_.y)));
       break;
     }
     case SDL_FINGERUP:

@@ -77,6 +77,7 @@ class Platform {
   // go (what it began dragging goes back there), until every finger is up.
   std::map<long long, ImVec2> fingers_;
   ImVec2 first_press_{0, 0};
+  long long first_finger_ = -1;  // the finger that pressed first (its travel: input::finger_travel)
   bool gesture_ = false;   // since a second finger came down, until every finger is up
   int gesture_frames_ = 0;
   bool pinching_ = false;  // two fingers down now (and last frame's center and spread are set)

@@ -356,6 +356,7 @@ bool SceneEditor::edit(WorkspaceView& view, Scene& scene, LabContext& ctx, const
     }
   }
   if (drag_ != Drag::None) changed |= continue_drag(view, scene, ctx);
+  changed |= context_menu(view, scene, ctx, options);
 
   // Cursor shapes say what a press would do.
   if (view.hovered()) {

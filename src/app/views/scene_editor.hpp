@@ -3,6 +3,8 @@
 // vertices, double-click or Enter to close), walls (drag); select, move, resize (a disk's rim,
 // a polygon's vertices, a wall's ends), delete; drag start and goal; undo and redo.
 // Keys: V select, D disk, P polygon, W wall, Delete, Esc, Ctrl+Z, Ctrl+Y, F fit view, ? help.
+// A context menu (scene_editor_menu.cpp) on a right-click, or a long press by touch: delete,
+// duplicate or select the obstacle there, add a disk or square, move start or goal there.
 // And all of it by keyboard alone (scene_editor_keys.cpp): N / Shift+N focus the next / previous
 // thing (start, goal, each obstacle), H / Shift+H a handle of it (a vertex, a wall's end), the
 // arrows move what has the focus, + / - resize it, Enter places a disk, wall or polygon.
@@ -74,6 +76,8 @@ class SceneEditor {
   // its handles (focus_handle_: a polygon's vertex, a wall's end; -1 the whole obstacle).
   enum class Focus { None, Start, Goal, Obstacle };
   bool handle_keys(Scene& scene, LabContext& ctx);
+  // scene_editor_menu.cpp: the context menu (right-click, long press).
+  bool context_menu(WorkspaceView& view, Scene& scene, LabContext& ctx, const Options& options);
   // scene_editor_keys.cpp: editing by keyboard alone.
   bool handle_edit_keys(WorkspaceView& view, Scene& scene, LabContext& ctx, const Options& options, bool enter_places);
   void cycle_focus(const Scene& scene, const Options& options, int by);
@@ -107,6 +111,10 @@ class SceneEditor {
   Focus focus_ = Focus::None;
   int focus_handle_ = -1;
   bool key_burst_ = false;  // an edit key is held: its repeats join the press's undo step
+  Vec2 menu_at_{0, 0};        // where the context menu was opened (world)
+  int menu_target_ = -1;      // the obstacle it was opened on, or -1
+  bool long_pressed_ = false;  // this press already opened the menu (until the finger lifts)
+  int press_frames_ = 0;       // frames the left button (a finger) has been down
 };
 
 }  // namespace csl::app
