@@ -68,6 +68,38 @@
     return inlineWasm;
   }
 
+  /**
+   * fetch() of a file of the lab. A page of another origin (a course page embedding the lab with
+   * the script tag) may read it only if the lab's server sends Access-Control-Allow-Origin; the
+   * browser then says no more than "Failed to fetch". So a failed fetch across origins is tried
+   * once more without reading it (mode no-cors): if the server answers that, it is the header
+   * that is missing, and the error says which one to add.
+   */
+  async function fetchFile(url) {
+    try {
+      return await fetch(url, { credentials: 'same-origin' });
+    } catch (err) {
+      const target = new URL(url, location.href);
+      if (target.origin === location.origin) throw err;
+      let answered = false;
+      try {
+        await fetch(target.href, { mode: 'no-cors', credentials: 'omit', cache: 'no-store' });
+        answered = true;
+      } catch {
+        // not reachable at all (or this page's CSP refuses the origin): said below
+      }
+      const file = target.pathname.split('/').pop();
+      const here = location.origin === 'null' ? 'this page' : `this page (${location.origin})`;
+      if (answered) {
+        throw new Error(`the lab's server (${target.origin}) does not let ${here} read ${file}: ` +
+                        'it must send the header "Access-Control-Allow-Origin: *" (or name this page\'s origin) ' +
+                        'with the lab\'s files. The lab\'s docs (web.md, "Cross-origin embedding") show it for common servers.');
+      }
+      throw new Error(`${target.href} could not be fetched (${err && err.message ? err.message : err}): the lab's server ` +
+                      `did not answer, or this page's Content-Security-Policy does not allow ${target.origin} in connect-src.`);
+    }
+  }
+
   // The wasm, fetched and compiled once, as early as possible, for every lab on the page
   // (Module.instantiateWasm hands each instance the shared WebAssembly.Module).
   let compiled = null;
@@ -76,15 +108,12 @@
       compiled = (async () => {
         if (document.getElementById('cspacelab-wasm')) return WebAssembly.compile(await wasmFromPage());
         const url = base + 'cspacelab.wasm';
-        if (typeof WebAssembly.compileStreaming === 'function') {
-          try {
-            return await WebAssembly.compileStreaming(fetch(url, { credentials: 'same-origin' }));
-          } catch {
-            // a server that does not send application/wasm: compile from the bytes below
-          }
-        }
-        const response = await fetch(url, { credentials: 'same-origin' });
+        const response = await fetchFile(url);
         if (!response.ok) throw new Error(`${url}: HTTP ${response.status}`);
+        // Streaming compilation needs the type application/wasm; other servers: from the bytes.
+        if (typeof WebAssembly.compileStreaming === 'function' &&
+            /^application\/wasm\b/i.test(response.headers.get('Content-Type') || ''))
+          return WebAssembly.compileStreaming(response);
         return WebAssembly.compile(await response.arrayBuffer());
       })();
       compiled.catch(() => {});  // reported by each lab that waits for it
