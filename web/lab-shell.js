@@ -258,7 +258,8 @@
      * attach() (the shell is made before the wasm, so that a failure at start still offers the
      * saved work). options: {config: query string, ui: 'full'|'minimal', storageId, scope, home:
      * URL of the full lab (share links), base: URL of the folder with the lab's files, single:
-     * bool (the single-file build), guardWheel: bool (the wheel scrolls the page until focused)}
+     * bool (the single-file build), guardWheel: bool (the wheel scrolls the page until focused),
+     * task: the task text shown above the canvas, lab-task.js's normalise() (Share and Embed keep it)}
      */
     constructor(root, canvas, api, options) {
       this.root = root;
@@ -471,6 +472,7 @@
       const full = store.readable && !store.roomy();
       this.saveFailed = full;
       if (problems.length) notes.push('Not used from the link: ' + problems.join('; ') + '. The lesson\'s defaults stand in for these.');
+      if (this.options.task && this.options.task.problem) notes.push(this.options.task.problem);
       if (opened === 'kept') notes.push('Opened the link. Your previous work is kept: "Restore my previous work" brings it back.');
       if (opened === 'lost') notes.push('Opened the link. Your previous work stays the saved work until this one is saved: there is no room to keep both.');
       if (!store.readable) notes.push('Autosave is off: this page may not use the browser\'s storage.');
@@ -1001,6 +1003,7 @@
 
     /** The link that reproduces what is on screen: {url, problems}. */
     async shareLink(extra = {}, home = this.options.home) {
+      extra = Object.assign(this.options.task && this.options.task.text ? { task: this.options.task.text } : {}, extra);
       const { query, problems } = await U.buildQuery(this.api.snapshot(), this.bundled, extra);
       return { url: home + '?' + query, query, problems };
     }
@@ -1021,25 +1024,73 @@
       const label = this.lessonName(this.api.status().lesson);
       const { query } = await U.buildQuery(this.api.snapshot(), this.bundled);
       const id = 'lab-' + U.hash(query + Date.now()).slice(0, 6);
-      let fields;
+      const fields = this.embedSnippets(query, id, label, this.options.task ? this.options.task.text : '');
+      const dialog = this.showDialog('Embed this lab', ['This lab as it is now, for a course page. The embed keeps each student\'s own work in their browser.'], fields);
+      // The task text (optional), written into both snippets as it is typed.
+      const areas = Array.from(dialog.querySelectorAll('.lab-dialog-field textarea'));
+      const T = global.CSpaceLabTask;
+      this.editField(dialog.querySelector('.lab-dialog-actions'), {
+        label: `Task shown above the lab (optional; plain text, each line a paragraph, at most ${T.MAX} characters)`,
+        value: this.options.task ? this.options.task.text : '', rows: 3, className: 'lab-dialog-task',
+        onInput: (text) => {
+          const task = T.normalise(text);
+          this.embedSnippets(query, id, label, task.text).forEach((f, i) => { areas[i].value = f.value; });
+          return task.problem ? { error: task.problem.replace('are shown', 'go into the snippets') }
+                              : { note: `${task.length} of ${T.MAX} characters` };
+        },
+      });
+      return fields;
+    }
+
+    /** The Embed dialog's snippets for a state (`query`), an autosave id, a title and a task text. */
+    embedSnippets(query, id, label, task) {
+      const withTask = task ? '&task=' + U.encodeValue(task) : '';
+      // The task sits above the canvas, inside the lab's height: that much taller, the canvas keeps its 600 px.
+      const height = 600 + global.CSpaceLabTask.height(global.CSpaceLabTask.normalise(task));
+      const title = `title="C-Space Lab: ${escapeAttribute(label)}" allow="clipboard-write"></iframe>`;
       if (this.options.single) {
         const file = location.pathname.split('/').pop() || 'cspacelab-single.html';
-        fields = [{ label: 'Upload this file next to your page, then put this where the lab goes', rows: 3,
-                    value: `<iframe src="${escapeAttribute(file + '?' + query + '&ui=minimal&id=' + id)}" width="100%" height="600" ` +
-                           `style="border:0" title="C-Space Lab: ${escapeAttribute(label)}" allow="clipboard-write"></iframe>` }];
-      } else {
-        const base = this.options.base;
-        fields = [
-          { label: 'An iframe (works in any page and most LMSs)', rows: 3,
-            value: `<iframe src="${escapeAttribute(base + 'embed.html?' + query + '&id=' + id)}" width="100%" height="600" ` +
-                   `style="border:0" title="C-Space Lab: ${escapeAttribute(label)}" allow="clipboard-write"></iframe>` },
-          { label: 'Or a script tag (several labs on one page, each in its own element)', rows: 4,
-            value: `<div id="${id}" data-lab="${escapeAttribute(query + '&ui=minimal')}" style="height:600px"></div>\n` +
-                   `<script src="${escapeAttribute(base + 'lab.js')}" defer></script>` },
-        ];
+        return [{ label: 'Upload this file next to your page, then put this where the lab goes', rows: 3,
+                  value: `<iframe src="${escapeAttribute(file + '?' + query + withTask + '&ui=minimal&id=' + id)}" width="100%" height="${height}" ` +
+                         `style="border:0" ${title}` }];
       }
-      this.showDialog('Embed this lab', ['This lab as it is now, for a course page. The embed keeps each student\'s own work in their browser.'], fields);
-      return fields;
+      const base = this.options.base;
+      // (A line break in an attribute is kept by HTML, but editors of course pages may fold it: &#10;.)
+      const taskAttribute = task ? ` data-lab-task="${escapeAttribute(task).replace(/\n/g, '&#10;')}"` : '';
+      return [
+        { label: 'An iframe (works in any page and most LMSs)', rows: 3,
+          value: `<iframe src="${escapeAttribute(base + 'embed.html?' + query + withTask + '&id=' + id)}" width="100%" height="${height}" ` +
+                 `style="border:0" ${title}` },
+        { label: 'Or a script tag (several labs on one page, each in its own element)', rows: 4,
+          value: `<div id="${id}" data-lab="${escapeAttribute(query + '&ui=minimal')}"${taskAttribute} style="height:${height}px"></div>\n` +
+                 `<script src="${escapeAttribute(base + 'lab.js')}" defer></script>` },
+      ];
+    }
+
+    /**
+     * An editable field of a dialog, put before `before`: a label, a text field (a textarea when
+     * `rows` is given) and a line under it for onInput(text)'s {note} or {error}, run at once and
+     * at every change. Returns the field.
+     */
+    editField(before, { label, value = '', rows = 0, type = 'text', className = '', placeholder = '', onInput }) {
+      const input = rows ? el('textarea', { rows, spellcheck: true }) : el('input', { type, spellcheck: false, placeholder });
+      input.value = value;
+      const note = el('p', { class: 'lab-dialog-note', id: 'lab-dialog-note-' + randomId() });
+      note.setAttribute('aria-live', 'polite');
+      input.setAttribute('aria-describedby', note.id);
+      const wrap = el('label', { class: 'lab-dialog-field lab-dialog-edit ' + className }, [el('span', { text: label }), input]);
+      before.parentNode.insertBefore(wrap, before);
+      before.parentNode.insertBefore(note, before);
+      const update = () => {
+        const r = onInput(input.value) || {};
+        note.textContent = r.error || r.note || '';
+        note.classList.toggle('lab-dialog-error', !!r.error);
+        if (r.error) input.setAttribute('aria-invalid', 'true');
+        else input.removeAttribute('aria-invalid');
+      };
+      input.addEventListener('input', update);
+      update();
+      return input;
     }
 
     pickFile() {
@@ -1253,7 +1304,7 @@
         area.addEventListener('focus', () => area.select());
         const copy = el('button', { type: 'button', text: 'Copy' });
         copy.addEventListener('click', async () => {
-          copy.textContent = (await this.copy(f.value)) ? 'Copied' : 'Select and copy by hand';
+          copy.textContent = (await this.copy(area.value)) ? 'Copied' : 'Select and copy by hand';
         });
         box.appendChild(el('label', { class: 'lab-dialog-field' }, [el('span', { text: f.label }), area]));
         box.appendChild(el('div', { class: 'lab-dialog-row' }, [copy]));

@@ -4,10 +4,16 @@
 //
 // The same syntax configures an instance on a page: <div data-lab="lesson=collision&amp;scene=p12">.
 // ?problem=P10[&seed=S] opens a homework problem instead.
-// scheme=system|light|dark and contrast=system|normal|high set the look for this visit (the
-// student's own choice in File > Display is kept by the page; the browser's preference otherwise).
-// Keys: lesson, scene, steps, ui, id, scheme, contrast, and the lesson's own parameters (whatever its params()
-// reports: samples, neighbors, checker, seed for Step PRM; grid_n, p, q for Collision checking).
+// Keys (docs/web.md, Links, describes each):
+//   lesson   a lesson's id                     scene   a bundled scene's name or an encoded scene
+//   steps    the step to show                  ui      full | minimal
+//   id       the autosave slot                 problem a homework problem, P1 … P13 (with seed)
+//   task     the task text shown above the canvas (plain text, lines = paragraphs, at most 1000
+//            characters; not part of the state: a new task keeps a student's saved work)
+//   scheme   system | light | dark, and contrast system | normal | high: the look for this visit
+//            (the student's own choice in File > Display is kept by the page)
+//   and the lesson's own parameters (whatever its params() reports: samples, neighbors,
+//   checker, seed for Step PRM; grid_n, p, q for Collision checking; …).
 // Values are never evaluated: numbers must match a number's syntax, lists are comma-separated
 // numbers, strings go to the app, which checks them. A scene is a bundled scene's name or
 //   z.<base64url of the deflate-raw of the scene's JSON>   (CompressionStream, all current browsers)
@@ -21,12 +27,13 @@
     sceneJson: 1024 * 1024,  // bytes of a scene's JSON once decoded (a zip bomb stops here)
     shareScene: 6000,        // characters of an encoded scene a Share link will hold (servers cap URLs near 8 KB)
     value: 256,              // characters of any other value
+    task: 12 * 1024,         // characters of an escaped task= (1000 characters, each up to 12 escaped: %F0%9F%98%80)
     entries: 64,             // key=value pairs
     depth: 64,               // levels of JSON nesting (the app's kMaxJsonDepth, src/core/scene/scene.hpp)
   });
-  const RESERVED = new Set(['lesson', 'scene', 'steps', 'ui', 'id', 'problem', 'scheme', 'contrast']);
-  // Keys that say how the lab looks or where it saves, not what it shows: they are no state.
-  const PRESENTATION = new Set(['ui', 'id', 'scheme', 'contrast']);
+  const RESERVED = new Set(['lesson', 'scene', 'steps', 'ui', 'id', 'problem', 'task', 'scheme', 'contrast']);
+  // Keys that say how to show the lab, not what it shows: they are not part of its state.
+  const PRESENTATION = new Set(['ui', 'id', 'task', 'scheme', 'contrast']);
   const KEY = /^[a-z][a-z0-9_]{0,31}$/;
   const NAME = /^[a-z0-9][a-z0-9-]{0,39}$/;
   const NUMBER = /^-?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d{1,3})?$/;
@@ -92,7 +99,7 @@
         continue;
       }
       seen.add(key);
-      const limit = key === 'scene' ? LIMITS.sceneParam : LIMITS.value;
+      const limit = key === 'scene' ? LIMITS.sceneParam : key === 'task' ? LIMITS.task : LIMITS.value;
       if (rawValue.length > limit) {
         problems.push(`${key}: ${sizeText(rawValue.length)} is more than a link may carry (${sizeText(limit)})`);
         continue;
@@ -107,13 +114,13 @@
     return { values, problems };
   }
 
-  /** Whether parsed values hold state (anything besides ui, id, scheme and contrast). */
+  /** Whether parsed values hold state (anything besides the PRESENTATION keys). */
   function hasState(values) {
     for (const key of values.keys()) if (!PRESENTATION.has(key)) return true;
     return false;
   }
 
-  /** A short key for the state part of parsed values (not ui, id, scheme, contrast): "length:hash". */
+  /** A short key for the state part of parsed values (not the PRESENTATION keys): "length:hash". */
   function stateKey(values) {
     const parts = [];
     for (const [k, v] of values) if (!PRESENTATION.has(k)) parts.push(k + '=' + v);

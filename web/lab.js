@@ -9,8 +9,12 @@
 // Share links point (default: the full lab next to this script). The element's id keeps its
 // autosave apart from other labs on the page.
 //
-// This script loads the rest (cspacelab.js, lab-api.js, lab-url.js, lab-shell.js, lab-access.js) from its own
-// folder unless the page already has them. Each lab's API is element.cspacelab once it has
+// data-lab-task="…" is the task text shown above the canvas (plain text; a task= in data-lab wins).
+//
+// This script loads the rest (cspacelab.js, lab-api.js, lab-url.js, lab-shell.js, lab-access.js,
+// lab-task.js) from its own folder unless the page already has them. From a course
+// page of another origin that works when the lab's server sends Access-Control-Allow-Origin (the
+// wasm is fetched; docs/web.md, "Cross-origin embedding"). Each lab's API is element.cspacelab once it has
 // started (the element then fires "cspacelab-ready"); window.cspacelab is the page's first lab's.
 'use strict';
 
@@ -21,7 +25,7 @@
   const base = script && script.src ? new URL('.', script.src).href : new URL('.', pageUrl).href;
   const PARTS = [['createCSpaceLab', 'cspacelab.js'], ['CSpaceLabApi', 'lab-api.js'],
                  ['CSpaceLabUrl', 'lab-url.js'], ['CSpaceLabShell', 'lab-shell.js'],
-                 ['CSpaceLabAccess', 'lab-access.js']];
+                 ['CSpaceLabAccess', 'lab-access.js'], ['CSpaceLabTask', 'lab-task.js']];
   const registry = window.CSpaceLab = window.CSpaceLab || { instances: [] };
   const shells = [];  // every lab's page shell, started or not (traps are routed to them)
 
@@ -179,6 +183,9 @@
     const ui = ['full', 'minimal'].includes(values.get('ui')) ? values.get('ui')
              : ['full', 'minimal'].includes(uiAttr) ? uiAttr : fromUrl ? 'full' : 'minimal';
     const single = !!document.getElementById('cspacelab-wasm');
+    // The task, above the canvas from the start (the lab's height includes it).
+    const task = window.CSpaceLabTask.normalise(values.has('task') ? values.get('task') : root.getAttribute('data-lab-task') || '');
+    window.CSpaceLabTask.show(root, canvas, task);
     let storageId = [values.get('id'), root.getAttribute('data-lab-id'), root.id].find((x) => x && U.ID.test(x));
     if (!storageId) {
       if (!fromUrl) storageId = 'lab-' + index;
@@ -192,6 +199,7 @@
       home: root.getAttribute('data-lab-home') || (single || (fromUrl && ui === 'full') ? pageUrl : base + 'index.html'),
       base,
       single,
+      task,
       // A lab with a page of its own has nothing to scroll: the wheel always zooms there.
       guardWheel: !fromUrl || window.top !== window,
     };

@@ -139,3 +139,26 @@ test('messages quote untrusted text short and printable', () => {
   assert.equal(U.hash('é€'), fnv([0xe9, 0x20ac]).toString(16).padStart(8, '0'));
   assert.notEqual(U.hash('a'), U.hash('b'));
 });
+
+test('task=: its own length limit, and no part of the state', () => {
+  // 1000 characters of an emoji (4 UTF-8 bytes, 12 escaped characters each) still fit a link.
+  const long = encodeURIComponent('😀'.repeat(1000));
+  assert.equal(long.length, 12000);
+  const { values, problems } = U.parseConfig('lesson=collision&task=' + long);
+  assert.deepEqual(problems, []);
+  assert.equal(values.get('task'), '😀'.repeat(1000));
+  assert.equal(U.parseConfig('task=' + 'x'.repeat(13000)).problems[0], 'task: 13 KB is more than a link may carry (12 KB)');
+  assert.equal(U.parseConfig('lesson=x&note=' + 'x'.repeat(300)).problems.length, 1, 'other keys keep their 256');
+  assert.ok(U.RESERVED.has('task'), 'never taken for a lesson parameter');
+  // A new task text keeps the same state (and so a student's saved work and autosave slot).
+  assert.equal(U.hasState(U.parseConfig('task=Find+a+path&ui=minimal').values), false);
+  assert.equal(U.stateKey(U.parseConfig('lesson=collision&task=A').values), U.stateKey(U.parseConfig('lesson=collision&task=B').values));
+  assert.notEqual(U.stateKey(U.parseConfig('lesson=collision').values), U.stateKey(U.parseConfig('lesson=step-prm').values));
+});
+
+test('buildQuery writes a task that parses back to the same text', async () => {
+  const task = 'Find the smallest N.\nThen: explain, with "quotes" & <b>tags</b>, 100 % sure?';
+  const { query } = await U.buildQuery({ lesson: 'collision', params: {}, steps: 0 }, {}, { task });
+  assert.doesNotMatch(query, /[\n "<>]/, 'escaped');
+  assert.equal(U.parseConfig(query).values.get('task'), task);
+});
