@@ -68,6 +68,34 @@
   }
 
 
+  // Where Share links point from a lab opened as a file: an address the instructor gave once.
+  const SHARE_BASE = STORAGE_PREFIX + 'share-base';
+  function shareBase(set) {
+    try {
+      if (set === undefined) return global.localStorage.getItem(SHARE_BASE);
+      global.localStorage.setItem(SHARE_BASE, set);
+    } catch {
+      // no storage: asked again next time
+    }
+    return null;
+  }
+
+  /** {url} of the lab's address on the web (http or https, no ? or #), or {error}. */
+  function webAddress(text) {
+    const t = String(text).trim();
+    if (!t) return { error: 'Give the lab\'s address, such as https://your.site/cspacelab/ or the address of the uploaded file.' };
+    let u;
+    try {
+      u = new URL(t);
+    } catch {
+      return { error: `${U.excerpt(t, 60)} is not an address: it starts with https:// or http://.` };
+    }
+    if (u.protocol !== 'https:' && u.protocol !== 'http:') return { error: `A link for others starts with https:// or http://, not ${u.protocol}//.` };
+    if (u.username || u.password) return { error: 'The address must not hold a user name or password.' };
+    if (u.search || u.hash) return { error: 'The address of the lab itself, without ? or #: the link adds its own.' };
+    return { url: u.href };
+  }
+
   const randomId = () => Array.from(global.crypto.getRandomValues(new Uint8Array(6)), (b) => b.toString(16).padStart(2, '0')).join('');
   const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
   const live = (beat, staleMs, now = Date.now()) => typeof beat === 'number' && now - beat <= staleMs && beat <= now + 60000;
@@ -1009,7 +1037,8 @@
     }
 
     async share() {
-      const { url, problems } = await this.shareLink();
+      const { url, query, problems } = await this.shareLink();
+      if (/^file:/i.test(url)) return this.shareFromFile(query, problems);
       const copied = await this.copy(url);
       const lines = [];
       if (copied) lines.push('The link is on the clipboard. It opens this lesson with this scene, these parameters and seed, at this step.');
@@ -1091,6 +1120,41 @@
       input.addEventListener('input', update);
       update();
       return input;
+    }
+
+    /**
+     * Share from a lab opened as a file (file://: the single-file build from disk): that address
+     * opens only on this computer. Offers the scene as a file, and a link against the lab's address
+     * on the web that the instructor gives (http or https; remembered in this browser).
+     */
+    shareFromFile(query, problems) {
+      const here = location.href.split(/[?#]/)[0];
+      let link = null;
+      const dialog = this.showDialog('Share this state', [
+        `This lab is a file on this computer (${U.excerpt(decodeURI(here), 80).slice(1, -1)}): a link to it opens only here, so no one else can open it.`,
+        'Send the scene as a file instead (Export scene, below), or give the address where this lab is on the web ' +
+        '(your course site, or where you uploaded this file): the link is then made against it.',
+        ...(problems.length ? ['Not exact: ' + problems.join('; ') + '.'] : []),
+      ], [{ label: 'Link', value: '', rows: 3 }], [
+        { name: 'export-scene', label: 'Export scene (JSON)', primary: true, run: (b) => { this.exportScene(); b.textContent = 'Exported'; } },
+      ]);
+      const area = dialog.querySelector('.lab-dialog-field textarea');
+      const copy = area.closest('.lab-dialog-field').nextSibling.querySelector('button');
+      const input = this.editField(area.closest('.lab-dialog-field'), {
+        label: 'The lab\'s address on the web (https://… or http://…)', type: 'url', value: shareBase() || '',
+        placeholder: 'https://your.site/cspacelab/', className: 'lab-dialog-base',
+        onInput: (text) => {
+          const r = webAddress(text);
+          link = r.url ? r.url + '?' + query : null;
+          area.value = link || '';
+          copy.disabled = !link;
+          if (r.url) shareBase(r.url);
+          return r.url ? { note: 'Remembered in this browser for the next Share.' } : { error: r.error };
+        },
+      });
+      input.focus({ preventScroll: true });
+      this.api.notify('A link to a file on this computer cannot be sent: see the dialog.', 6);
+      return link;
     }
 
     pickFile() {
@@ -1325,7 +1389,7 @@
         if (e.key === 'Escape' && closeLabel) this.closeDialog();
         if (e.key !== 'Tab') return;
         // Modal: Tab cycles within the dialog.
-        const items = Array.from(dialog.querySelectorAll('button, textarea'));
+        const items = Array.from(dialog.querySelectorAll('button, textarea, input'));
         const i = items.indexOf(document.activeElement);
         const to = e.shiftKey ? (i <= 0 ? items.length - 1 : -1) : (i === items.length - 1 ? 0 : -1);
         if (to >= 0) {

@@ -1,5 +1,7 @@
 // The single-file build (dist/cspacelab-single.html) runs opened from disk (file://): no
 // server, nothing fetched, its hash-based Content-Security-Policy enforced, links work there too.
+// Share there says that a file:// link cannot be sent and offers the scene file or a link against
+// the lab's address on the web, which the instructor gives once.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
@@ -7,7 +9,7 @@ import os from 'node:os';
 import path from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { DIST, launchBrowser, collectErrors, openLab, api, keys, waitFrames, screenshot,
-         inspectPng, expectView, sceneProbes } from './lib/harness.mjs';
+         inspectPng, expectView, sceneProbes, click, pageButton } from './lib/harness.mjs';
 
 test('the single-file build runs from file://', async () => {
   const built = path.join(DIST, 'cspacelab-single.html');
@@ -54,6 +56,72 @@ test('the single-file build runs from file://', async () => {
     const link = (await page.evaluate(() => window.cspacelab.shell.shareLink())).url;
     assert.ok(link.startsWith(url + '?lesson=step-prm&scene=narrow-passage&'), link);
     assert.deepEqual(await page.evaluate(() => window.__csp), [], 'no CSP violation');
+    assert.deepEqual(errors, [], 'no console errors');
+  } finally {
+    await browser.close();
+    fs.rmSync(dir, { recursive: true, force: true });
+  }
+});
+
+test('Share from file:// says the link cannot be sent, and offers the scene file or a link against a web address', async () => {
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'csl-single-'));
+  const file = path.join(dir, 'lab.html');
+  fs.copyFileSync(path.join(DIST, 'cspacelab-single.html'), file);
+  const browser = await launchBrowser();
+  try {
+    const ctx = await browser.newContext({ viewport: { width: 1200, height: 760 }, acceptDownloads: true });
+    const page = await ctx.newPage();
+    const errors = collectErrors(page);
+    await page.addInitScript(() => localStorage.setItem('cspacelab:v1:welcomed', '1'));
+    const url = pathToFileURL(file).href;
+    const query = 'lesson=collision&scene=p12&grid_n=7&task=Find%20N';
+    await openLab(page, url + '?' + query);
+    await click(page, await pageButton(page, 'share'));
+    const dialog = page.locator('.lab-dialog');
+    await dialog.waitFor();
+    const text = await dialog.locator('p').allTextContents();
+    assert.match(text[0], /^This lab is a file on this computer \(.*lab\.html\): a link to it opens only here, so no one else can open it\.$/);
+    const address = dialog.locator('.lab-dialog-base input');
+    const link = dialog.locator('.lab-dialog-field textarea[readonly]');
+    const note = dialog.locator('.lab-dialog-base + .lab-dialog-note');
+    const copy = dialog.locator('.lab-dialog-row button', { hasText: 'Copy' });
+    assert.equal(await address.inputValue(), '', 'nothing remembered yet');
+    assert.equal(await link.inputValue(), '', 'no link to a file');
+    assert.equal(await copy.isDisabled(), true);
+    assert.match(await note.textContent(), /Give the lab's address/);
+    await screenshot(page, 'share-from-file.png');
+    // Only http and https, the lab's own address.
+    for (const [typed, why] of [['file:///home/me/lab.html', /starts with https:\/\/ or http:\/\/, not file:\/\//],
+                                ['ftp://course.example.edu/lab.html', /not ftp:\/\//],
+                                ['course.example.edu/lab.html', /is not an address/],
+                                ['https://me:secret@course.example.edu/lab.html', /user name or password/],
+                                ['https://course.example.edu/lab.html?lesson=x', /without \? or #/]]) {
+      await address.fill(typed);
+      assert.match(await note.textContent(), why, typed);
+      assert.equal(await address.getAttribute('aria-invalid'), 'true');
+      assert.equal(await link.inputValue(), '');
+      assert.equal(await copy.isDisabled(), true);
+    }
+    assert.equal(await page.evaluate(() => localStorage.getItem('cspacelab:v1:share-base')), null, 'nothing invalid remembered');
+    await address.fill('https://course.example.edu/week6/lab.html');
+    const made = await link.inputValue();
+    assert.equal(made, 'https://course.example.edu/week6/lab.html?' + (await page.evaluate(() => window.cspacelab.shell.shareLink())).query);
+    const back = new URL(made);
+    assert.deepEqual([back.searchParams.get('lesson'), back.searchParams.get('grid_n'), back.searchParams.get('task')], ['collision', '7', 'Find N']);
+    assert.equal(await copy.isDisabled(), false);
+    assert.equal(await address.getAttribute('aria-invalid'), null);
+    await screenshot(page, 'share-from-file-address.png');
+    // The scene as a file instead.
+    const [download] = await Promise.all([page.waitForEvent('download'), dialog.locator('button', { hasText: 'Export scene (JSON)' }).click()]);
+    const scene = JSON.parse(fs.readFileSync(await download.path(), 'utf8'));
+    assert.equal(scene.name, 'P12: one disk across the path');
+    // Remembered: the next Share, after a reload, makes the link at once.
+    await page.reload();
+    await page.waitForFunction(() => window.cspacelab && window.cspacelab.status().frames >= 2);
+    await click(page, await pageButton(page, 'share'));
+    await page.locator('.lab-dialog-base input').waitFor();
+    assert.equal(await page.locator('.lab-dialog-base input').inputValue(), 'https://course.example.edu/week6/lab.html');
+    assert.ok((await page.locator('.lab-dialog-field textarea[readonly]').inputValue()).startsWith('https://course.example.edu/week6/lab.html?lesson=collision&'));
     assert.deepEqual(errors, [], 'no console errors');
   } finally {
     await browser.close();
