@@ -1271,6 +1271,7 @@
       this.frames += 1;
       if (this.timing.firstFrame === null) this.timing.firstFrame = performance.now();
       if (this.pendingCaptures.length) this.captureNow(this.pendingCaptures.splice(0));
+      if (this.onFrame) this.onFrame();  // (lab-print.js keeps a copy of the picture)
       this.frameDone();
     }
 

@@ -12,7 +12,7 @@
 // data-lab-task="…" is the task text shown above the canvas (plain text; a task= in data-lab wins).
 //
 // This script loads the rest (cspacelab.js, lab-api.js, lab-url.js, lab-shell.js, lab-access.js,
-// lab-task.js) from its own folder unless the page already has them. From a course
+// lab-task.js, lab-print.js) from its own folder unless the page already has them. From a course
 // page of another origin that works when the lab's server sends Access-Control-Allow-Origin (the
 // wasm is fetched; docs/web.md, "Cross-origin embedding"). Each lab's API is element.cspacelab once it has
 // started (the element then fires "cspacelab-ready"); window.cspacelab is the page's first lab's.
@@ -25,7 +25,8 @@
   const base = script && script.src ? new URL('.', script.src).href : new URL('.', pageUrl).href;
   const PARTS = [['createCSpaceLab', 'cspacelab.js'], ['CSpaceLabApi', 'lab-api.js'],
                  ['CSpaceLabUrl', 'lab-url.js'], ['CSpaceLabShell', 'lab-shell.js'],
-                 ['CSpaceLabAccess', 'lab-access.js'], ['CSpaceLabTask', 'lab-task.js']];
+                 ['CSpaceLabAccess', 'lab-access.js'], ['CSpaceLabTask', 'lab-task.js'],
+                 ['CSpaceLabPrint', 'lab-print.js']];
   const registry = window.CSpaceLab = window.CSpaceLab || { instances: [] };
   const shells = [];  // every lab's page shell, started or not (traps are routed to them)
 
@@ -263,6 +264,8 @@
     }
     // The parallel DOM: what the canvas shows, as HTML a screen reader and the keyboard reach.
     root.cspacelabAccess = new window.CSpaceLabAccess(root, canvas, api, { ui });
+    // Printed, the lab is a worksheet: its picture, task and parameters, no controls.
+    root.cspacelabPrint = new window.CSpaceLabPrint(root, canvas, api, shell);
     root.cspacelab = api;
     registry.instances.push(api);
     if (index === 0) window.cspacelab = api;  // the first lab in the page's order

@@ -27,7 +27,7 @@ function size(file) {
 const fmt = (n) => (n / KB).toFixed(1).padStart(8) + ' KB';
 
 const wasm = size('cspacelab.wasm');
-const jsFiles = ['cspacelab.js', 'lab-api.js', 'lab-url.js', 'lab-shell.js', 'lab-access.js', 'lab-task.js', 'lab.js'];
+const jsFiles = ['cspacelab.js', 'lab-api.js', 'lab-url.js', 'lab-shell.js', 'lab-access.js', 'lab-task.js', 'lab-print.js', 'lab.js'];
 const js = jsFiles.map((f) => ({ file: f, ...size(f) }));
 const jsTotal = js.reduce((a, f) => ({ raw: a.raw + f.raw, gzip: a.gzip + f.gzip }), { raw: 0, gzip: 0 });
 const single = size('cspacelab-single.html');
