@@ -47,7 +47,8 @@ test('index.html and embed.html: no serious or critical axe violation in any les
   const context = await newAxeContext(browser);
   await context.addInitScript(() => localStorage.setItem('cspacelab:v1:welcomed', '1'));
   const found = [];
-  for (const file of ['index.html', 'embed.html?lesson=collision&scene=p12']) {
+  // (The embed with a task: the task's section above the canvas is checked with it.)
+  for (const file of ['index.html', 'embed.html?lesson=collision&scene=p12&task=Find%20the%20smallest%20N.%0AWhy%20that%20one%3F']) {
     const page = await context.newPage();
     const errors = collectErrors(page);
     await openLab(page, url + file);

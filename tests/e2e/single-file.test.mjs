@@ -10,6 +10,7 @@ import path from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { DIST, launchBrowser, collectErrors, openLab, api, keys, waitFrames, screenshot,
          inspectPng, expectView, sceneProbes, click, pageButton } from './lib/harness.mjs';
+import { newAxeContext, runAxe } from './lib/axe.mjs';
 
 test('the single-file build runs from file://', async () => {
   const built = path.join(DIST, 'cspacelab-single.html');
@@ -69,7 +70,8 @@ test('Share from file:// says the link cannot be sent, and offers the scene file
   fs.copyFileSync(path.join(DIST, 'cspacelab-single.html'), file);
   const browser = await launchBrowser();
   try {
-    const ctx = await browser.newContext({ viewport: { width: 1200, height: 760 }, acceptDownloads: true });
+    // (bypassCSP: axe is injected below; the CSP itself is the test above's.)
+    const ctx = await newAxeContext(browser, { viewport: { width: 1200, height: 760 }, acceptDownloads: true });
     const page = await ctx.newPage();
     const errors = collectErrors(page);
     await page.addInitScript(() => localStorage.setItem('cspacelab:v1:welcomed', '1'));
@@ -111,6 +113,7 @@ test('Share from file:// says the link cannot be sent, and offers the scene file
     assert.equal(await copy.isDisabled(), false);
     assert.equal(await address.getAttribute('aria-invalid'), null);
     await screenshot(page, 'share-from-file-address.png');
+    assert.deepEqual((await runAxe(page)).blocking, [], 'axe: nothing serious in the dialog');
     // The scene as a file instead.
     const [download] = await Promise.all([page.waitForEvent('download'), dialog.locator('button', { hasText: 'Export scene (JSON)' }).click()]);
     const scene = JSON.parse(fs.readFileSync(await download.path(), 'utf8'));
