@@ -136,3 +136,26 @@ test('a course page prints its prose and each lab as a worksheet', () => withBro
   await page.waitForFunction(() => document.querySelectorAll('.lab-print-sheet').length === 0);
   assert.deepEqual(errors, []);
 }));
+
+test('an embed in an iframe prints as a worksheet when its host page prints', () => withBrowser(async ({ browser, url }) => {
+  const page = await browser.newPage({ viewport: { width: 1000, height: 900 } });
+  const errors = collectErrors(page);
+  await page.route(url + 'print-host.html', (route) => route.fulfill({
+    contentType: 'text/html',
+    body: `<!doctype html><html lang="en"><head><meta charset="utf-8"><title>host</title><link rel="icon" href="data:,"></head>
+      <body><p>Worksheet 6.</p><iframe src="embed.html?lesson=collision&amp;scene=p12&amp;task=Find%20N" width="800" height="600" title="lab"></iframe></body></html>`,
+  }));
+  await page.goto(url + 'print-host.html');
+  const frame = await (await page.waitForSelector('iframe')).contentFrame();
+  await frame.waitForFunction(() => window.cspacelab && window.cspacelab.status().frames >= 2, null, { timeout: 30000 });
+  await settled(frame);
+  await frame.evaluate(() => {
+    window.__print = [];
+    for (const e of ['beforeprint', 'afterprint'])
+      window.addEventListener(e, () => window.__print.push([e, Array.from(document.querySelectorAll('.lab-print-sheet .lab-print-task p'), (p) => p.textContent)]));
+  });
+  const pdf = await page.pdf({ format: 'A4' });
+  assert.deepEqual(await frame.evaluate(() => window.__print), [['beforeprint', ['Find N']], ['afterprint', []]]);
+  assert.equal((pdf.toString('latin1').match(/\/Subtype\s*\/Image/g) || []).length, 1, 'the iframe\'s picture in the PDF');
+  assert.deepEqual(errors, []);
+}));
