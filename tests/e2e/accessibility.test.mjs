@@ -113,7 +113,7 @@ test('the dark look and high contrast: the page\'s dialogs and the parallel DOM 
     const page = await context.newPage();
     await page.emulateMedia(media);
     const errors = collectErrors(page);
-    await openLab(page, url + '?lesson=step-prm');
+    await openLab(page, url + '?lesson=step-prm&task=Find+a+path+with+at+most+100+samples.');  // the task section too
     const look = await page.evaluate(() => window.cspacelab.pageState().look);
     assert.deepEqual(look, { dark: !!media.colorScheme, high_contrast: !!media.contrast }, `${name}: the app follows the browser`);
     assert.equal(await page.evaluate(() => document.querySelector('.lab').dataset.look),

@@ -78,6 +78,16 @@ bool SceneEditor::context_menu(WorkspaceView& view, Scene& scene, LabContext& ct
     }
     ImGui::CloseCurrentPopup();
   };
+  // A new obstacle, selected (its handles show): one undo step, or the editor's refusal.
+  const auto add = [&](const Obstacle& o) {
+    const Scene before = scene;
+    if (add_obstacle(scene, o, ctx)) {
+      record(before);
+      selected_ = static_cast<int>(scene.obstacles.size()) - 1;
+      changed = true;
+    }
+    ImGui::CloseCurrentPopup();
+  };
   char title[96];
   if (menu_target_ >= 0) {
     const Obstacle& o = scene.obstacles[static_cast<std::size_t>(menu_target_)];
@@ -92,13 +102,7 @@ bool SceneEditor::context_menu(WorkspaceView& view, Scene& scene, LabContext& ct
     if (ImGui::MenuItem("Duplicate")) {
       Obstacle copy = o;
       translate(copy, Vec2(view.pixels(24.0f), -view.pixels(24.0f)));  // beside it, visibly a second one
-      const Scene before = scene;
-      if (add_obstacle(scene, copy, ctx)) {
-        record(before);
-        selected_ = static_cast<int>(scene.obstacles.size()) - 1;
-        changed = true;
-      }
-      ImGui::CloseCurrentPopup();
+      add(copy);
     }
     web::record_control("context-duplicate");
     if (ImGui::MenuItem("Delete")) {
@@ -110,29 +114,14 @@ bool SceneEditor::context_menu(WorkspaceView& view, Scene& scene, LabContext& ct
   } else {
     std::snprintf(title, sizeof title, "Here: (%.3g, %.3g)", menu_at_.x(), menu_at_.y());
     ImGui::TextDisabled("%s", title);
-    // A new obstacle a twelfth of the view across, where the menu was opened.
+    // A new obstacle where the menu was opened, its radius (half its width) a twelfth of the view.
     const double size = view.pixels(std::min(view.canvas_max().x - view.canvas_min().x,
                                              view.canvas_max().y - view.canvas_min().y) / 12.0f);
-    if (ImGui::MenuItem("Add a disk here")) {
-      const Scene before = scene;
-      if (add_obstacle(scene, Disk{menu_at_, size}, ctx)) {
-        record(before);
-        selected_ = static_cast<int>(scene.obstacles.size()) - 1;
-        changed = true;
-      }
-      ImGui::CloseCurrentPopup();
-    }
+    if (ImGui::MenuItem("Add a disk here")) add(Disk{menu_at_, size});
     web::record_control("context-add-disk");
     if (ImGui::MenuItem("Add a square here")) {
       const Vec2 c = menu_at_;
-      const PolygonObstacle square{{c + Vec2(-size, -size), c + Vec2(size, -size), c + Vec2(size, size), c + Vec2(-size, size)}};
-      const Scene before = scene;
-      if (add_obstacle(scene, square, ctx)) {
-        record(before);
-        selected_ = static_cast<int>(scene.obstacles.size()) - 1;
-        changed = true;
-      }
-      ImGui::CloseCurrentPopup();
+      add(PolygonObstacle{{c + Vec2(-size, -size), c + Vec2(size, -size), c + Vec2(size, size), c + Vec2(-size, size)}});
     }
     web::record_control("context-add-square");
     if (options.endpoints_are_points && scene.start.size() >= 2 && scene.goal.size() >= 2) {
