@@ -183,6 +183,12 @@ bool SceneEditor::handle_keys(Scene& scene, LabContext& ctx) {
   return changed;
 }
 
+int SceneEditor::obstacle_under(const Scene& scene, const Vec2& p, double tolerance) {
+  for (int i = static_cast<int>(scene.obstacles.size()) - 1; i >= 0; --i)
+    if (hits(scene.obstacles[static_cast<std::size_t>(i)], p, tolerance)) return i;
+  return -1;
+}
+
 bool SceneEditor::begin_drag(WorkspaceView& view, Scene& scene, const Options& options) {
   const Vec2 m = view.mouse_world();
   const double grab = view.reach(kGrabPixels);
@@ -216,11 +222,10 @@ bool SceneEditor::begin_drag(WorkspaceView& view, Scene& scene, const Options& o
       if (length(w->b - m) <= grab) return target_ = selected_, handle_ = 1, drag_ = Drag::WallEnd, true;
     }
   }
-  for (int i = static_cast<int>(scene.obstacles.size()) - 1; i >= 0; --i)
-    if (hits(scene.obstacles[static_cast<std::size_t>(i)], m, view.pixels(4.0f))) {
-      selected_ = target_ = i;
-      return drag_ = Drag::Obstacle, true;
-    }
+  if (const int i = obstacle_under(scene, m, view.pixels(4.0f)); i >= 0) {
+    selected_ = target_ = i;
+    return drag_ = Drag::Obstacle, true;
+  }
   selected_ = -1;
   before_drag_.reset();
   return false;

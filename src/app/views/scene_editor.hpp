@@ -89,6 +89,9 @@ class SceneEditor {
   void draw_focus(const WorkspaceView& view, const Scene& scene) const;
   Focus focus() const;
   bool begin_drag(WorkspaceView& view, Scene& scene, const Options& options);
+  // The topmost obstacle at world point p (inside it, or within `tolerance` of a wall), or -1:
+  // what a press there grabs, and what the context menu opened there is about.
+  static int obstacle_under(const Scene& scene, const Vec2& p, double tolerance);
   bool continue_drag(WorkspaceView& view, Scene& scene, LabContext& ctx);
   bool finish_polygon(Scene& scene, LabContext& ctx);
   void draw_overlays(WorkspaceView& view, const Scene& scene) const;

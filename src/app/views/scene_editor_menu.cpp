@@ -30,13 +30,6 @@ const char* shape_name(const Obstacle& o) {
   return "wall";
 }
 
-// The topmost obstacle at world point p (within `tolerance`), or -1.
-int obstacle_at(const Scene& scene, const Vec2& p, double tolerance) {
-  for (int i = static_cast<int>(scene.obstacles.size()) - 1; i >= 0; --i)
-    if (point_clearance(scene.obstacles[static_cast<std::size_t>(i)], p) <= tolerance) return i;
-  return -1;
-}
-
 }  // namespace
 
 bool SceneEditor::context_menu(WorkspaceView& view, Scene& scene, LabContext& ctx, const Options& options) {
@@ -62,7 +55,7 @@ bool SceneEditor::context_menu(WorkspaceView& view, Scene& scene, LabContext& ct
       }
     }
     menu_at_ = view.mouse_world();
-    menu_target_ = obstacle_at(scene, menu_at_, view.pixels(4.0f));
+    menu_target_ = obstacle_under(scene, menu_at_, view.pixels(4.0f));
     ImGui::OpenPopup(kMenuId);
   }
 
