@@ -32,7 +32,7 @@ fi
 # ---------------------------------------------------------------- Debian packages
 wasm_pkgs=(cmake ninja-build g++ python3 dpkg-dev emscripten libeigen3-dev nlohmann-json3-dev
            doctest-dev fonts-dejavu-core fonttools)
-native_pkgs=(libsdl2-dev libgl-dev chromium xvfb libompl-dev clang libclang-rt-14-dev)
+native_pkgs=(libsdl2-dev libgl-dev chromium xvfb libompl-dev clang libclang-rt-14-dev zlib1g-dev)
 pkgs=("${wasm_pkgs[@]}")
 [ "$mode" = all ] && pkgs+=("${native_pkgs[@]}")
 command -v node >/dev/null || pkgs+=(nodejs)

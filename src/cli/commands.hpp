@@ -34,6 +34,7 @@ extern const Command kPotentialCommand;
 extern const Command kDescendCommand;
 extern const Command kHomeworkCommand;
 extern const Command kExerciseCommand;
+extern const Command kLinkCommand;
 
 /// Reads a whole file; UsageError naming the path if it cannot be read.
 std::string read_file(const std::string& path);

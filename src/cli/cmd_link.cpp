@@ -1,0 +1,252 @@
+// cspacelab link [SCENE.json] --lesson ID [--params JSON] [--lock ...] [--hide ...]
+// [--reveal ...] [--task TEXT] [--base URL]: the link (and the iframe) that opens the lab on a
+// lesson with a scene from a file, written as the page's own Share and Embed write them, so
+// that the browser reads back the file's scene bit for bit (web/lab-url.js decodes it).
+//
+// The scene is z.<base64url of the deflate-raw of its JSON>, what a browser's
+// CompressionStream('deflate-raw') makes: zlib with the same settings (level 6, a raw 32 KB
+// window, memLevel 8), which is what Chromium's stream runs, so a link is as short as the
+// page's own. Without zlib (the wasm build of the CLI, which has no zlib port offline) the
+// scene is written j.<base64url of the JSON>, which every browser reads too.
+#include <cstdint>
+#include <cstdio>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "cli/commands.hpp"
+#include "core/base/text.hpp"
+#include "core/teaching/lesson_catalogue.hpp"
+#include "core/teaching/restrictions.hpp"
+
+#ifdef CSPACELAB_HAVE_ZLIB
+#include <zlib.h>
+#endif
+
+namespace csl::cli {
+namespace {
+
+using json = nlohmann::json;
+
+// web/lab-url.js's LIMITS: an encoded scene, and any other value, as a link may carry them.
+constexpr std::size_t kMaxSceneParam = 64 * 1024;
+constexpr std::size_t kMaxValue = 256;
+
+std::string base64url(const std::string& bytes) {
+  static const char* const kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789-_";
+  std::string out;
+  out.reserve((bytes.size() + 2) / 3 * 4);
+  std::size_t i = 0;
+  for (; i + 2 < bytes.size(); i += 3) {
+    const std::uint32_t v = static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[i])) << 16 |
+                            static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[i + 1])) << 8 |
+                            static_cast<unsigned char>(bytes[i + 2]);
+    for (int shift = 18; shift >= 0; shift -= 6) out += kAlphabet[(v >> shift) & 63];
+  }
+  // No padding, as the page writes it: 1 byte left is 2 characters, 2 bytes 3.
+  if (i < bytes.size()) {
+    std::uint32_t v = static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[i])) << 16;
+    if (i + 1 < bytes.size()) v |= static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[i + 1])) << 8;
+    out += kAlphabet[(v >> 18) & 63];
+    out += kAlphabet[(v >> 12) & 63];
+    if (i + 1 < bytes.size()) out += kAlphabet[(v >> 6) & 63];
+  }
+  return out;
+}
+
+#ifdef CSPACELAB_HAVE_ZLIB
+// deflate-raw as CompressionStream makes it: Z_DEFAULT_COMPRESSION (6), windowBits -15, memLevel 8.
+std::string deflate_raw(const std::string& in) {
+  z_stream z{};
+  if (deflateInit2(&z, Z_DEFAULT_COMPRESSION, Z_DEFLATED, -15, 8, Z_DEFAULT_STRATEGY) != Z_OK)
+    throw std::runtime_error("zlib: deflateInit2 failed");
+  std::string out(deflateBound(&z, static_cast<uLong>(in.size())), '\0');
+  z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(in.data()));
+  z.avail_in = static_cast<uInt>(in.size());
+  z.next_out = reinterpret_cast<Bytef*>(out.data());
+  z.avail_out = static_cast<uInt>(out.size());
+  const int status = deflate(&z, Z_FINISH);
+  const std::size_t size = z.total_out;
+  deflateEnd(&z);
+  if (status != Z_STREAM_END) throw std::runtime_error("zlib: deflate did not finish");
+  out.resize(size);
+  return out;
+}
+#endif
+
+std::string encode_scene(const Scene& scene) {
+  // Compact JSON in UTF-8, as JSON.stringify and TextEncoder write it (the app's key order).
+  const std::string text = scene_to_json(scene).dump(-1, ' ', false);
+#ifdef CSPACELAB_HAVE_ZLIB
+  return "z." + base64url(deflate_raw(text));
+#else
+  return "j." + base64url(text);
+#endif
+}
+
+// encodeURIComponent, leaving ':' and ',' as they are (web/lab-url.js encodeValue).
+std::string encode_value(const std::string& text) {
+  static const char* const kHex = "0123456789ABCDEF";
+  std::string out;
+  for (const char ch : text) {
+    const unsigned char c = static_cast<unsigned char>(ch);
+    const bool plain = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
+                       std::string("-_.!~*'():,").find(static_cast<char>(c)) != std::string::npos;
+    if (plain) {
+      out += static_cast<char>(c);
+    } else {
+      out += '%';
+      out += kHex[c >> 4];
+      out += kHex[c & 15];
+    }
+  }
+  return out;
+}
+
+// A parameter's value as a link writes it (web/lab-url.js formatValue): a number in the
+// shortest text that reads back as it, true/false, a string, comma-separated numbers.
+std::string format_value(const std::string& key, const json& v) {
+  if (v.is_number() || v.is_boolean()) return v.dump();
+  if (v.is_string()) return v.get<std::string>();
+  bool numbers = v.is_array() && !v.empty();
+  std::string out;
+  for (std::size_t i = 0; numbers && i < v.size(); ++i) {
+    numbers = v[i].is_number();
+    out += (i ? "," : "") + v[i].dump();
+  }
+  if (numbers) return out;
+  throw UsageError("--params: " + key + " cannot be written in a link");
+}
+
+std::string escape_attribute(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    if (c == '&') out += "&amp;";
+    else if (c == '"') out += "&quot;";
+    else if (c == '<') out += "&lt;";
+    else if (c == '>') out += "&gt;";
+    else out += c;
+  }
+  return out;
+}
+
+// FNV-1a over the UTF-16 code units of `text`, as web/lab-url.js's hash(): a link's id.
+std::string fnv_hex(const std::string& text) {
+  std::uint32_t h = 0x811c9dc5u;
+  for (const char c : text) {  // the query is ASCII (everything else is percent-encoded)
+    h ^= static_cast<unsigned char>(c);
+    h *= 0x01000193u;
+  }
+  char buf[9];
+  std::snprintf(buf, sizeof buf, "%08x", h);
+  return buf;
+}
+
+// The folder of index.html and embed.html: "" (next to the course page) or a URL ending in '/'.
+std::string check_base(const std::string& base) {
+  if (base.empty()) return base;
+  const bool bad_char = base.find_first_of(" \t\r\n\"'<>`") != std::string::npos;
+  const bool scheme_ok = base.rfind("https://", 0) == 0 || base.rfind("http://", 0) == 0 ||
+                         (base.find(':') == std::string::npos);  // a relative folder: "../lab/"
+  if (bad_char || !scheme_ok || base.back() != '/')
+    throw UsageError("--base: '" + printable(base, 80) +
+                     "' is not the lab's folder: an http(s) URL or a relative path ending in '/', without spaces or quotes");
+  return base;
+}
+
+void add(std::string& query, const std::string& key, const std::string& encoded) {
+  if (encoded.size() > (key == "scene" ? kMaxSceneParam : kMaxValue))
+    throw UsageError(std::string(key == "scene" ? "the scene" : "--" + key) + " takes " + std::to_string(encoded.size()) +
+                     " characters in a link, more than the " + std::to_string(key == "scene" ? kMaxSceneParam : kMaxValue) +
+                     " a link may carry" + (key == "scene" ? " (share the scene file instead)" : ""));
+  query += (query.empty() ? "" : "&") + key + "=" + encoded;
+}
+
+int run_link(Args& args, std::ostream& os) {
+  const std::optional<std::string> lesson_id = args.take("lesson");
+  if (!lesson_id) throw UsageError("--lesson is missing (" + lesson_ids_text() + ")");
+  const CataloguedLesson* lesson = find_catalogued_lesson(*lesson_id);
+  if (!lesson) throw UsageError("--lesson: '" + printable(*lesson_id, 40) + "' is not a lesson (" + lesson_ids_text() + ")");
+  const std::optional<std::string> params_text = args.take("params");
+  const std::string lock = args.take("lock").value_or("");
+  const std::string hide = args.take("hide").value_or("");
+  const std::optional<std::string> reveal = args.take("reveal");
+  const std::optional<std::string> task = args.take("task");
+  const std::string base = check_base(args.take("base").value_or(""));
+  std::optional<Scene> scene;
+  if (!lesson->robots.empty()) scene = load_scene(args.take_positional("SCENE.json"));
+  args.finish();
+
+  if (scene)
+    if (const std::string problem = lesson_scene_problem(*lesson, *scene); !problem.empty())
+      throw UsageError("SCENE.json: " + problem);
+  json params = json::object();
+  if (params_text) {
+    try {
+      params = parse_json_text(*params_text);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--params: not JSON: ") + e.what());
+    }
+    if (const std::string problem = lesson_params_problem(*lesson, params); !problem.empty())
+      throw UsageError("--params: " + problem);
+  }
+  Restrictions r;
+  try {
+    r = parse_restrictions(lock, hide, reveal.value_or(""), lesson->id);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--") + e.what());
+  }
+
+  // In the order of the page's Share (lesson, scene, parameters) and then the rest.
+  std::string query;
+  add(query, "lesson", encode_value(lesson->id));
+  if (scene) add(query, "scene", encode_scene(*scene));
+  for (auto it = params.begin(); it != params.end(); ++it) add(query, it.key(), encode_value(format_value(it.key(), *it)));
+  if (!r.lock_text().empty()) add(query, "lock", encode_value(r.lock_text()));
+  if (!r.hide_text().empty()) add(query, "hide", encode_value(r.hide_text()));
+  if (reveal) add(query, "reveal", encode_value(r.reveal_text()));
+  if (task) {
+    if (task->empty()) throw UsageError("--task: an empty text");
+    add(query, "task", encode_value(*task));
+  }
+  // The Embed dialog's iframe (web/lab-shell.js embed()): its own autosave id from the link.
+  const std::string id = "lab-" + fnv_hex(query).substr(0, 6);
+  const std::string iframe = "<iframe src=\"" + escape_attribute(base + "embed.html?" + query + "&id=" + id) +
+                             "\" width=\"100%\" height=\"600\" style=\"border:0\" title=\"C-Space Lab: " +
+                             escape_attribute(lesson->name) + "\" allow=\"clipboard-write\"></iframe>";
+  print_json(os, {{"url", base + "index.html?" + query}, {"iframe", iframe}});
+  return 0;
+}
+
+}  // namespace
+
+const Command kLinkCommand{
+    "link", "the link and iframe that open a lesson with a scene file, locked and hidden as asked",
+    "Usage: cspacelab link [SCENE.json] --lesson ID [--params JSON] [--lock WORDS] [--hide WORDS]\n"
+    "                      [--reveal never|after-answer] [--task TEXT] [--base URL]\n\n"
+    "Prints {\"url\": ..., \"iframe\": ...}: the link that opens the lab on lesson ID with the scene of\n"
+    "SCENE.json (validated as `cspacelab validate` does; lessons without a scene, notation and\n"
+    "distances, take none), and the iframe the lab's Embed button would write for it. The browser\n"
+    "reads back exactly the file's scene, to the last bit of every number.\n\n"
+    "  --lesson ID      torus, notation, collision, distances, analysis, potential or step-prm\n"
+    "  --params JSON    the lesson's parameters, e.g. '{\"grid_n\": 9, \"p\": [0.2, 0.3]}': each key one of\n"
+    "                   the lesson's (cspacelab.param_specs() in the page), each value of its kind\n"
+    "                   and range; the lab checks what depends on the scene (budgets) when it opens\n"
+    "  --lock WORDS     comma-separated: scene (no edit of the scene), params (no parameter changes),\n"
+    "                   lesson (no other lesson), or a parameter's name (that one fixed)\n"
+    "  --hide WORDS     answers (every lesson's), none, or answers by name: collision min_n;\n"
+    "                   analysis p8_n, p9_probability; distances s1_distance, segment_distance;\n"
+    "                   potential p13_forces; notation q_notation; torus and step-prm path_length\n"
+    "  --reveal WHEN    never (default), or after-answer: a hidden answer comes back once the\n"
+    "                   homework exercise of its problem was answered right in that visit\n"
+    "  --task TEXT      the exercise's text, shown with the lab (the link's task=)\n"
+    "  --base URL       the lab's folder, ending in '/' (https://your.site/cspacelab/); default\n"
+    "                   none: index.html and embed.html next to the course page\n\n"
+    "The scene is written z.<base64url of its deflate-raw JSON>, as the page's Share writes it\n"
+    "(j.<base64url of the JSON> from a build without zlib). Servers often refuse addresses over\n"
+    "about 8 KB: a scene that needs more is better shared as its file. A value past what a link\n"
+    "may carry (the scene 64 KB, anything else 256 characters) is an error.\n"
+    "docs/web.md lists what each lock and each hidden answer does in the lab.\n",
+    run_link};
+
+}  // namespace csl::cli
