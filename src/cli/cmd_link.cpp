@@ -74,9 +74,73 @@ std::string deflate_raw(const std::string& in) {
 }
 #endif
 
+// A double as JavaScript's Number#toString writes it (JSON.stringify's numbers): the shortest
+// digits that read back as it, "1" not "1.0", "0.000001" not "1e-06", "1e-7" not "1e-07". The
+// page's Share deflates JSON.stringify's text; the same text deflates to the same length.
+std::string js_number(double v) {
+  if (v == 0.0) return "0";  // -0 too, as JSON.stringify writes it
+  std::string text = json(v).dump();  // nlohmann: the shortest round-trip digits
+  std::string sign;
+  if (text[0] == '-') {
+    sign = "-";
+    text.erase(0, 1);
+  }
+  int exponent = 0;
+  if (const std::size_t e = text.find_first_of("eE"); e != std::string::npos) {
+    exponent = std::stoi(text.substr(e + 1));
+    text.erase(e);
+  }
+  const std::size_t point = text.find('.');
+  const int int_len = static_cast<int>(point == std::string::npos ? text.size() : point);
+  if (point != std::string::npos) text.erase(point, 1);
+  // value = 0.D x 10^n, D without leading or trailing zeros.
+  const std::size_t lead = text.find_first_not_of('0');
+  std::string digits = text.substr(lead);
+  digits.erase(digits.find_last_not_of('0') + 1);
+  const int n = int_len - static_cast<int>(lead) + exponent, k = static_cast<int>(digits.size());
+  if (k <= n && n <= 21) return sign + digits + std::string(static_cast<std::size_t>(n - k), '0');
+  if (0 < n && n <= 21) return sign + digits.substr(0, static_cast<std::size_t>(n)) + "." + digits.substr(static_cast<std::size_t>(n));
+  if (-6 < n && n <= 0) return sign + "0." + std::string(static_cast<std::size_t>(-n), '0') + digits;
+  const int e = n - 1;
+  return sign + digits.substr(0, 1) + (k > 1 ? "." + digits.substr(1) : "") + "e" + (e < 0 ? "-" : "+") +
+         std::to_string(e < 0 ? -e : e);
+}
+
+// JSON.stringify's text of `j`: compact, in the object's own key order (the app's, sorted),
+// strings as nlohmann escapes them (the same escapes), numbers by js_number().
+void js_json(const json& j, std::string& out) {
+  switch (j.type()) {
+    case json::value_t::object: {
+      out += '{';
+      bool first = true;
+      for (auto it = j.begin(); it != j.end(); ++it) {
+        if (!first) out += ',';
+        first = false;
+        out += json(it.key()).dump(-1, ' ', false);
+        out += ':';
+        js_json(it.value(), out);
+      }
+      out += '}';
+      break;
+    }
+    case json::value_t::array: {
+      out += '[';
+      for (std::size_t i = 0; i < j.size(); ++i) {
+        if (i) out += ',';
+        js_json(j[i], out);
+      }
+      out += ']';
+      break;
+    }
+    case json::value_t::number_float: out += js_number(j.get<double>()); break;
+    default: out += j.dump(-1, ' ', false); break;
+  }
+}
+
 std::string encode_scene(const Scene& scene) {
   // Compact JSON in UTF-8, as JSON.stringify and TextEncoder write it (the app's key order).
-  const std::string text = scene_to_json(scene).dump(-1, ' ', false);
+  std::string text;
+  js_json(scene_to_json(scene), text);
 #ifdef CSPACELAB_HAVE_ZLIB
   return "z." + base64url(deflate_raw(text));
 #else

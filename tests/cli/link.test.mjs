@@ -7,13 +7,15 @@ import assert from 'node:assert/strict';
 import zlib from 'node:zlib';
 import { json, fails, run, scene, tempScene } from './lib/cli.mjs';
 
-// The scene of a link's query, decoded as the page does (z. deflate-raw, j. plain JSON).
-function decodeScene(text) {
+// The scene of a link's query, decoded as the page does (z. deflate-raw, j. plain JSON); its
+// JSON text too.
+function decodeText(text) {
   const m = /^([zj])\.([A-Za-z0-9_-]+)$/.exec(text);
   assert.ok(m, `an encoded scene: ${text.slice(0, 40)}`);
   const bytes = Buffer.from(m[2], 'base64url');
-  return JSON.parse((m[1] === 'z' ? zlib.inflateRawSync(bytes) : bytes).toString('utf8'));
+  return (m[1] === 'z' ? zlib.inflateRawSync(bytes) : bytes).toString('utf8');
 }
+const decodeScene = (text) => JSON.parse(decodeText(text));
 
 function query(url) {
   return new URLSearchParams(url.slice(url.indexOf('?') + 1));
@@ -26,6 +28,7 @@ test('a scene file becomes a link whose scene decodes to the file\'s, bit for bi
     workspace: { min: [0, 0], max: [1, 1] },
     robot: { type: 'point' },
     obstacles: [{ type: 'disk', center: [0.1 + 0.2, 1 / 3], radius: Math.PI / 30 },
+                { type: 'disk', center: [0.000001, 1e-7], radius: 0.5 },
                 { type: 'polygon', vertices: [[0.6, 0.1], [0.9, 0.15000000000000002], [0.75, 0.4]] },
                 { type: 'segment', a: [0.5, 0.5], b: [0.5, 0.95] }],
     start: [0.05, 0.05], goal: [0.95, 0.95],
@@ -44,8 +47,10 @@ test('a scene file becomes a link whose scene decodes to the file\'s, bit for bi
   const normal = json('validate', file).scene;
   const decoded = decodeScene(q.get('scene'));
   assert.deepEqual(decoded, normal);
-  // Bit for bit: every number's shortest text (JSON.stringify) is the same.
+  // Bit for bit: every number's shortest text (JSON.stringify) is the same. And the text deflated
+  // is JSON.stringify's own ("1" not "1.0", "1e-7" not "1e-07"), as the page's Share deflates it.
   assert.equal(JSON.stringify(decoded), JSON.stringify(normal));
+  assert.equal(decodeText(q.get('scene')), JSON.stringify(normal));
   assert.equal(decoded.obstacles[0].center[0], 0.1 + 0.2);
   assert.equal(decoded.obstacles[0].radius, Math.PI / 30);
   // The iframe the Embed dialog writes: embed.html with the same query and an id, escaped.
