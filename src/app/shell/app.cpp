@@ -9,6 +9,7 @@
 
 #include "app/shell/bundled_scenes.hpp"
 #include "app/shell/fonts.hpp"
+#include "app/shell/instructor.hpp"
 #include "app/shell/js_api.hpp"
 #include "app/shell/panel.hpp"
 #include "app/shell/theme.hpp"
@@ -63,6 +64,7 @@ App::App(const Platform& platform) : platform_(platform) {
 
 void App::open_problem(const HomeworkProblem& p, bool preset) {
   if (!find_lesson(p.lesson)) throw ApiError("the lab has no lesson \"" + p.lesson + "\" for " + p.id);
+  if (!instructor::lesson_allowed(p.lesson)) throw ApiError(instructor::lesson_refusal());
   if (preset) {
     json setup{{"params", p.params}};
     if (!p.scene.empty()) setup["scene"] = scene_to_json(bundled_scene(p.scene));
@@ -77,9 +79,11 @@ void App::show_in_lesson(const std::string& id, const json& setup) {
   std::optional<Scene> scene;
   if (setup.contains("scene")) scene = scene_from_json(setup["scene"]);  // throws before anything changes
   const json params = setup.value("params", json::object());
-  auto& slot = instances_[id];
-  if (!slot) slot = info->create();
-  Lesson& lesson = *slot;
+  // The instructor's locks hold here too: "Show these numbers in the tool" changes the scene.
+  if (!instructor::lesson_allowed(id)) throw ApiError(instructor::lesson_refusal());
+  if (scene && instructor::scene_locked()) throw ApiError(instructor::scene_refusal());
+  Lesson& lesson = instance(id);
+  check_params_allowed(lesson, params);
   // The scene as one edit (Undo brings the student's back); parameters the lesson refuses
   // (set_params changes nothing then) take the scene back with them.
   std::string why;
@@ -97,11 +101,8 @@ void App::show_in_lesson(const std::string& id, const json& setup) {
 }
 
 bool App::select_lesson(const std::string& id) {
-  const LessonInfo* info = find_lesson(id);
-  if (!info) return false;
-  auto& slot = instances_[id];
-  if (!slot) slot = info->create();
-  lesson_ = slot.get();
+  if (!find_lesson(id)) return false;
+  lesson_ = &instance(id);
   lesson_id_ = id;
   ctx_.playback.playing = false;
   ctx_.views.clear();
@@ -113,6 +114,7 @@ bool App::select_lesson(const std::string& id) {
 
 void App::register_api() {
   JsApi& api = js_api();
+  register_instructor_api();
   api.add("status", "frames drawn, frame times, version, pixel ratio, lesson, the side panel's measures and sections, the layout ({mode: wide|compact, tab, touch, views: [{name, x, y, w, h}]} in CSS px)", [this](const json&) {
     const FrameStats& f = platform_.frame_stats();
     return json{{"frames", platform_.frame_count()},
@@ -127,6 +129,11 @@ void App::register_api() {
                 {"panel", panel::state()},
                 {"layout", layout_},
                 {"busy", busy_json()},
+                // What the page's controls (web/lab-access.js) must show as fixed.
+                {"restrictions", {{"scene", instructor::scene_locked()},
+                                  {"params", instructor::restrictions().lock_params},
+                                  {"locked_params", instructor::restrictions().locked_params},
+                                  {"lesson", instructor::locked_lesson().empty() ? json(nullptr) : json(instructor::locked_lesson())}}},
                 // What the page's step buttons (web/lab-access.js) need: whether the lesson steps, where.
                 {"stepping", {{"controls", shows_controls(*lesson_)},
                               {"steps", stepping(*lesson_).steps()},
@@ -142,20 +149,40 @@ void App::register_api() {
   });
   api.add("select_lesson", "switch lesson: {id}", [this](const json& args) {
     const std::string id = args.value("id", "");
-    if (!select_lesson(id)) throw ApiError("no lesson \"" + id + "\"");
+    if (!find_lesson(id)) throw ApiError("no lesson \"" + id + "\"");
+    if (!instructor::lesson_allowed(id)) throw ApiError(instructor::lesson_refusal());
+    select_lesson(id);
     return json(lesson_id_);
   });
-  api.add("state", "the lesson's state ({roadmap: true} adds the roadmap)",
-          [this](const json& args) { return lesson_->state(args); });
+  // A hidden answer (instructor.hpp) is not in the state: its fields are taken out here, for
+  // every caller (the page's export of the state too).
+  const auto state = [this](const json& args) {
+    json out = lesson_->state(args);
+    strip_answer_fields(out, instructor::hidden_answers(lesson_id_));
+    return out;
+  };
+  api.add("state", "the lesson's state ({roadmap: true} adds the roadmap); an answer the instructor hid is left out",
+          [state](const json& args) { return state(args); });
   api.add("param_specs",
-          "the lesson's parameters for native controls: [{name, label, kind, min, max, step, unit, help, value, choices?, list?}]",
-          [this](const json&) { return param_specs_json(lesson_->params(), lesson_->param_fields()); });
+          "the lesson's parameters for native controls: [{name, label, kind, min, max, step, unit, help, value, choices?, list?, locked}]",
+          [this](const json&) {
+            json specs = param_specs_json(lesson_->params(), lesson_->param_fields());
+            const std::vector<std::string> scene_keys = lesson_->scene_params();
+            for (json& s : specs) {
+              const std::string name = s["name"].get<std::string>();
+              s["locked"] = instructor::param_locked(name) ||
+                            (instructor::scene_locked() && std::find(scene_keys.begin(), scene_keys.end(), name) != scene_keys.end());
+            }
+            return specs;
+          });
   api.add("describe", "what the lesson shows now, in sentences (the scene, the main view's result)",
           [this](const json&) { return json(lesson_->describe()); });
-  api.add("set_params", "the lesson's parameters: {params: {...}}", [this](const json& args) {
-    lesson_->set_params(args.value("params", json::object()));
+  api.add("set_params", "the lesson's parameters: {params: {...}}; one the instructor fixed is refused", [this, state](const json& args) {
+    const json params = args.value("params", json::object());
+    check_params_allowed(*lesson_, params);
+    lesson_->set_params(params);
     finish(*lesson_, args);
-    return lesson_->state(json::object());
+    return state(json::object());
   });
   api.add("step", "forward {count} steps (default 1)", [this](const json& args) {
     const long n = count_arg(args, "count", 1, 10000000);
@@ -214,6 +241,7 @@ void App::register_api() {
   });
   api.add("set_scene", "replace the lesson's scene: {scene}; refused with a message if invalid", [this](const json& args) {
     if (!args.contains("scene")) throw ApiError("args.scene is missing");
+    if (instructor::scene_locked()) throw ApiError(instructor::scene_refusal());
     const Scene s = scene_from_json(args["scene"]);  // throws before anything changes
     std::string why;
     if (!lesson_->accept_scene(s, why)) throw ApiError(why);
@@ -221,11 +249,13 @@ void App::register_api() {
     return scene_to_json(*lesson_->scene());
   });
   api.add("undo", "undo the last scene edit", [this](const json& args) {
+    if (instructor::scene_locked()) throw ApiError(instructor::scene_refusal());
     const bool done = lesson_->undo();
     finish(*lesson_, args);
     return json(done);
   });
   api.add("redo", "redo the last undone edit", [this](const json& args) {
+    if (instructor::scene_locked()) throw ApiError(instructor::scene_refusal());
     const bool done = lesson_->redo();
     finish(*lesson_, args);
     return json(done);
@@ -271,11 +301,15 @@ void App::register_api() {
                         {"params", l.params()},
                         {"steps", stepping(l).wanted_steps()}};
           });
-  api.add("restore", "restore a snapshot: {lesson, scene?, params?, steps?, background?}; all checked before anything changes",
-          [this](const json& args) {
-            const std::string id = args.value("lesson", lesson_id_);
+  api.add("restore", "restore a snapshot: {lesson, scene?, params?, steps?, background?}; all checked before anything changes; "
+          "what the instructor locked comes back as the lock holds it",
+          [this](const json& request) {
+            const std::string id = request.value("lesson", lesson_id_);
             const LessonInfo* info = find_lesson(id);
             if (!info) throw ApiError("lesson: no lesson \"" + id + "\"");
+            // A lesson opened for the first time by this restore is held to its default.
+            if (instructor::restrictions().any_lock() && !pins_.count(id) && !instances_.count(id)) pin(id, *info->create());
+            const json args = pinned(id, request);
             std::optional<Scene> scene;
             if (args.contains("scene") && !args["scene"].is_null()) scene = scene_from_json(args["scene"]);
             const long steps = count_arg(args, "steps", 0, 100000000);
@@ -287,7 +321,8 @@ void App::register_api() {
             stepping(*trial).run_to(steps);
             finish(*trial, args);
             instances_[id] = std::move(trial);
-            select_lesson(id);
+            // (A lesson the lock keeps the lab from is restored, not shown.)
+            if (instructor::lesson_allowed(id)) select_lesson(id);
             return json{{"lesson", lesson_id_}, {"steps", stepping(*lesson_).steps()}};
           });
   homework_.register_api(api);

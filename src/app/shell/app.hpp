@@ -53,6 +53,22 @@ class App {
   void open_problem(const HomeworkProblem& problem, bool preset);
   // Shows `lesson` with {scene?, params} (an exercise's numbers) applied to it.
   void show_in_lesson(const std::string& lesson, const nlohmann::json& setup);
+  // What the instructor fixed (app_instructor.cpp): the API's restrict and restrictions, the
+  // scene and parameters each lesson is held to, the checks before an edit.
+  void register_instructor_api();
+  // The lesson `id`, made if it is not open yet (and pinned, while something is locked).
+  Lesson& instance(const std::string& id);
+  // Remembers `lesson`'s scene and the parameters locked now as what it is held to.
+  void pin(const std::string& id, const Lesson& lesson);
+  // `snapshot` {scene?, params?} with what a lock holds for lesson `id` put in (restore, reset).
+  nlohmann::json pinned(const std::string& id, nlohmann::json snapshot) const;
+  // Throws ApiError if a lock refuses setting `params` (an object) on the lesson on screen.
+  void check_params_allowed(const Lesson& lesson, const nlohmann::json& params) const;
+  // Undoes this frame's changes of locked parameters made by the student's input (a drag, a
+  // key) that no widget stopped, with a notice; `before`: params() at the frame's start.
+  void hold_locked_params(const nlohmann::json& before);
+  // The panel's line saying what the instructor fixed and hid here, if anything.
+  void instructor_note();
 
   const Platform& platform_;
   LabContext ctx_;
@@ -63,6 +79,9 @@ class App {
   Tab tab_ = Tab::View;   // the compact layout's tab
   bool log_open_ = false;  // the compact layout's log, unfolded
   nlohmann::json layout_;  // status().layout: the last frame's
+  // While something is locked: each lesson's scene (JSON, or null) and parameters as the lock
+  // found them (or as the lesson began, opened later): what a restore or a reset gets.
+  std::map<std::string, nlohmann::json> pins_;
   HomeworkPanel homework_{[this](const HomeworkProblem& p, bool preset) { open_problem(p, preset); },
                           [this](const std::string& lesson, const nlohmann::json& setup) { show_in_lesson(lesson, setup); }};
 };

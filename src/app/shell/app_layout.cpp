@@ -5,6 +5,7 @@
 #include "app/shell/theme.hpp"
 #include "app/shell/fonts.hpp"
 #include "app/shell/input_mode.hpp"
+#include "app/shell/instructor.hpp"
 #include "app/shell/panel.hpp"
 #include "app/shell/ui.hpp"
 #include "app/shell/web_bridge.hpp"
@@ -59,6 +60,9 @@ void App::frame() {
   style.ScrollbarSize = input::touch() ? 18.0f : 12.0f;
   shortcuts();
   work();
+  // Parameters the instructor fixed stay as they are, whatever the student's input reached.
+  const Lesson* drawn = lesson_;
+  const json params_before = instructor::restrictions().any_lock() ? lesson_->params() : json();
   lesson_->update(ctx_);
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(vp->WorkPos);
@@ -76,6 +80,7 @@ void App::frame() {
   else
     wide_frame();
   ImGui::End();
+  if (lesson_ == drawn && !params_before.is_null()) hold_locked_params(params_before);
   notice();
   layout_ = layout_json();
 }
@@ -87,6 +92,7 @@ void App::wide_frame() {
   const float panel_w = std::clamp(vp->WorkSize.x * 0.3f, 280.0f, 380.0f);
   panel::begin(panel_w);
   homework_.card(lesson_id_);
+  instructor_note();
   playback_controls();
   ImGui::PushID(lesson_id_.c_str());  // each lesson's folded sections its own
   lesson_->panel(ctx_);
@@ -109,6 +115,7 @@ void App::compact_frame() {
     // The side panel as a page of its own, the whole width.
     panel::begin(ImGui::GetContentRegionAvail().x);
     homework_.card(lesson_id_);
+    instructor_note();
     playback_controls();
     ImGui::PushID(lesson_id_.c_str());
     lesson_->panel(ctx_);
@@ -188,7 +195,11 @@ void App::top_bar() {
       }
       const bool current = l.id == lesson_id_;
       if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+      ImGui::BeginDisabled(!instructor::lesson_allowed(l.id));
       if (ImGui::Button(l.name.c_str())) select_lesson(l.id);
+      ImGui::EndDisabled();
+      if (!instructor::lesson_allowed(l.id) && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("%s", instructor::lesson_refusal().c_str());
       if (current) ImGui::PopStyleColor();
     }
   }
@@ -235,7 +246,8 @@ void App::compact_bar() {
           category = l.category;
           ImGui::TextDisabled("%s", category.c_str());
         }
-        if (ImGui::Selectable(l.name.c_str(), l.id == lesson_id_, 0, ImVec2(0, bar_h - 8))) {
+        const ImGuiSelectableFlags off = instructor::lesson_allowed(l.id) ? 0 : ImGuiSelectableFlags_Disabled;
+        if (ImGui::Selectable(l.name.c_str(), l.id == lesson_id_, off, ImVec2(0, bar_h - 8))) {
           select_lesson(l.id);
           tab_ = Tab::View;
         }

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "app/shell/instructor.hpp"
 #include "app/shell/theme.hpp"
 #include "app/shell/ui.hpp"
 #include "app/shell/web_bridge.hpp"
@@ -111,6 +112,7 @@ json HomeworkPanel::check(const std::string& answer) {
   Score& s = scores_[exercise_->id];
   if (checked_->readable) ++s.tried;
   if (checked_->correct && solved_.insert({exercise_->id, exercise_->seed}).second) ++s.right;
+  if (checked_->correct) instructor::solved(exercise_->id);  // reveal=after-answer
   return exercise_check_to_json(*checked_);
 }
 

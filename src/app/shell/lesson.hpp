@@ -50,6 +50,9 @@ class Lesson {
   virtual void set_params(const nlohmann::json& params) = 0;
   /// The parameters set_params() takes, as they are now (for share links and autosave).
   virtual nlohmann::json params() const = 0;
+  /// Keys of params() that are part of the scene as well (the collision lesson's p and q are its
+  /// start and goal): a scene fixed by the instructor (lock=scene) fixes them too.
+  virtual std::vector<std::string> scene_params() const { return {}; }
   /// The parameters that have a ParamSpec (or a set of choices), for the page's native controls
   /// (the API's param_specs); a key of params() not listed gets its kind from its value.
   virtual std::vector<ParamField> param_fields() const { return {}; }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "app/shell/instructor.hpp"
 #include "app/shell/theme.hpp"
 #include "app/shell/ui.hpp"
 #include "app/shell/web_bridge.hpp"
@@ -335,6 +336,7 @@ bool SceneEditor::edit(WorkspaceView& view, Scene& scene, LabContext& ctx, const
   const int frame = ImGui::GetFrameCount();
   if ((drag_ != Drag::None || key_burst_) && last_frame_ < frame - 1) end_drag(scene);
   last_frame_ = frame;
+  if (instructor::scene_locked()) return locked_edit(view, scene, ctx, options);
   bool changed = false;
   // Keys work wherever the mouse is (the lesson on screen owns them); text fields keep theirs.
   const bool polygon_begun = !polygon_.empty();  // then Enter closes it, and places nothing
@@ -373,6 +375,55 @@ bool SceneEditor::edit(WorkspaceView& view, Scene& scene, LabContext& ctx, const
   draw_overlays(view, scene);
   if (options.endpoints_are_points) draw_endpoint_focus(view, scene);
   return changed;
+}
+
+bool SceneEditor::locked_edit(WorkspaceView& view, const Scene& scene, LabContext& ctx, const Options& options) {
+  // Nothing changes. What would have edited says why instead: a press on start, goal or an
+  // obstacle, the editing keys. The keyboard's focus (N, H) still walks the scene, to read it.
+  if (drag_ != Drag::None) drop_drag();
+  polygon_.clear();
+  tool_ = Tool::Select;
+  key_burst_ = false;
+  bool tried = false;
+  if (view.hovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+    const Vec2 m = view.mouse_world();
+    if (options.endpoints_are_points)
+      tried = length(endpoint(scene.goal) - m) <= view.reach(11.0f) || length(endpoint(scene.start) - m) <= view.reach(11.0f);
+    for (const Obstacle& o : scene.obstacles) tried = tried || hits(o, m, view.pixels(4.0f));
+    focus_ = Focus::None;
+    selected_ = -1;
+  }
+  const ImGuiIO& io = ImGui::GetIO();
+  if (!io.WantTextInput) {
+    if (io.KeyCtrl && (key_pressed(ImGuiKey_Z) || key_pressed(ImGuiKey_Y))) tried = true;
+    if (!io.KeyCtrl && !io.KeyAlt) {
+      for (ImWchar c : io.InputQueueCharacters) {
+        switch (c) {
+          case 'n': cycle_focus(scene, options, +1); break;
+          case 'N': cycle_focus(scene, options, -1); break;
+          case 'h': cycle_handle(scene, +1); break;
+          case 'H': cycle_handle(scene, -1); break;
+          case '?': show_help_ = !show_help_; break;
+          case 'd': case 'D': case 'p': case 'P': case 'w': case 'W':
+          case '+': case '=': case '-': case '_': tried = true; break;
+          default: break;
+        }
+      }
+      const bool arrows = key_pressed(ImGuiKey_LeftArrow) || key_pressed(ImGuiKey_RightArrow) ||
+                          key_pressed(ImGuiKey_UpArrow) || key_pressed(ImGuiKey_DownArrow);
+      if (arrows && focus() != Focus::None) tried = true;
+      if ((key_pressed(ImGuiKey_Delete) || key_pressed(ImGuiKey_Backspace)) && selected_ >= 0) tried = true;
+      if (key_pressed(ImGuiKey_Escape)) {
+        selected_ = -1;
+        focus_ = Focus::None;
+      }
+    }
+  }
+  if (tried) ctx.notify(instructor::scene_refusal(), 4.0);
+  if (selected_ >= static_cast<int>(scene.obstacles.size())) selected_ = -1;
+  draw_overlays(view, scene);
+  if (options.endpoints_are_points) draw_endpoint_focus(view, scene);
+  return false;
 }
 
 void SceneEditor::draw_overlays(WorkspaceView& view, const Scene& scene) const {
@@ -433,13 +484,16 @@ bool SceneEditor::toolbar(Scene& scene, LabContext&) {
       {Tool::Polygon, "Polygon", "P: click the vertices; double-click, Enter or the first vertex closes (Enter first: a square)"},
       {Tool::Wall, "Wall", "W: drag from one end to the other, zero thickness (or Enter: one in the middle)"},
   };
+  // Fixed by the instructor: the tools are shown, disabled, and the line under them says why.
+  const bool locked = instructor::scene_locked();
+  ImGui::BeginDisabled(locked);
   for (const Item& item : kItems) {
     if (&item != kItems) ui::flow(ui::button_width(item.label));
     const bool active = tool_ == item.tool;
     if (active) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
     if (ImGui::Button(item.label)) set_tool(item.tool);
     if (active) ImGui::PopStyleColor();
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", item.tip);
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("%s", locked ? instructor::kFixed : item.tip);
   }
   ImGui::BeginDisabled(!can_undo());
   if (ImGui::Button("Undo")) changed = undo(scene);
@@ -458,8 +512,10 @@ bool SceneEditor::toolbar(Scene& scene, LabContext&) {
     changed = true;
   }
   ImGui::EndDisabled();
+  ImGui::EndDisabled();  // locked
   ui::flow(ui::button_width("Keys (?)"));
   if (ImGui::Button("Keys (?)")) show_help_ = !show_help_;
+  if (locked) instructor::dim_line(instructor::scene_refusal());
   return changed;
 }
 
@@ -519,7 +575,9 @@ void SceneEditor::tool_buttons(float height, bool inline_) {
     else if (&t != kTools) ImGui::SameLine();
     const bool active = tool_ == t.tool;
     if (active) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+    ImGui::BeginDisabled(instructor::scene_locked());
     if (ImGui::Button(t.label, ImVec2(w, height))) set_tool(t.tool);
+    ImGui::EndDisabled();
     if (active) ImGui::PopStyleColor();
     web::record_control(t.control);
   }

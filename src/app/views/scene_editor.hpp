@@ -78,6 +78,9 @@ class SceneEditor {
   bool handle_keys(Scene& scene, LabContext& ctx);
   // scene_editor_menu.cpp: the context menu (right-click, long press).
   bool context_menu(WorkspaceView& view, Scene& scene, LabContext& ctx, const Options& options);
+  // edit() while the instructor fixed the scene: no change; a press or key that would edit
+  // shows the notice saying why.
+  bool locked_edit(WorkspaceView& view, const Scene& scene, LabContext& ctx, const Options& options);
   // scene_editor_keys.cpp: editing by keyboard alone.
   bool handle_edit_keys(WorkspaceView& view, Scene& scene, LabContext& ctx, const Options& options, bool enter_places);
   void cycle_focus(const Scene& scene, const Options& options, int by);
