@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "app/shell/bundled_scenes.hpp"
+#include "app/shell/instructor.hpp"
 #include "app/shell/js_api.hpp"
 #include "app/shell/lesson.hpp"
 #include "core/base/text.hpp"
@@ -73,11 +74,14 @@ class AnalysisLesson : public Lesson, private NoSteps {
 
   void panel(LabContext& ctx) override {
     int tab = tab_;
-    if (ImGui::RadioButton("Bound (2.1)", &tab, kBoundTab)) tab_ = kBoundTab;
-    ui::flow(ui::toggle_width("Cube (P8)"));
-    if (ImGui::RadioButton("Cube (P8)", &tab, kTilingTab)) tab_ = kTilingTab;
-    ui::flow(ui::toggle_width("Visibility (P9)"));
-    if (ImGui::RadioButton("Visibility (P9)", &tab, kVisibilityTab)) tab_ = kVisibilityTab;
+    {
+      instructor::FixedParam fixed("tab");
+      if (ImGui::RadioButton("Bound (2.1)", &tab, kBoundTab)) tab_ = kBoundTab;
+      ui::flow(ui::toggle_width("Cube (P8)"));
+      if (ImGui::RadioButton("Cube (P8)", &tab, kTilingTab)) tab_ = kTilingTab;
+      ui::flow(ui::toggle_width("Visibility (P9)"));
+      if (ImGui::RadioButton("Visibility (P9)", &tab, kVisibilityTab)) tab_ = kVisibilityTab;
+    }
     if (tab_ == kBoundTab) bound_panel(ctx);
     else if (tab_ == kTilingTab) tiling_panel();
     else visibility_panel();
@@ -465,7 +469,11 @@ class AnalysisLesson : public Lesson, private NoSteps {
     if (bound(0).rate > 0)
       ImGui::Text("the bound reaches p = %s at n = %s", target_text().c_str(),
                   count_text(std::ceil(bound(0).samples_for(target_))).c_str());
-    if (const std::optional<TilingBound> t = tiling()) {
+    if (const std::optional<TilingBound> t = tiling(); t && instructor::hidden("p8_n")) {
+      ImGui::TextWrapped("P8, the whole cube [0,1]^%d tiled instead: m = %s balls (the orange curve); see the tab Cube (P8)",
+                         dim_, count_text(t->balls).c_str());
+      instructor::hidden_line("P8's n");
+    } else if (t) {
       // P8 beside it (the orange curve), the handout's version first; the tab has the details.
       ImGui::TextWrapped("P8, the whole cube [0,1]^%d tiled instead: m = %s balls, p = %s at n = %s (%s with the "
                          "balls at its faces counted as hit less often): see the tab Cube (P8)",
@@ -477,8 +485,14 @@ class AnalysisLesson : public Lesson, private NoSteps {
 
   void experiment_section(LabContext& ctx) {
     ImGui::PushItemWidth(-110);
-    ImGui::InputText("n values", counts_text_, sizeof counts_text_);
-    param_slider(kLabExperimentTrials, "runs per n", trials_, 1, 200);  // the API takes more
+    {
+      instructor::FixedParam fixed("sample_counts");
+      ImGui::InputText("n values", counts_text_, sizeof counts_text_);
+    }
+    {
+      instructor::FixedParam fixed("trials");
+      param_slider(kLabExperimentTrials, "runs per n", trials_, 1, 200);  // the API takes more
+    }
     ImGui::PopItemWidth();
     const bool running = experiment_ && !experiment_->done();
     if (!running && ImGui::Button("Run experiment")) {
@@ -638,6 +652,7 @@ class AnalysisLesson : public Lesson, private NoSteps {
                          "scene's, tab Bound).", dim_);
       if (t) {
         ImGui::PushItemWidth(-ui::toggle_width("target p") + ImGui::GetFrameHeight());
+        instructor::FixedParam fixed("target");
         double p = target_;
         // Typed digit by digit ("0", "0.0", "0.01"): only a p in (0, 1) is taken.
         if (ImGui::InputDouble("target p", &p, 0.0, 0.0, "%g") && p > 0.0 && p < 1.0) target_ = p;
@@ -653,12 +668,19 @@ class AnalysisLesson : public Lesson, private NoSteps {
     const std::string m = count_text(t->balls), per_axis = count_text(t->per_axis);
     const ImVec4 key = key_colour();
     const FailureBound path = bound(0);
+    const bool hide_n = instructor::hidden("p8_n");  // P8's answer: the student solves for it
     if (open) {
       // The headline, in view also in a small embed: the handout's n first.
       const std::string path_n = path.rate > 0 ? count_text(std::ceil(path.samples_for(target_))) : "?";
-      formula(ui::format("n for p = %s: %s as in the handout, %s refined, %s for one path (2.1)", target_text().c_str(),
-                     count_text(std::ceil(n_handout)).c_str(), count_text(std::ceil(n_refined)).c_str(), path_n.c_str()),
-              &key);
+      if (hide_n) {
+        formula(ui::format("n for p = %s: %s for one path (2.1)", target_text().c_str(), path_n.c_str()), &key);
+        instructor::hidden_line("P8's n (as in the handout, refined)");
+      } else {
+        formula(ui::format("n for p = %s: %s as in the handout, %s refined, %s for one path (2.1)", target_text().c_str(),
+                           count_text(std::ceil(n_handout)).c_str(), count_text(std::ceil(n_refined)).c_str(),
+                           path_n.c_str()),
+                &key);
+      }
 
       ImGui::TextColored(key, "The handout's bound");
       dim_text_wrapped("A grid of N balls per axis, 1/N apart: neighbours at most r/2 apart needs N ≥ 2/r, and "
@@ -668,9 +690,12 @@ class AnalysisLesson : public Lesson, private NoSteps {
       formula(ui::format("σ = μ(B₁)/2^d = %.4g/%s = %.4g", unit_ball_volume(dim_), count_text(std::ldexp(1.0, dim_)).c_str(),
                      t->sigma));
       formula(ui::format("P(fail) ≤ m e^(−σ r^d n) = %s e^(−%.4g n)", m.c_str(), t->rate));
-      formula(ui::format("n = ln(m/p)/(σ r^d) = ln(%s/%s)/%.4g = %s", m.c_str(), target_text().c_str(), t->rate,
-                     count_text(std::ceil(n_handout)).c_str()),
-              &key);
+      if (hide_n)
+        formula(ui::format("n = ln(m/p)/(σ r^d) = ln(%s/%s)/%.4g = ?", m.c_str(), target_text().c_str(), t->rate), &key);
+      else
+        formula(ui::format("n = ln(m/p)/(σ r^d) = ln(%s/%s)/%.4g = %s", m.c_str(), target_text().c_str(), t->rate,
+                           count_text(std::ceil(n_handout)).c_str()),
+                &key);
     }
 
     if (panel::fold("Refined: the balls at the faces", false)) {
@@ -678,7 +703,8 @@ class AnalysisLesson : public Lesson, private NoSteps {
                          "says: there the handout's formula is not quite a bound. Counting a ball that sticks out "
                          "along j axes at rate σ r^d/2^j:",
                          count_text(t->boundary_balls).c_str(), m.c_str());
-      formula(ui::format("n = %s for p = %s", count_text(std::ceil(n_refined)).c_str(), target_text().c_str()), &key);
+      if (hide_n) instructor::hidden_line("n");
+      else formula(ui::format("n = %s for p = %s", count_text(std::ceil(n_refined)).c_str(), target_text().c_str()), &key);
     }
 
     if (panel::fold("Against the path bound (2.1)", false)) {
@@ -687,8 +713,11 @@ class AnalysisLesson : public Lesson, private NoSteps {
                        count_text(std::ceil(path.samples_for(target_))).c_str()));
       else
         ImGui::TextWrapped("path: enter L, r and μ(F) in tab Bound");
-      formula(ui::format("cube: m = %s, n = %s (refined %s)", m.c_str(), count_text(std::ceil(n_handout)).c_str(),
-                     count_text(std::ceil(n_refined)).c_str()));
+      if (hide_n)
+        formula(ui::format("cube: m = %s, n %s", m.c_str(), instructor::kHidden));
+      else
+        formula(ui::format("cube: m = %s, n = %s (refined %s)", m.c_str(), count_text(std::ceil(n_handout)).c_str(),
+                           count_text(std::ceil(n_refined)).c_str()));
       dim_text_wrapped("Much worse: the cube's m grows like (1/r)^d, the path's like L/r, and n with ln m. The cube "
                        "pays for every corner of the space, not one corridor, the more so as d grows.");
     }
@@ -716,15 +745,24 @@ class AnalysisLesson : public Lesson, private NoSteps {
                        "x1 < 1/2, what share of the square is in sight?");
     ImGui::PushItemWidth(-90);
     float gap = static_cast<float>(p9_gap_);
-    if (ImGui::SliderFloat("gap d", &gap, 0.0f, 1.0f, "%.3f")) {
-      p9_gap_ = static_cast<double>(gap);
-      sample_p9();
+    {
+      instructor::FixedParam fixed("gap");
+      if (ImGui::SliderFloat("gap d", &gap, 0.0f, 1.0f, "%.3f")) {
+        p9_gap_ = static_cast<double>(gap);
+        sample_p9();
+      }
     }
-    if (param_slider(kLabVisibilityTrials, "samples", mc_trials_, 100, 100000)) sample_p9();
+    {
+      instructor::FixedParam fixed("mc_trials");
+      if (param_slider(kLabVisibilityTrials, "samples", mc_trials_, 100, 100000)) sample_p9();
+    }
     ImGui::PopItemWidth();
     ImGui::Text("(x1, y1) = (%.3f, %.3f), d = %.3f", p9_x_, p9_y_, p9_gap_);
     const ImVec4 key = key_colour();
-    formula(ui::format("p = %.5f exact, %.5f by Monte Carlo", p9_breakdown(p9_x_, p9_y_, p9_gap_).probability, mc_.estimate), &key);
+    if (instructor::hidden("p9_probability"))
+      instructor::hidden_line("p, exact and by Monte Carlo");
+    else
+      formula(ui::format("p = %.5f exact, %.5f by Monte Carlo", p9_breakdown(p9_x_, p9_y_, p9_gap_).probability, mc_.estimate), &key);
     exact_and_monte_carlo();
   }
 
@@ -735,22 +773,33 @@ class AnalysisLesson : public Lesson, private NoSteps {
     dim_text_wrapped("All of the left half is in sight, and of the right half the cone between the rays through "
                      "the opening's ends. A ray through height a there has slope s = (a − y1)/(½ − x1) and reaches "
                      "a + s/2 at x = 1; A is the area below it.");
-    ImGui::TextWrapped("Case: upper ray → %s, lower ray → %s", p9_exit_name(b.upper.exit), p9_exit_name(b.lower.exit));
-    ray_lines("upper", "A_up", b.upper);
-    ray_lines("lower", "A_lo", b.lower);
-    formula(ui::format("p = ½ + A_up − A_lo = 0.5 + %.5f − %.5f = %.5f", b.upper.area_under, b.lower.area_under,
-                   b.probability),
-            &key);
+    if (instructor::hidden("p9_probability")) {
+      // The method stays; its numbers are P9's answer.
+      formula("p = ½ + A_up − A_lo", &key);
+      instructor::hidden_line("the cases, the areas and p");
+    } else {
+      ImGui::TextWrapped("Case: upper ray → %s, lower ray → %s", p9_exit_name(b.upper.exit), p9_exit_name(b.lower.exit));
+      ray_lines("upper", "A_up", b.upper);
+      ray_lines("lower", "A_lo", b.lower);
+      formula(ui::format("p = ½ + A_up − A_lo = 0.5 + %.5f − %.5f = %.5f", b.upper.area_under, b.lower.area_under,
+                         b.probability),
+              &key);
+    }
     }
 
     if (!panel::fold("Monte Carlo")) return;
-    formula(ui::format("%lld samples: estimate %.5f", mc_.trials, mc_.estimate));
-    formula(ui::format("95%% interval [%.5f, %.5f]", mc_.low, mc_.high));
-    if (exact_in_interval())
-      ImGui::TextColored(theme::vec4(theme::kTextGood), "the exact p is inside it");
-    else
-      ImGui::TextColored(theme::vec4(theme::kTextBad), "the exact p is outside it");
-    dim_text_wrapped("(1 draw in 20 misses on average: chance, not an error)");
+    if (instructor::hidden("p9_probability")) {
+      instructor::hidden_line(ui::format("%lld samples: the estimate and its interval", mc_.trials).c_str());
+    } else {
+      formula(ui::format("%lld samples: estimate %.5f", mc_.trials, mc_.estimate));
+      formula(ui::format("95%% interval [%.5f, %.5f]", mc_.low, mc_.high));
+      if (exact_in_interval())
+        ImGui::TextColored(theme::vec4(theme::kTextGood), "the exact p is inside it");
+      else
+        ImGui::TextColored(theme::vec4(theme::kTextBad), "the exact p is outside it");
+      dim_text_wrapped("(1 draw in 20 misses on average: chance, not an error)");
+    }
+    instructor::FixedParam fixed("mc_seed");
     if (ImGui::SmallButton("new samples")) {
       ++p9_seed_;
       sample_p9();

@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <string>
 
+#include "app/shell/instructor.hpp"
 #include "app/shell/fonts.hpp"
 #include "app/shell/js_api.hpp"
 #include "app/shell/lesson.hpp"
@@ -126,17 +127,24 @@ class DistancesLesson : public Lesson {
 
   void panel(LabContext& ctx) override {
     int tool = segment_tool_ ? 1 : 0;
-    if (ImGui::RadioButton("Angles on S¹ (P10)", &tool, 0)) switch_tool(false);
-    web::record_control("distances-tool-s1");
-    ui::flow(ui::toggle_width("Segment to disk (P11)"));
-    if (ImGui::RadioButton("Segment to disk (P11)", &tool, 1)) switch_tool(true);
-    web::record_control("distances-tool-segment");
+    {
+      instructor::FixedParam fixed("tool");
+      if (ImGui::RadioButton("Angles on S¹ (P10)", &tool, 0)) switch_tool(false);
+      web::record_control("distances-tool-s1");
+      ui::flow(ui::toggle_width("Segment to disk (P11)"));
+      if (ImGui::RadioButton("Segment to disk (P11)", &tool, 1)) switch_tool(true);
+      web::record_control("distances-tool-segment");
+    }
     ImGui::Separator();
     if (segment_tool_) segment_panel(ctx);
     else s1_panel(ctx);
   }
 
   void views(LabContext& ctx, ImVec2 size) override {
+    if (!refused_.empty()) {  // (a press last frame on a fixed handle)
+      ctx.notify(refused_, 4.0);
+      refused_.clear();
+    }
     if (segment_tool_) {
       ctx.views.erase("circle");
       segment_view(ctx, size);
@@ -229,14 +237,18 @@ class DistancesLesson : public Lesson {
   }
 
   std::string describe() const override {
+    const std::string hidden = std::string(" is ") + instructor::kHidden + ".";
     if (!segment_tool_)
       return "Two angles on the circle S1: q1 = " + significant(s1_.q1) + " and q2 = " + significant(s1_.q2) +
-             " radians. Their distance on the circle is " + significant(s1_.distance) + " (case: " +
-             s1_case_name(s1_.kind) + ").";
+             " radians. Their distance on the circle" +
+             (instructor::hidden("s1_distance") ? hidden
+                                                : " is " + significant(s1_.distance) + " (case: " + s1_case_name(s1_.kind) + ").");
     return "A segment from (" + significant(p1_.x()) + ", " + significant(p1_.y()) + ") to (" + significant(p2_.x()) +
            ", " + significant(p2_.y()) + ") and a disk at (" + significant(q_.x()) + ", " + significant(q_.y()) +
-           ") of radius " + significant(r_) + ". The segment's distance to the disk is " +
-           significant(segment_.distance) + (segment_.meets ? ": they meet." : ": they do not meet.");
+           ") of radius " + significant(r_) + ". The segment's distance to the disk" +
+           (instructor::hidden("segment_distance")
+                ? hidden
+                : " is " + significant(segment_.distance) + (segment_.meets ? ": they meet." : ": they do not meet."));
   }
 
   json params() const override {
@@ -259,8 +271,17 @@ class DistancesLesson : public Lesson {
     return x;
   }
 
-  json drag_name() const {
-    switch (drag_) {
+  // A handle of a parameter the instructor fixed does not move: a press on it says why.
+  bool fixed(Drag which) {
+    const json name = drag_name(which);
+    if (name.is_null() || !instructor::param_locked(name.get<std::string>())) return false;
+    refused_ = instructor::param_refusal(name.get<std::string>());
+    return true;
+  }
+
+  json drag_name() const { return drag_name(drag_); }
+  static json drag_name(Drag drag) {
+    switch (drag) {
       case Drag::Q1: return "q1";
       case Drag::Q2: return "q2";
       case Drag::P1: return "p1";
@@ -286,6 +307,7 @@ class DistancesLesson : public Lesson {
 
   // One angle's row: the field (radians), its degrees. Out-of-range input is refused with a notice.
   void angle_field(LabContext& ctx, const char* label, const char* id, const char* control, double& value) {
+    instructor::FixedParam fixed(control + std::string(control).rfind('-') + 1);  // "distances-q1": q1
     ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted(label);
     ImGui::SameLine(28.0f);
@@ -312,13 +334,21 @@ class DistancesLesson : public Lesson {
     if (outside(a.q1) || outside(a.q2))
       text_flow(
           ui::format("outside [0, 2π): the same directions as %s and %s", num(a.wrapped1).c_str(), num(a.wrapped2).c_str()));
-    if (ImGui::Button("q₂ = q₁")) set_q2(q1_);
-    web::record_control("distances-equal");
-    ui::flow(ui::button_width("q₂ = q₁ + π"));
-    if (ImGui::Button("q₂ = q₁ + π")) set_q2(wrap_positive(q1_ + kPi));
-    web::record_control("distances-antipodal");
+    {
+      instructor::FixedParam fixed("q2");
+      if (ImGui::Button("q₂ = q₁")) set_q2(q1_);
+      web::record_control("distances-equal");
+      ui::flow(ui::button_width("q₂ = q₁ + π"));
+      if (ImGui::Button("q₂ = q₁ + π")) set_q2(wrap_positive(q1_ + kPi));
+      web::record_control("distances-antipodal");
+    }
 
     ImGui::Separator();
+    if (instructor::hidden("s1_distance")) {
+      // P10's answer, and every step that gives it (the case names it too: "opposite" is pi).
+      instructor::hidden_line("d(q₁, q₂), the case and the steps (a) and (b)");
+      return;
+    }
     ImGui::PushFont(fonts().title);
     ImGui::TextColored(theme::vec4(theme::kTextAmount), "d(q₁, q₂) = %s rad", num(a.distance).c_str());
     ImGui::PopFont();
@@ -420,7 +450,10 @@ class DistancesLesson : public Lesson {
     // they are equally long both are drawn alike, dashed by alternating colours.
     const double turn = a.signed_turn;
     const double other = turn >= 0 ? turn - kTwoPi : turn + kTwoPi;
-    if (a.kind == S1Case::General) {
+    const bool hidden = instructor::hidden("s1_distance");  // the arcs say which way is shorter
+    if (hidden) {
+      // nothing: the handles alone
+    } else if (a.kind == S1Case::General) {
       arc(v, a.wrapped1, other, kLongArc, 5.0f);
       arc(v, a.wrapped1, turn, kShortArc, 8.0f);
       arc_label(v, a.wrapped1 + 0.5 * turn, "d = " + num(a.distance), theme::kTextAmount);
@@ -444,7 +477,7 @@ class DistancesLesson : public Lesson {
     handle(v, a.wrapped2, kQ2, "q₂", drag_ == Drag::Q2 || hover_ == Drag::Q2, same ? 14.0f : 9.0f, same ? 11.0f : 0.0f);
     v.pop_clip();
     // The case, over the view's top left corner.
-    caption(v, "d(q₁, q₂) = " + num(a.distance) + " rad: " + case_line());
+    caption(v, hidden ? std::string("d(q₁, q₂): ") + instructor::kHidden : "d(q₁, q₂) = " + num(a.distance) + " rad: " + case_line());
     hint(kS1Hint);
   }
 
@@ -520,7 +553,7 @@ class DistancesLesson : public Lesson {
       else if (near(s1_.wrapped1)) hover_ = Drag::Q1;
     }
     if (hover_ != Drag::None || drag_ != Drag::None) ImGui::SetMouseCursor(ImGuiMouseCursor_Hand);
-    if (drag_ == Drag::None && hover_ != Drag::None && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+    if (drag_ == Drag::None && hover_ != Drag::None && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !fixed(hover_)) {
       drag_ = hover_;
       drag_from_ = drag_ == Drag::Q1 ? s1_.wrapped1 : s1_.wrapped2;
       grab_angle_ = det::atan2(m.y(), m.x());
@@ -545,6 +578,7 @@ class DistancesLesson : public Lesson {
 
   // A point's row: two fields. Coordinates beyond the lesson's range are refused with a notice.
   void point_field(LabContext& ctx, const char* label, const char* id, const char* control, Vec2& p) {
+    instructor::FixedParam fixed(control + std::string(control).rfind('-') + 1);  // "distances-p1": p1
     ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted(label);
     ImGui::SameLine(28.0f);
@@ -571,22 +605,33 @@ class DistancesLesson : public Lesson {
     ImGui::SameLine(28.0f);
     ImGui::SetNextItemWidth(std::min(106.0f, ImGui::GetContentRegionAvail().x * 0.45f));
     double r = r_;
-    if (ImGui::InputDouble("##r", &r, 0.0, 0.0, "%.4f")) {
-      if (std::isfinite(r) && r >= 0.0 && r <= kMaxCoordinate) {
-        r_ = r;
-        recompute();
-      } else {
-        ctx.notify("r: a radius in [0, 1000]");
+    {
+      instructor::FixedParam fixed("r");
+      if (ImGui::InputDouble("##r", &r, 0.0, 0.0, "%.4f")) {
+        if (std::isfinite(r) && r >= 0.0 && r <= kMaxCoordinate) {
+          r_ = r;
+          recompute();
+        } else {
+          ctx.notify("r: a radius in [0, 1000]");
+        }
       }
     }
     web::record_control("distances-r");
     ImGui::SameLine();
-    if (ImGui::Button("p₂ = p₁")) {
-      p2_ = p1_;
-      recompute();
+    {
+      instructor::FixedParam fixed("p2");
+      if (ImGui::Button("p₂ = p₁")) {
+        p2_ = p1_;
+        recompute();
+      }
     }
     web::record_control("distances-degenerate");
 
+    if (instructor::hidden("segment_distance")) {
+      // P11's answer, and every step that gives it (t*, c, |q - c|, the case).
+      instructor::hidden_line("d, and the steps to it (t*, c, |q − c|, the case)");
+      return;
+    }
     const SegmentDiskReport& s = segment_;
     if (panel::fold("project q onto the line p₁p₂")) {
       if (s.where == SegmentDiskCase::Degenerate) {
@@ -668,6 +713,19 @@ class DistancesLesson : public Lesson {
     v.push_clip();
     ImDrawList* dl = v.draw_list();
     const SegmentDiskReport& s = segment_;
+    if (instructor::hidden("segment_distance")) {
+      // The given numbers only: the segment, the disk and the handles; no c, no d, no meeting.
+      v.draw_disk(s.q, s.r, theme::with_alpha(theme::kObstacleFill, 110), theme::kObstacleEdge, 1.5f);
+      if (hover_ == Drag::Rim || drag_ == Drag::Rim) v.draw_circle(s.q, s.r, theme::kSelectedEdge, 3.0f);
+      v.draw_segment(s.p1, s.p2, kSegment, 4.0f);
+      marker(v, s.p1, kQ1, "p₁", Drag::P1);
+      marker(v, s.p2, theme::kGreen, "p₂", Drag::P2);
+      marker(v, s.q, theme::rgba(70, 70, 80), "q", Drag::Centre);
+      v.pop_clip();
+      caption(v, std::string("d: ") + instructor::kHidden);
+      hint(kSegmentHint);
+      return;
+    }
     // The disk: an obstacle, red-edged when the segment meets it.
     v.draw_disk(s.q, s.r, theme::with_alpha(theme::kObstacleFill, 110), s.meets ? kMeetColour : theme::kObstacleEdge,
                 s.meets ? 3.0f : 1.5f);
@@ -756,7 +814,7 @@ class DistancesLesson : public Lesson {
       else if (std::fabs((m - q_).norm() - r_) <= v.reach(7.0f)) hover_ = Drag::Rim;
     }
     if (hover_ != Drag::None || drag_ != Drag::None) ImGui::SetMouseCursor(ImGuiMouseCursor_Hand);
-    if (drag_ == Drag::None && hover_ != Drag::None && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+    if (drag_ == Drag::None && hover_ != Drag::None && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !fixed(hover_)) {
       drag_ = hover_;
       grab_point_ = m;
       drag_start_ = drag_ == Drag::P1 ? p1_ : drag_ == Drag::P2 ? p2_ : q_;
@@ -790,6 +848,7 @@ class DistancesLesson : public Lesson {
   WorkspaceView circle_view_, view_;
   Vec2 bounds_lo_{0, 0}, bounds_hi_{1, 1};
   Drag drag_ = Drag::None, hover_ = Drag::None;
+  std::string refused_;  // why a press on a handle did nothing (the notice, next frame)
   double drag_from_ = 0.0, grab_angle_ = 0.0;  // P10: the handle's angle and the mouse's at the press
   Vec2 grab_point_{0, 0}, drag_start_{0, 0};   // P11: the mouse and the handle at the press
 };

@@ -10,6 +10,7 @@
 #include <iterator>
 #include <optional>
 
+#include "app/shell/instructor.hpp"
 #include "app/shell/js_api.hpp"
 #include "app/shell/lesson.hpp"
 #include "app/shell/theme.hpp"
@@ -121,11 +122,14 @@ class NotationLesson : public Lesson {
   void panel(LabContext&) override {
     panel_texts_.clear();
     int mode = practice_ ? 1 : 0;
-    if (ImGui::RadioButton("Build a robot", &mode, 0)) practice_ = false;
-    ui::flow(ui::toggle_width("Practice"));
-    if (ImGui::RadioButton("Practice", &mode, 1) && !practice_) {
-      practice_ = true;
-      focus_answer_ = true;
+    {
+      instructor::FixedParam fixed("mode");
+      if (ImGui::RadioButton("Build a robot", &mode, 0)) practice_ = false;
+      ui::flow(ui::toggle_width("Practice"));
+      if (ImGui::RadioButton("Practice", &mode, 1) && !practice_) {
+        practice_ = true;
+        focus_answer_ = true;
+      }
     }
     said("Build a robot");
     said("Practice");
@@ -242,6 +246,8 @@ class NotationLesson : public Lesson {
 
   std::string describe() const override {
     const ConfigSpaceInfo info = configuration_space(shown());
+    if (instructor::hidden("q_notation"))
+      return "The robot (" + description(shown()) + "); its configuration space is " + instructor::kHidden + ".";
     return "The robot (" + description(shown()) + ") has the configuration space " + info.notation + ", of dimension " +
            std::to_string(info.dimension) + ".";
   }
@@ -260,6 +266,7 @@ class NotationLesson : public Lesson {
 
   void builder() {
     ui::section("The robot");
+    std::optional<instructor::FixedParam> fixed(std::in_place, "description");  // the robot built
     int base = static_cast<int>(robot_.base);
     ImGui::PushItemWidth(-60);
     if (ImGui::Combo("base", &base, kBaseNames, 5)) robot_.base = static_cast<RobotDescription::Base>(base);
@@ -284,8 +291,13 @@ class NotationLesson : public Lesson {
       if (ImGui::SmallButton(kPresets[i][0])) robot_ = parse_robot_description(kPresets[i][1]);
     }
 
+    fixed.reset();
     const ConfigSpaceInfo info = configuration_space(robot_);
     ui::section("Its configuration space");
+    if (instructor::hidden("q_notation")) {  // P1-P7: the student writes Q
+      instructor::hidden_line("Q, its dimension and a reason for each factor");
+      return;
+    }
     ImGui::TextColored(theme::vec4(theme::kTextKey), "Q = %s", info.notation.c_str());
     ImGui::TextWrapped("dimension %d: that many numbers fix a configuration", info.dimension);
     for (const NotationFactor& f : info.factors) {
@@ -343,12 +355,15 @@ class NotationLesson : public Lesson {
     }
     said("Check");
     ui::flow(ui::button_width("Next exercise"));
-    if (ImGui::Button("Next exercise")) {
-      exercise_ = (exercise_ + 1) % static_cast<int>(kExercises.size());
-      checked_ = false;
-      answer_buffer_[0] = '\0';
-      answer_.clear();
-      focus_answer_ = true;
+    {
+      instructor::FixedParam fixed("exercise");
+      if (ImGui::Button("Next exercise")) {
+        exercise_ = (exercise_ + 1) % static_cast<int>(kExercises.size());
+        checked_ = false;
+        answer_buffer_[0] = '\0';
+        answer_.clear();
+        focus_answer_ = true;
+      }
     }
     said("Next exercise");
     if (checked_) {
@@ -463,7 +478,7 @@ class NotationLesson : public Lesson {
       caption(dl, ImVec2(f.o.x + 8, y), theme::kLabel, line, wrap);
       y += font->CalcTextSizeA(fs, 1e9f, wrap, line).y;
     }
-    if (!practice_) {
+    if (!practice_ && !instructor::hidden("q_notation")) {
       const std::string q = "Q = " + configuration_space(robot).notation;
       caption(dl, ImVec2(f.o.x + 8, f.o.y + f.size.y - 28), theme::kBlue, q.c_str());
     }

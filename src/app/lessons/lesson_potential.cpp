@@ -14,6 +14,7 @@
 #include <memory>
 #include <optional>
 
+#include "app/shell/instructor.hpp"
 #include "app/shell/bundled_scenes.hpp"
 #include "app/shell/fonts.hpp"
 #include "app/shell/js_api.hpp"
@@ -117,17 +118,19 @@ std::string vertex_name(int i) {
   return out;
 }
 
-std::string describe(const DescentEvent& e) {
+// `with_force` off: |tau| is left out (an instructor hid P13's forces: instructor.hpp).
+std::string describe(const DescentEvent& e, bool with_force = true) {
   const std::string at = format_config(e.q);
+  const std::string force = with_force ? ", |τ| = " + fmt("%.3g", e.force) : std::string();
   switch (e.kind) {
     case DescentEvent::Kind::Descend:
-      return "descend to " + at + ": U = " + fmt("%.4g", e.U) + ", |τ| = " + fmt("%.3g", e.force) +
+      return "descend to " + at + ": U = " + fmt("%.4g", e.U) + force +
              (e.halvings > 0 ? " (step halved " + std::to_string(e.halvings) + "x to stay free)" : "");
     case DescentEvent::Kind::RandomWalk: return "random walk to " + at + ": U = " + fmt("%.4g", e.U);
     case DescentEvent::Kind::ReachedGoal: return "reached the goal at " + at;
     case DescentEvent::Kind::LocalMinimum:
       return std::string("local minimum at ") + at + (e.blocked ? " (every shorter step collides)" : "") +
-             ": U = " + fmt("%.4g", e.U) + ", |τ| = " + fmt("%.3g", e.force) + "; a random walk follows";
+             ": U = " + fmt("%.4g", e.U) + force + "; a random walk follows";
     case DescentEvent::Kind::GaveUp:
       return "stopped at " + at + ": " + (e.blocked ? "blocked" : "no progress") + ", no escapes left";
   }
@@ -147,7 +150,7 @@ class PotentialLesson : public Lesson, private Stepper {
     const long steps = descent_ ? descent_->steps() : 0;
     if (logged_ != steps) {
       if (steps == 0 || steps < logged_ || steps > logged_ + 1) ctx.log.clear();
-      if (steps > 0) ctx.log.add(steps, csl::app::describe(descent_->last_event()));
+      if (steps > 0) ctx.log.add(steps, csl::app::describe(descent_->last_event(), !instructor::hidden("p13_forces")));
       logged_ = steps;
     }
   }
@@ -159,6 +162,7 @@ class PotentialLesson : public Lesson, private Stepper {
     ImGui::TextDisabled("Example:");
     for (const Example& e : kExamples) {
       ui::flow(ui::button_width(e.label));  // same row while it fits (the panel may be narrow)
+      instructor::FixedScene fixed;  // an example brings its scene
       if (ImGui::SmallButton(e.label)) set_example(e.scene, ctx);
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", e.tooltip);
     }
@@ -172,11 +176,13 @@ class PotentialLesson : public Lesson, private Stepper {
   void field_controls() {
     bool changed = false;
     PotentialParams f = field_params_;
-    changed |= slider("ρ₀", &f.rho0, 0.02, 0.3, "region of influence of each obstacle");
-    changed |= slider("η", &f.eta, 1e-6, 1e-2, "repulsive gain", true);
-    changed |= slider("ζ", &f.zeta, 0.1, 10.0, "attractive gain", true);
-    changed |= slider("switch d", &f.switch_distance, 0.01, 1.0, "quadratic pull within d of the goal, conic beyond");
+    changed |= slider("ρ₀", &f.rho0, 0.02, 0.3, "region of influence of each obstacle", false, "rho0");
+    changed |= slider("η", &f.eta, 1e-6, 1e-2, "repulsive gain", true, "eta");
+    changed |= slider("ζ", &f.zeta, 0.1, 10.0, "attractive gain", true, "zeta");
+    changed |= slider("switch d", &f.switch_distance, 0.01, 1.0, "quadratic pull within d of the goal, conic beyond", false,
+                      "switch");
     if (robot_kind() == Kind::Polygon) {
+      instructor::FixedParam fixed("from");
       double theta = from_[2];
       if (slider("start θ", &theta, -kPi, kPi, "the robot's orientation where the descent starts (drag the robot to move it)"))
         set_from(config({from_[0], from_[1], theta}));
@@ -190,26 +196,35 @@ class PotentialLesson : public Lesson, private Stepper {
   void descent_controls(LabContext& ctx) {
     bool changed = false;
     DescentParams d = descent_params_;
-    changed |= slider("step", &d.step, 0.001, 0.1, "alpha: the length of one descent step", true);
+    changed |= slider("step", &d.step, 0.001, 0.1, "alpha: the length of one descent step", true, "step");
     int escapes = d.escapes;
-    if (ImGui::SliderInt("escapes", &escapes, 0, 20, "%d", ImGuiSliderFlags_AlwaysClamp)) {
-      d.escapes = escapes;
-      changed = true;
+    {
+      instructor::FixedParam fixed("escapes");
+      if (ImGui::SliderInt("escapes", &escapes, 0, 20, "%d", ImGuiSliderFlags_AlwaysClamp)) {
+        d.escapes = escapes;
+        changed = true;
+      }
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("random walks allowed out of local minima (0: plain descent)");
     }
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("random walks allowed out of local minima (0: plain descent)");
     int seed = static_cast<int>(std::min<std::uint64_t>(d.seed, 2147483647u));
-    if (ImGui::InputInt("seed", &seed) && seed >= 0) {
-      d.seed = static_cast<std::uint64_t>(seed);
-      changed = true;
+    {
+      instructor::FixedParam fixed("seed");
+      if (ImGui::InputInt("seed", &seed) && seed >= 0) {
+        d.seed = static_cast<std::uint64_t>(seed);
+        changed = true;
+      }
     }
     if (changed && d.problem().empty()) {
       descent_params_ = d;
       restart_descent();
     }
     // Back to the start and play: the button says "descend", so the robot moves at once.
-    if (ImGui::Button("Descend from the start")) {
-      set_from(scene_.start);
-      ctx.playback.playing = descent_ != nullptr;
+    {
+      instructor::FixedParam fixed("from");
+      if (ImGui::Button("Descend from the start")) {
+        set_from(scene_.start);
+        ctx.playback.playing = descent_ != nullptr;
+      }
     }
     web::record_control("potential-descend");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("from the scene's start, played step by step (Space pauses)");
@@ -445,11 +460,13 @@ class PotentialLesson : public Lesson, private Stepper {
     return config_to_json(c);
   }
 
-  bool slider(const char* label, double* v, double lo, double hi, const char* tip, bool log = false) {
+  // `key`: the parameter it sets, drawn disabled while the instructor fixed it.
+  bool slider(const char* label, double* v, double lo, double hi, const char* tip, bool log = false, const char* key = "") {
+    instructor::FixedParam fixed(key);
     // AlwaysClamp: a value typed with Ctrl+click stays in range too (0 for rho0 would be invalid).
     const ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp | (log ? ImGuiSliderFlags_Logarithmic : 0);
     const bool changed = ImGui::SliderScalar(label, ImGuiDataType_Double, v, &lo, &hi, log ? "%.3g" : "%.3f", flags);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tip);
+    if (ImGui::IsItemHovered() && !fixed.locked()) ImGui::SetTooltip("%s", tip);
     return changed;
   }
 
@@ -579,7 +596,10 @@ class PotentialLesson : public Lesson, private Stepper {
       return;
     }
     const Descent& d = *descent_;
-    ImGui::Text("step %ld  |τ| = %.3g  to the goal %.3f", d.steps(), d.force(), d.distance_to_goal());
+    if (instructor::hidden("p13_forces"))  // |tau| is P13's net force's size
+      ImGui::Text("step %ld  to the goal %.3f", d.steps(), d.distance_to_goal());
+    else
+      ImGui::Text("step %ld  |τ| = %.3g  to the goal %.3f", d.steps(), d.force(), d.distance_to_goal());
     robot_summary();
     ImGui::Text("local minima %d  escapes used %d of %d", d.local_minima(), d.escapes_used(), d.params().escapes);
     switch (d.outcome()) {
@@ -606,7 +626,8 @@ class PotentialLesson : public Lesson, private Stepper {
       ImGui::TextColored(theme::vec4(theme::kTextBad), "a control point is on an obstacle: U is infinite");
       return;
     }
-    ImGui::Text("U = %.4g  (attractive %.4g, repulsive %.4g)", r.U, r.U_att, r.U_rep);
+    if (instructor::hidden("p13_forces")) ImGui::Text("U = %.4g", r.U);  // (its repulsive part comes from each rho)
+    else ImGui::Text("U = %.4g  (attractive %.4g, repulsive %.4g)", r.U, r.U_att, r.U_rep);
   }
 
   // The control point whose equations are worked: the one chosen, or (none chosen, or the
@@ -734,6 +755,12 @@ class PotentialLesson : public Lesson, private Stepper {
       ImGui::PopFont();
       return;
     }
+    if (instructor::hidden("p13_forces")) {
+      // P13's numbers; the arrows in the view stay (directions, not values).
+      instructor::hidden_line("ρ, ∇ρ, the forces and τ at the control points");
+      ImGui::PopFont();
+      return;
+    }
     const PotentialReport r = field_->evaluate(shown());
     const ForcesText t = forces_text(r);
     const float avail = std::max(40.0f, size.y - ImGui::GetFrameHeightWithSpacing());
@@ -749,7 +776,8 @@ class PotentialLesson : public Lesson, private Stepper {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
         const bool chosen = static_cast<int>(i) == t.chosen;
-        if (ImGui::Selectable(t.rows[i][0].c_str(), chosen, ImGuiSelectableFlags_SpanAllColumns)) chosen_ = static_cast<int>(i);
+        const ImGuiSelectableFlags fixed = instructor::param_locked("point") ? ImGuiSelectableFlags_Disabled : 0;
+        if (ImGui::Selectable(t.rows[i][0].c_str(), chosen, ImGuiSelectableFlags_SpanAllColumns | fixed)) chosen_ = static_cast<int>(i);
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("work (5.5) and (5.6) for %s", t.rows[i][0].c_str());
         const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
         layout_.rows.push_back({lo.x, lo.y, hi.x, hi.y});
@@ -858,7 +886,12 @@ class PotentialLesson : public Lesson, private Stepper {
     if (kind != Kind::Arm) view_.draw_marker(Vec2(scene_.goal[0], scene_.goal[1]), theme::kGoal, "G");  // the arm's goal is angles
     title(view_, kind == Kind::Point ? "U(x, y): workspace = C-space" : "U_rep(x): what a control point feels from the obstacles");
 
-    if (robot_drag(q)) return;
+    const bool dragging = robot_drag(q);
+    if (refused_) {
+      ctx.notify(instructor::param_refusal("from") + ": the descent starts where it is.", 4.0);
+      refused_ = false;
+    }
+    if (dragging) return;
     SceneEditor::Options options;
     options.endpoints_are_points = kind != Kind::Arm;
     if (editor_.edit(view_, scene_, ctx, options)) scene_changed();
@@ -936,6 +969,10 @@ class PotentialLesson : public Lesson, private Stepper {
     if (drag_ == 0 && view_.hovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && editor_.tool() == SceneEditor::Tool::Select) {
       drag_ = grab(q, m);
       grab_offset_ = Vec2(q[0], q.size() > 1 ? q[1] : 0.0) - m;
+      if (drag_ != 0 && instructor::param_locked("from")) {  // where the descent starts is fixed
+        drag_ = 0;
+        refused_ = true;
+      }
     }
     if (drag_ == 0) return false;
     if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
@@ -1042,6 +1079,7 @@ class PotentialLesson : public Lesson, private Stepper {
     bool scrolls = false;                    // its content did not fit
   } layout_;
   int drag_ = 0;
+  bool refused_ = false;  // a press on the robot while its start is fixed (the notice says so)
   Vec2 grab_offset_{0, 0};
   bool placing_ = false;
 };

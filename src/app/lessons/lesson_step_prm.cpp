@@ -6,6 +6,7 @@
 #include "app/lessons/planner_session.hpp"
 #include "app/lessons/prm_controls.hpp"
 #include "app/shell/bundled_scenes.hpp"
+#include "app/shell/instructor.hpp"
 #include "app/shell/js_api.hpp"
 #include "app/shell/lesson.hpp"
 #include "app/shell/theme.hpp"
@@ -112,7 +113,8 @@ class StepPrmLesson : public Lesson {
 
   std::string describe() const override {
     // The planner's scene: during a drag that would replay slowly it is the one from before.
-    return describe_scene(session_.planned_scene(), prm().world()) + " " + describe_planner(prm()) +
+    return describe_scene(session_.planned_scene(), prm().world()) + " " +
+           describe_planner(prm(), !instructor::hidden("path_length")) +
            (replay_pending() ? " The roadmap is the scene's before the drag; it is replayed at the release." : "");
   }
 
@@ -195,7 +197,10 @@ class StepPrmLesson : public Lesson {
     ImGui::Text("|V| = %zu   |E| = %ld   components: %d", r.vertices.size(), planner.edges_alive(), planner.components());
     ImGui::Text("samples drawn %d of %d", planner.samples_drawn(), params_.samples);
     ImGui::Text("edge checks %ld   evaluations %ld", planner.edge_checks(), planner.evaluations());
-    if (planner.solved())
+    if (planner.solved() && instructor::hidden("path_length"))
+      ImGui::TextColored(theme::vec4(theme::kTextGood), "path found: %zu edges, its length %s", planner.path().size() - 1,
+                         instructor::kHidden);
+    else if (planner.solved())
       ImGui::TextColored(theme::vec4(theme::kTextGood), "path found: length %.4f, %zu edges", planner.path_length(),
                          planner.path().size() - 1);
     else if (planner.done())

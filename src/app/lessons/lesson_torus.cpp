@@ -15,6 +15,7 @@
 #include "core/planning/planner_text.hpp"
 #include "app/lessons/prm_controls.hpp"
 #include "app/shell/bundled_scenes.hpp"
+#include "app/shell/instructor.hpp"
 #include "app/shell/js_api.hpp"
 #include "app/shell/lesson.hpp"
 #include "app/shell/panel.hpp"
@@ -74,18 +75,24 @@ class TorusLesson : public Lesson {
     ImGui::AlignTextToFramePadding();
     ImGui::TextDisabled("right:");
     ImGui::SameLine();
-    ImGui::RadioButton("square", &right_view_, 0);
-    ui::flow(ui::toggle_width("torus (3-D)"));
-    ImGui::RadioButton("torus (3-D)", &right_view_, 1);
-    ui::flow(ui::toggle_width("both"));
-    ImGui::RadioButton("both", &right_view_, 2);
+    {
+      instructor::FixedParam fixed("view");
+      ImGui::RadioButton("square", &right_view_, 0);
+      ui::flow(ui::toggle_width("torus (3-D)"));
+      ImGui::RadioButton("torus (3-D)", &right_view_, 1);
+      ui::flow(ui::toggle_width("both"));
+      ImGui::RadioButton("both", &right_view_, 2);
+    }
 
     if (panel::fold("PRM on the torus")) {
       if (prm_controls(params_, world(), ctx, kLabTorusSamples)) rebuild(0);
       const int parts = prm().components();
       ui::text_flow(ui::format("|V| = %zu  |E| = %ld (%d across a seam), %d component%s", prm().roadmap().vertices.size(),
                                prm().edges_alive(), seam_edges(), parts, parts == 1 ? "" : "s"));
-      if (prm().solved()) ImGui::TextColored(theme::vec4(theme::kTextGood), "path found, length %.3f rad", prm().path_length());
+      if (prm().solved() && instructor::hidden("path_length"))
+        ImGui::TextColored(theme::vec4(theme::kTextGood), "path found, its length %s", instructor::kHidden);
+      else if (prm().solved())
+        ImGui::TextColored(theme::vec4(theme::kTextGood), "path found, length %.3f rad", prm().path_length());
       else if (prm().done()) ImGui::TextColored(theme::vec4(theme::kTextBad), "no path found");
       if (replay_pending()) {
         ImGui::PushTextWrapPos(0.0f);
@@ -251,7 +258,8 @@ class TorusLesson : public Lesson {
 
   std::string describe() const override {
     return describe_scene(scene_, world()) + " The arm is at " + config_text(q_) + " radians, " +
-           (world().is_free(q_) ? "free" : "in collision") + ". The roadmap on the torus: " + describe_planner(prm());
+           (world().is_free(q_) ? "free" : "in collision") + ". The roadmap on the torus: " +
+           describe_planner(prm(), !instructor::hidden("path_length"));
   }
 
  public:

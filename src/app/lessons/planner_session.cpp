@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "app/shell/instructor.hpp"
 #include "app/views/drag_replay.hpp"
 #include "imgui.h"
 
@@ -251,7 +252,14 @@ void PlannerSession::log_steps(EventLog& log, const std::string& ready) {
     log.clear();
     log.add(0, p.steps() == 0 ? ready : "at step " + std::to_string(p.steps()) + " (" + p.phase_label() + ")");
   }
-  if (p.steps() > 0) log.add(p.steps(), p.describe(p.last_event(), shown_.scene));
+  if (p.steps() > 0) {
+    std::string line = p.describe(p.last_event(), shown_.scene);
+    // An instructor hid the path's length (instructor.hpp): PRM's "a path of 7 edges, length
+    // 1.2345" loses its length.
+    if (const std::size_t at = line.find(", length "); at != std::string::npos && instructor::hidden("path_length"))
+      line.erase(at, line.find_first_not_of("0123456789.e-+", at + 9) - at);
+    log.add(p.steps(), line);
+  }
   logged_steps_ = p.steps();
   logged_version_ = version();
 }

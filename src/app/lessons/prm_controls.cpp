@@ -4,8 +4,10 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
+#include "app/shell/instructor.hpp"
 #include "app/shell/js_api.hpp"
 #include "app/shell/param_widgets.hpp"
 #include "imgui.h"
@@ -87,8 +89,13 @@ bool prm_controls(PrmParams& p, const CollisionWorld& world, LabContext& ctx, co
   const PrmParams before = p;
   bool changed = false;
   ImGui::PushItemWidth(-90.0f);
-  changed |= param_slider(samples, "samples n", p.samples, static_cast<int>(samples.min), static_cast<int>(samples.max));
-
+  {
+    instructor::FixedParam fixed("samples");
+    changed |= param_slider(samples, "samples n", p.samples, static_cast<int>(samples.min), static_cast<int>(samples.max));
+  }
+  // Each parameter's widgets disabled while the instructor fixed it (instructor.hpp).
+  std::optional<instructor::FixedParam> fixed;
+  fixed.emplace("neighbors");
   int rule = static_cast<int>(p.neighbors.kind);
   const char* rules[] = {"k nearest", "within radius r", "PRM*: k(n)"};
   if (ImGui::Combo("close =", &rule, rules, 3)) {
@@ -118,6 +125,7 @@ bool prm_controls(PrmParams& p, const CollisionWorld& world, LabContext& ctx, co
   }
   if (p.neighbors.kind == NeighborRule::Kind::PrmStar)
     ImGui::TextDisabled("k(n) = ceil(e (1 + 1/d) ln n)");
+  fixed.emplace("checker");
 
   // The three checkers of the CLI (a share link or the page's API may set any of them).
   int checker = p.checker.kind == EdgeCheckerSpec::Kind::Bisection ? 0
@@ -134,7 +142,9 @@ bool prm_controls(PrmParams& p, const CollisionWorld& world, LabContext& ctx, co
   if (p.checker.kind == EdgeCheckerSpec::Kind::Step)
     changed |= param_slider(kLabCheckerStepD, "D", p.checker.step, kLabCheckerStepD.min, kSliderMaxStep, "%.4f",
                             ImGuiSliderFlags_AlwaysClamp);
+  fixed.emplace("seed");
   changed |= param_input(kSeed, "seed", p.seed);
+  fixed.reset();
   ImGui::PopItemWidth();
   p.checker.resolution = std::max(p.checker.resolution, 2);
   changed |= keep_within_budget(p, space);  // more samples may have made r too large
