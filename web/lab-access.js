@@ -143,7 +143,7 @@ class CSpaceLabAccess {
     } catch {
       return;  // a lab that stopped: its shell shows why; the section keeps its last state
     }
-    this.showLessons(status.lesson);
+    this.showLessons(status.lesson, (status.restrictions || {}).lesson || null);
     this.showParams(status.lesson, specs);
     this.showSteps(status.stepping || { controls: false }, !!status.busy);
     if (text !== this.seen.text) this.description.textContent = this.seen.text = text;
@@ -172,7 +172,8 @@ class CSpaceLabAccess {
     else this.announceTimer = setTimeout(say, wait);
   }
 
-  showLessons(current) {
+  // `locked`: the lesson the instructor keeps the lab on (lock=lesson), or null.
+  showLessons(current, locked) {
     if (!this.lessons) {
       this.lessons = this.api.lessons();
       for (const l of this.lessonList ? this.lessons : []) {
@@ -181,11 +182,14 @@ class CSpaceLabAccess {
         b.addEventListener('click', () => this.act(() => this.api.selectLesson(l.id)));
       }
     }
-    if (current === this.seen.lesson) return;
+    if (current === this.seen.lesson && locked === this.seen.lockedLesson) return;
     this.seen.lesson = current;
+    this.seen.lockedLesson = locked;
     for (const b of this.lessonList ? this.lessonList.querySelectorAll('button') : []) {
       if (b.dataset.lesson === current) b.setAttribute('aria-current', 'true');
       else b.removeAttribute('aria-current');
+      b.disabled = !!locked && b.dataset.lesson !== locked;
+      b.title = b.disabled ? 'fixed by your instructor: this lab stays on its lesson' : '';
     }
     const info = this.lessons.find((l) => l.id === current);
     this.title.textContent = 'C-Space Lab: ' + (info ? info.name : current);
@@ -206,6 +210,11 @@ class CSpaceLabAccess {
       c.spec = spec;
       // A control being typed into keeps what is typed until its change is sent.
       if (!c.typing) this.setValue(c, spec.value);
+      // Fixed by the instructor (lock=): shown, not changeable, and said so beside it.
+      if (c.input.disabled !== !!spec.locked) {
+        c.input.disabled = !!spec.locked;
+        c.fixed.textContent = spec.locked ? 'fixed by your instructor' : '';
+      }
     }
   }
 
@@ -235,9 +244,10 @@ class CSpaceLabAccess {
     if (spec.kind === 'boolean') row.insertBefore(input, label);  // a checkbox before its label
     input.name = spec.name;
     const help = this.el('span', { id: id + '-help', className: 'lab-access-help', text: spec.help }, row);
+    const fixed = this.el('span', { id: id + '-fixed', className: 'lab-access-fixed' }, row);
     const error = this.el('span', { id: id + '-error', className: 'lab-access-error' }, row);
-    input.setAttribute('aria-describedby', (spec.help ? help.id + ' ' : '') + error.id);
-    const control = { input, error, spec, row };
+    input.setAttribute('aria-describedby', `${spec.help ? help.id + ' ' : ''}${fixed.id} ${error.id}`);
+    const control = { input, error, fixed, spec, row };
     input.addEventListener('input', () => { control.typing = true; });
     input.addEventListener('change', () => this.change(control));
     return control;

@@ -414,6 +414,7 @@
                                       reduced_motion: this.watchReducedMotion(), ...this.watchLook(),
                                       ...this.lookChoice(config) }));
         api.module.cslPageAction = (name) => setTimeout(() => this.action(name), 0);
+        this.restrict(false);  // nothing the instructor hid is drawn while the link applies
         notes = await this.start();
       } catch (e) {
         if (this.dead) return;  // the crash panel says it
@@ -422,6 +423,12 @@
         if (this.marker && this.markerFrame === null) this.restoreDone(false);
       } finally {
         if (!this.dead) {  // whatever happened above, work from here on is saved
+          try {
+            const bad = this.restrict(true);
+            if (bad.length) notes.push('Not used from the link: ' + bad.join('; ') + '.');
+          } catch (e) {
+            if (!this.dead) notes.push(`The link's lock, hide or reveal could not be applied (${describe(e)}).`);
+          }
           this.started = true;
           this.startAutosave();
           this.startHeartbeat();
@@ -430,6 +437,53 @@
       if (this.dead) return;
       this.refreshHistory();
       if (notes.length) api.notify(notes.join(' '), 15);
+    }
+
+    /**
+     * The link's lock, hide and reveal (lab-url.js restrictionsOf) for the app's "restrict",
+     * which checks the words against the link's lesson. First (withLocks false) hide and reveal
+     * alone, before the link applies, so that no hidden answer is drawn meanwhile; then, once it
+     * applied, the locks too: they hold each lesson to what the link (or the saved work of this
+     * link) set. Every start reads them from the link or data-lab again, so a reload keeps them.
+     * Returns the words the app left out (second call only).
+     */
+    restrict(withLocks) {
+      const values = U.parseConfig(this.options.config).values;
+      const { restrictions, problems } = U.restrictionsOf(values);
+      if (!Object.keys(restrictions).length) {
+        this.restrictions = null;
+        return withLocks ? problems : [];
+      }
+      const args = Object.assign({}, restrictions);
+      const lesson = this.linkLesson(values);
+      if (lesson) args.lesson = lesson;
+      if (!withLocks) delete args.lock;
+      const r = this.api.call('restrict', args);
+      this.restrictions = r;
+      return withLocks ? problems.concat(r.problems) : [];
+    }
+
+    /** The lesson a link opens (its problem's, for a problem link), or null (the app's first). */
+    linkLesson(values) {
+      if (values.has('problem')) {
+        const raw = String(values.get('problem')).toUpperCase();
+        const id = /^\d+$/.test(raw) ? 'P' + raw : raw;
+        const p = this.api.call('homework').find((x) => x.id === id);
+        return p ? p.lesson : null;
+      }
+      const id = values.get('lesson');
+      return id && (this.lessons || []).some((l) => l.id === id) ? id : null;
+    }
+
+    /** What a link written here keeps of the instructor's: {lock, hide, reveal} (Share, Embed, Open in full). */
+    linkRestrictions() {
+      const r = this.restrictions;
+      const out = {};
+      if (!r) return out;
+      if (r.lock) out.lock = r.lock;
+      if (r.hide) out.hide = r.hide;
+      if (r.reveal && r.reveal !== 'never') out.reveal = r.reveal;
+      return out;
     }
 
     lessonName(id) {
@@ -627,7 +681,8 @@
         }
         part((e) => `problem ${U.excerpt(raw)} (${e.message})`, () => api.call('open_problem', args));
         for (const key of values.keys())
-          if (key !== 'problem' && key !== 'seed' && !U.PRESENTATION.has(key)) problems.push(`${key} (a problem link sets up its own)`);
+          if (key !== 'problem' && key !== 'seed' && !U.PRESENTATION.has(key) && !U.RESTRICTION_KEYS.includes(key))
+            problems.push(`${key} (a problem link sets up its own)`);
         return problems;
       }
       let lesson = this.lessons[0].id;  // the app's first lesson, as on a fresh start
@@ -850,7 +905,13 @@
           }
         }
       }
-      if (known.has(record.current)) this.api.selectLesson(record.current);
+      if (known.has(record.current)) {
+        try {
+          this.api.selectLesson(record.current);
+        } catch (e) {
+          if (this.dead) throw e;  // (lock=lesson: the lab stays on its lesson)
+        }
+      }
       return problems;
     }
 
@@ -1031,7 +1092,9 @@
 
     /** The link that reproduces what is on screen: {url, problems}. */
     async shareLink(extra = {}, home = this.options.home) {
-      extra = Object.assign(this.options.task && this.options.task.text ? { task: this.options.task.text } : {}, extra);
+      // The instructor's lock and hide go on with the link: a student passing it on keeps them.
+      extra = Object.assign(this.options.task && this.options.task.text ? { task: this.options.task.text } : {},
+                            this.linkRestrictions(), extra);
       const { query, problems } = await U.buildQuery(this.api.snapshot(), this.bundled, extra);
       return { url: home + '?' + query, query, problems };
     }
@@ -1051,7 +1114,7 @@
 
     async embed() {
       const label = this.lessonName(this.api.status().lesson);
-      const { query } = await U.buildQuery(this.api.snapshot(), this.bundled);
+      const { query } = await U.buildQuery(this.api.snapshot(), this.bundled, this.linkRestrictions());
       const id = 'lab-' + U.hash(query + Date.now()).slice(0, 6);
       const fields = this.embedSnippets(query, id, label, this.options.task ? this.options.task.text : '');
       const dialog = this.showDialog('Embed this lab', ['This lab as it is now, for a course page. The embed keeps each student\'s own work in their browser.'], fields);
@@ -1190,6 +1253,7 @@
           value.format.startsWith('cspacelab-') && value.scene && typeof value.scene === 'object')
         value = value.scene;  // an exported roadmap/state file: its scene
       if (!value || typeof value !== 'object' || Array.isArray(value)) return fail('is not a scene (a JSON object)');
+      if (this.api.status().restrictions.scene) return fail('was not imported: the scene is fixed by your instructor (lock=scene)');
       // A scene the app cannot draw must not come back at every start: protected like a restore.
       this.beginRestore('an imported scene', { kind: 'work' });
       try {
@@ -1313,7 +1377,9 @@
       this.cleanText = null;
       this.refreshHistory();
       this.saveNow();
-      return this.say(`${this.lessonName(lesson)} is back to its default. "Restore my previous work" undoes this. ${this.droppedText()}`, 8);
+      // (A lock holds the scene and parameters the link set: reset brings those back.)
+      const to = this.restrictions && this.restrictions.lock ? 'to what your instructor set up' : 'to its default';
+      return this.say(`${this.lessonName(lesson)} is back ${to}. "Restore my previous work" undoes this. ${this.droppedText()}`, 8);
     }
 
     /** The newest previous work (the top bar's button): pressed twice, it undoes itself. */

@@ -14,6 +14,13 @@
 //            (the student's own choice in File > Display is kept by the page)
 //   and the lesson's own parameters (whatever its params() reports: samples, neighbors,
 //   checker, seed for Step PRM; grid_n, p, q for Collision checking; …).
+//   lock     scene, params, lesson or a parameter's name: what the student cannot change
+//   hide     answers (every lesson's), none, or answers by name (min_n, ...): not shown
+//   reveal   never | after-answer: a hidden answer comes back once its homework exercise was
+//            answered right (default never)
+//            (lock, hide, reveal: comma-separated words the app reads, core/teaching/restrictions.hpp;
+//            problem links take them too; Share and Embed write them again, so a link passed on
+//            keeps its locks; `cspacelab link` writes them the same way)
 // Values are never evaluated: numbers must match a number's syntax, lists are comma-separated
 // numbers, strings go to the app, which checks them. A scene is a bundled scene's name or
 //   z.<base64url of the deflate-raw of the scene's JSON>   (CompressionStream, all current browsers)
@@ -31,9 +38,13 @@
     entries: 64,             // key=value pairs
     depth: 64,               // levels of JSON nesting (the app's kMaxJsonDepth, src/core/scene/scene.hpp)
   });
-  const RESERVED = new Set(['lesson', 'scene', 'steps', 'ui', 'id', 'problem', 'task', 'scheme', 'contrast']);
-  // Keys that say how to show the lab, not what it shows: they are not part of its state.
+  const RESERVED = new Set(['lesson', 'scene', 'steps', 'ui', 'id', 'problem', 'task', 'scheme', 'contrast',
+                            'lock', 'hide', 'reveal']);
+  // Keys that say how to show the lab, not what it shows: they are not part of its state. (lock,
+  // hide and reveal are: a link that adds a lock applies again, so the lock holds the link's scene.)
   const PRESENTATION = new Set(['ui', 'id', 'task', 'scheme', 'contrast']);
+  const RESTRICTION_KEYS = ['lock', 'hide', 'reveal'];
+  const WORDS = /^[a-z0-9_,-]*$/;
   const KEY = /^[a-z][a-z0-9_]{0,31}$/;
   const NAME = /^[a-z0-9][a-z0-9-]{0,39}$/;
   const NUMBER = /^-?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d{1,3})?$/;
@@ -312,6 +323,23 @@
     return { query: parts.join('&'), problems };
   }
 
+  /**
+   * A link's lock, hide and reveal, as text for the app's "restrict" (which names bad words):
+   * {restrictions: {lock, hide, reveal}, problems}. A value that is not comma-separated words is
+   * a problem here and left out.
+   */
+  function restrictionsOf(values) {
+    const restrictions = {};
+    const problems = [];
+    for (const key of RESTRICTION_KEYS) {
+      if (!values.has(key)) continue;
+      const raw = values.get(key);
+      if (WORDS.test(raw)) restrictions[key] = raw;
+      else problems.push(`${key} ${excerpt(raw)} (comma-separated words: a-z, 0-9, _ and -)`);
+    }
+    return { restrictions, problems };
+  }
+
   /** A short stable hash (FNV-1a, 32 bits, hex) of a string: storage ids of configured embeds. */
   function hash(text) {
     let h = 0x811c9dc5;
@@ -323,8 +351,8 @@
   }
 
   const api = Object.freeze({
-    LIMITS, RESERVED, PRESENTATION, NAME, STEPS, ID,
-    excerpt, sizeText, parseConfig, hasState, stateKey, parseValue, formatValue, encodeValue,
+    LIMITS, RESERVED, PRESENTATION, RESTRICTION_KEYS, NAME, STEPS, ID,
+    excerpt, sizeText, parseConfig, hasState, stateKey, parseValue, formatValue, encodeValue, restrictionsOf,
     encodeScene, decodeScene, tooDeep, buildQuery, hash, toBase64Url, fromBase64Url,
   });
   global.CSpaceLabUrl = api;

@@ -162,3 +162,20 @@ test('buildQuery writes a task that parses back to the same text', async () => {
   assert.doesNotMatch(query, /[\n "<>]/, 'escaped');
   assert.equal(U.parseConfig(query).values.get('task'), task);
 });
+
+test('lock, hide and reveal: reserved keys, read as words, written again by buildQuery', async () => {
+  for (const key of ['lock', 'hide', 'reveal']) assert.ok(U.RESERVED.has(key), key);
+  const { values } = U.parseConfig('lesson=collision&lock=scene,params&hide=min_n&reveal=after-answer&grid_n=4');
+  assert.deepEqual(U.restrictionsOf(values), {
+    restrictions: { lock: 'scene,params', hide: 'min_n', reveal: 'after-answer' }, problems: [] });
+  // Not words: named and left out (the app names bad words itself).
+  const bad = U.restrictionsOf(U.parseConfig('lock=scene%3Cb%3E&hide=answers').values);
+  assert.deepEqual(bad.restrictions, { hide: 'answers' });
+  assert.equal(bad.problems.length, 1);
+  assert.match(bad.problems[0], /^lock "scene<b>" \(comma-separated words/);
+  // Share writes them after the state; a parameter of the same name is never written as one.
+  const { query, problems } = await U.buildQuery({ lesson: 'collision', scene: null, params: { grid_n: 4, lock: 'x' }, steps: 2 },
+                                                 {}, { lock: 'scene,params', hide: 'min_n' });
+  assert.equal(query, 'lesson=collision&grid_n=4&steps=2&lock=scene,params&hide=min_n');
+  assert.deepEqual(problems, ['the parameter lock cannot be written in a link']);
+});
