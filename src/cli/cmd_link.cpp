@@ -238,7 +238,7 @@ int run_link(Args& args, std::ostream& os) {
   const std::optional<std::string> task = args.take("task");
   const std::string base = check_base(args.take("base").value_or(""));
   std::optional<Scene> scene;
-  if (!lesson->robots.empty()) scene = load_scene(args.take_positional("SCENE.json"));
+  if (lesson->robots.size() > 0) scene = load_scene(args.take_positional("SCENE.json"));
   args.finish();
 
   if (scene)
@@ -256,14 +256,14 @@ int run_link(Args& args, std::ostream& os) {
   }
   Restrictions r;
   try {
-    r = parse_restrictions(lock, hide, reveal.value_or(""), lesson->id);
+    r = parse_restrictions(lock, hide, reveal.value_or(""), std::string(lesson->id));
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--") + e.what());
   }
 
   // In the order of the page's Share (lesson, scene, parameters) and then the rest.
   std::string query;
-  add(query, "lesson", encode_value(lesson->id));
+  add(query, "lesson", encode_value(std::string(lesson->id)));
   if (scene) add(query, "scene", encode_scene(*scene));
   for (auto it = params.begin(); it != params.end(); ++it) add(query, it.key(), encode_value(format_value(it.key(), *it)));
   if (!r.lock_text().empty()) add(query, "lock", encode_value(r.lock_text()));
@@ -277,7 +277,7 @@ int run_link(Args& args, std::ostream& os) {
   const std::string id = "lab-" + fnv_hex(query).substr(0, 6);
   const std::string iframe = "<iframe src=\"" + escape_attribute(base + "embed.html?" + query + "&id=" + id) +
                              "\" width=\"100%\" height=\"600\" style=\"border:0\" title=\"C-Space Lab: " +
-                             escape_attribute(lesson->name) + "\" allow=\"clipboard-write\"></iframe>";
+                             escape_attribute(std::string(lesson->name)) + "\" allow=\"clipboard-write\"></iframe>";
   print_json(os, {{"url", base + "index.html?" + query}, {"iframe", iframe}});
   return 0;
 }

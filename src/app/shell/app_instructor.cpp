@@ -133,7 +133,7 @@ void App::instructor_note() {
   }
   if (r.lock_lesson) fixed.push_back("the lesson");
   std::vector<std::string> hidden;
-  for (const HideableAnswer* a : instructor::hidden_answers(lesson_id_)) hidden.push_back(a->name);
+  for (const HideableAnswer* a : instructor::hidden_answers(lesson_id_)) hidden.push_back(std::string(a->name));
   if (fixed.empty() && hidden.empty()) return;
   std::string text;
   if (!fixed.empty()) text = "Fixed by your instructor: " + names_text(fixed) + ".";
@@ -153,7 +153,7 @@ void App::register_instructor_api() {
   const auto restrictions_json = [this] {
     json out = restrictions_to_json(instructor::restrictions());
     json now = json::array();
-    for (const HideableAnswer* a : instructor::hidden_answers(lesson_id_)) now.push_back(a->name);
+    for (const HideableAnswer* a : instructor::hidden_answers(lesson_id_)) now.push_back(std::string(a->name));
     out["hidden_now"] = now;
     out["locked_lesson"] = instructor::locked_lesson().empty() ? json(nullptr) : json(instructor::locked_lesson());
     return out;
@@ -186,14 +186,19 @@ void App::register_instructor_api() {
           "{lessons: [{id, name, params, robots}], answers: [{name, lesson, what, problems, fields}]}",
           [](const json&) {
             json lessons = json::array(), answers = json::array();
+            const auto list = [](std::initializer_list<std::string_view> words) {
+              json out = json::array();
+              for (const std::string_view w : words) out.push_back(std::string(w));
+              return out;
+            };
             for (const CataloguedLesson& l : lesson_catalogue()) {
               json params = json::array();
-              for (const LessonParam& p : l.params) params.push_back(p.name);
-              lessons.push_back({{"id", l.id}, {"name", l.name}, {"params", params}, {"robots", l.robots}});
+              for (const LessonParam& p : l.params) params.push_back(std::string(p.name));
+              lessons.push_back({{"id", std::string(l.id)}, {"name", std::string(l.name)}, {"params", params}, {"robots", list(l.robots)}});
             }
             for (const HideableAnswer& a : hideable_answers())
-              answers.push_back({{"name", a.name}, {"lesson", a.lesson}, {"what", a.what}, {"problems", a.problems},
-                                 {"fields", a.fields}});
+              answers.push_back({{"name", std::string(a.name)}, {"lesson", std::string(a.lesson)}, {"what", std::string(a.what)},
+                                 {"problems", list(a.problems)}, {"fields", list(a.fields)}});
             return json{{"lessons", lessons}, {"answers", answers}};
           });
   api.add("restrictions",

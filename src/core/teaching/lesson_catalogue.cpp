@@ -1,6 +1,7 @@
 #include "core/teaching/lesson_catalogue.hpp"
 
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 
 #include "core/base/text.hpp"
@@ -15,70 +16,74 @@ using K = LessonParamKind;
 
 namespace {
 
-// The PRM lessons' four (app/lessons/prm_controls.cpp): a seed is any 64-bit integer >= 0 there,
-// wider than kSeed's 2^53 - 1.
-std::vector<LessonParam> prm_params(const ParamSpec& samples) {
-  return {{"samples", K::Integer, &samples},
-          {"neighbors", K::Text, nullptr, {}, -kInf, kInf, LessonParamSyntax::NeighborRule},
-          {"checker", K::Text, nullptr, {}, -kInf, kInf, LessonParamSyntax::EdgeChecker},
-          {"seed", K::Integer, nullptr, {}, 0, kInf}};
-}
+// The notation lesson's nine practice exercises (kExercises in lesson_notation.cpp).
+constexpr int kNotationExercises = 9;
 
-std::vector<CataloguedLesson> make_catalogue() {
-  std::vector<LessonParam> torus = prm_params(kLabTorusSamples);
-  torus.push_back({"q", K::Pair});
-  torus.push_back({"view", K::Choice, nullptr, {"square", "torus", "both"}});
-  // The notation lesson's nine practice exercises (kExercises in lesson_notation.cpp).
-  constexpr int kNotationExercises = 9;
-  return {
-      {"torus", "2-link arm and the torus", torus, {"arm2"}},
-      {"notation",
-       "C-space notation",
-       {{"description", K::Text, nullptr, {}, -kInf, kInf, LessonParamSyntax::RobotDescription},
-        {"mode", K::Choice, nullptr, {"build", "practice"}},
-        {"exercise", K::Integer, nullptr, {}, 0, kNotationExercises - 1}},
-       {}},
-      {"collision",
-       "Collision checking",
-       {{"grid_n", K::Integer, &kTracedGridN}, {"p", K::Pair}, {"q", K::Pair}},
-       {"point", "arm2"}},
-      {"distances",
-       "Distances",
-       {{"tool", K::Choice, nullptr, {"s1", "segment"}},
-        {"q1", K::Number, nullptr, {}, -1000, 1000},
-        {"q2", K::Number, nullptr, {}, -1000, 1000},
-        {"p1", K::Pair, nullptr, {}, -1000, 1000},
-        {"p2", K::Pair, nullptr, {}, -1000, 1000},
-        {"q", K::Pair, nullptr, {}, -1000, 1000},
-        {"r", K::Number, nullptr, {}, 0, 1000}},
-       {}},
-      {"analysis",
-       "PRM analysis",
-       {{"sample_counts", K::IntegerList, &kLabExperimentSamples, {}, -kInf, kInf, LessonParamSyntax::None,
-         kLabMaxSampleCounts},
-        {"trials", K::Integer, &kLabExperimentTrials},
-        {"tab", K::Choice, nullptr, {"bound", "tiling", "visibility"}},
-        {"point", K::Pair, nullptr, {}, 0, 1},
-        {"gap", K::Number, nullptr, {}, 0, 1},
-        {"mc_trials", K::Integer, &kLabVisibilityTrials},
-        {"mc_seed", K::Integer, &kMcSeed},
-        {"target", K::Number, nullptr, {}, 0, 1}},
-       {"point", "polygon"}},
-      {"potential",
-       "Potential fields",
-       {{"rho0", K::Number, &kFieldRho0},
-        {"eta", K::Number, &kFieldEta},
-        {"zeta", K::Number, &kFieldZeta},
-        {"switch", K::Number, &kFieldSwitch},
-        {"step", K::Number, &kDescentStep},
-        {"escapes", K::Integer, &kDescentEscapes},
-        {"seed", K::Integer, nullptr, {}, 0, kInf},
-        {"from", K::NumberList},
-        {"point", K::Integer, nullptr, {}, -1, 100000}},
-       {"point", "arm2", "polygon"}},
-      {"step-prm", "Step PRM", prm_params(kLabPrmSamples), {"point"}},
-  };
-}
+// (Each lesson as data: the PRM lessons' four come first in the torus's and Step PRM's lists, as
+// app/lessons/prm_controls.cpp makes them; a seed there is any 64-bit integer >= 0, wider than
+// kSeed's 2^53 - 1.)
+const CataloguedLesson kLessons[] = {
+    {"torus",
+     "2-link arm and the torus",
+     {{"samples", K::Integer, &kLabTorusSamples},
+      {"neighbors", K::Text, nullptr, {}, -kInf, kInf, LessonParamSyntax::NeighborRule},
+      {"checker", K::Text, nullptr, {}, -kInf, kInf, LessonParamSyntax::EdgeChecker},
+      {"seed", K::Integer, nullptr, {}, 0, kInf},
+      {"q", K::Pair},
+      {"view", K::Choice, nullptr, {"square", "torus", "both"}}},
+     {"arm2"}},
+    {"notation",
+     "C-space notation",
+     {{"description", K::Text, nullptr, {}, -kInf, kInf, LessonParamSyntax::RobotDescription},
+      {"mode", K::Choice, nullptr, {"build", "practice"}},
+      {"exercise", K::Integer, nullptr, {}, 0, kNotationExercises - 1}},
+     {}},
+    {"collision",
+     "Collision checking",
+     {{"grid_n", K::Integer, &kTracedGridN}, {"p", K::Pair}, {"q", K::Pair}},
+     {"point", "arm2"}},
+    {"distances",
+     "Distances",
+     {{"tool", K::Choice, nullptr, {"s1", "segment"}},
+      {"q1", K::Number, nullptr, {}, -1000, 1000},
+      {"q2", K::Number, nullptr, {}, -1000, 1000},
+      {"p1", K::Pair, nullptr, {}, -1000, 1000},
+      {"p2", K::Pair, nullptr, {}, -1000, 1000},
+      {"q", K::Pair, nullptr, {}, -1000, 1000},
+      {"r", K::Number, nullptr, {}, 0, 1000}},
+     {}},
+    {"analysis",
+     "PRM analysis",
+     {{"sample_counts", K::IntegerList, &kLabExperimentSamples, {}, -kInf, kInf, LessonParamSyntax::None,
+       kLabMaxSampleCounts},
+      {"trials", K::Integer, &kLabExperimentTrials},
+      {"tab", K::Choice, nullptr, {"bound", "tiling", "visibility"}},
+      {"point", K::Pair, nullptr, {}, 0, 1},
+      {"gap", K::Number, nullptr, {}, 0, 1},
+      {"mc_trials", K::Integer, &kLabVisibilityTrials},
+      {"mc_seed", K::Integer, &kMcSeed},
+      {"target", K::Number, nullptr, {}, 0, 1}},
+     {"point", "polygon"}},
+    {"potential",
+     "Potential fields",
+     {{"rho0", K::Number, &kFieldRho0},
+      {"eta", K::Number, &kFieldEta},
+      {"zeta", K::Number, &kFieldZeta},
+      {"switch", K::Number, &kFieldSwitch},
+      {"step", K::Number, &kDescentStep},
+      {"escapes", K::Integer, &kDescentEscapes},
+      {"seed", K::Integer, nullptr, {}, 0, kInf},
+      {"from", K::NumberList},
+      {"point", K::Integer, nullptr, {}, -1, 100000}},
+     {"point", "arm2", "polygon"}},
+    {"step-prm",
+     "Step PRM",
+     {{"samples", K::Integer, &kLabPrmSamples},
+      {"neighbors", K::Text, nullptr, {}, -kInf, kInf, LessonParamSyntax::NeighborRule},
+      {"checker", K::Text, nullptr, {}, -kInf, kInf, LessonParamSyntax::EdgeChecker},
+      {"seed", K::Integer, nullptr, {}, 0, kInf}},
+     {"point"}},
+};
 
 // A bound as help texts print it ("0.5", "1000"): param_value_text of any real spec.
 std::string plain(double v) { return param_value_text(kFieldZeta, v); }
@@ -110,7 +115,7 @@ std::string number_problem(const LessonParam& p, const json& v, bool integer) {
 }  // namespace
 
 const std::vector<CataloguedLesson>& lesson_catalogue() {
-  static const std::vector<CataloguedLesson> catalogue = make_catalogue();
+  static const std::vector<CataloguedLesson> catalogue(std::begin(kLessons), std::end(kLessons));
   return catalogue;
 }
 
@@ -122,7 +127,7 @@ const CataloguedLesson* find_catalogued_lesson(const std::string& id) {
 
 std::string lesson_ids_text() {
   std::string out;
-  for (const CataloguedLesson& l : lesson_catalogue()) out += (out.empty() ? "" : ", ") + l.id;
+  for (const CataloguedLesson& l : lesson_catalogue()) out += (out.empty() ? "" : ", ") + std::string(l.id);
   return out;
 }
 
@@ -133,15 +138,15 @@ std::string lesson_param_names_text(const CataloguedLesson& lesson) {
 }
 
 std::string lesson_param_problem(const LessonParam& p, const json& v) {
-  const std::string name = p.name;
+  const std::string name(p.name);
   switch (p.kind) {
     case K::Integer: return number_problem(p, v, true);
     case K::Number: return number_problem(p, v, false);
     case K::Choice: {
       std::string list;
-      for (const std::string& c : p.choices) list += (list.empty() ? "" : ", ") + c;
+      for (const std::string_view c : p.choices) list += (list.empty() ? "" : ", ") + std::string(c);
       if (v.is_string())
-        for (const std::string& c : p.choices)
+        for (const std::string_view c : p.choices)
           if (v.get<std::string>() == c) return "";
       return name + ": one of " + list;
     }
@@ -200,7 +205,7 @@ std::string lesson_params_problem(const CataloguedLesson& lesson, const json& pa
     for (const LessonParam& p : lesson.params)
       if (it.key() == p.name) found = &p;
     if (!found)
-      return "\"" + printable(it.key(), 40) + "\" is not a parameter of " + lesson.id + " (" +
+      return "\"" + printable(it.key(), 40) + "\" is not a parameter of " + std::string(lesson.id) + " (" +
              lesson_param_names_text(lesson) + ")";
     if (std::string problem = lesson_param_problem(*found, it.value()); !problem.empty()) return problem;
   }
@@ -208,14 +213,15 @@ std::string lesson_params_problem(const CataloguedLesson& lesson, const json& pa
 }
 
 std::string lesson_scene_problem(const CataloguedLesson& lesson, const Scene& scene) {
-  if (lesson.robots.empty()) return "the " + lesson.id + " lesson has no scene";
+  const std::string id(lesson.id);
+  if (lesson.robots.size() == 0) return "the " + id + " lesson has no scene";
   const std::string type = robot_type_name(scene.robot);
   std::string list;
-  for (const std::string& r : lesson.robots) {
+  for (const std::string_view r : lesson.robots) {
     if (r == type) return "";
-    list += (list.empty() ? "" : ", ") + r;
+    list += (list.empty() ? "" : ", ") + std::string(r);
   }
-  return "the " + lesson.id + " lesson takes scenes with robot " + list + "; this one has '" + type + "'";
+  return "the " + id + " lesson takes scenes with robot " + list + "; this one has '" + type + "'";
 }
 
 }  // namespace csl

@@ -5,9 +5,14 @@
 // what the CLI's `link` command checks a link against, and what the restrictions of a link
 // (restrictions.hpp: lock=PARAM) name. tests/e2e/lock-hide.test.mjs compares it with the app's
 // lessons, their param_specs and the scenes they take, so the two cannot drift apart unseen.
+//
+// The lists are static data (string views and initializer lists, no code to build them): they
+// are in the wasm, whose budget is tight.
 #include <nlohmann/json.hpp>
 
+#include <initializer_list>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/base/params.hpp"
@@ -30,22 +35,22 @@ enum class LessonParamKind {
 enum class LessonParamSyntax { None, NeighborRule, EdgeChecker, RobotDescription };
 
 struct LessonParam {
-  const char* name;                  ///< the key of params() and of a link
+  std::string_view name;             ///< the key of params() and of a link
   LessonParamKind kind;
   const ParamSpec* spec = nullptr;   ///< the lab's spec (its range, for Integer, Number, IntegerList)
-  std::vector<std::string> choices = {};
+  std::initializer_list<std::string_view> choices = {};
   double lo = -kInf, hi = kInf;      ///< without a spec: the inclusive range of a number, or of each item
   LessonParamSyntax syntax = LessonParamSyntax::None;
   int max_items = 0;                 ///< IntegerList: at most this many
 };
 
 struct CataloguedLesson {
-  std::string id;    ///< as in links and the API ("step-prm")
-  std::string name;  ///< as in the lesson menu ("Step PRM")
-  std::vector<LessonParam> params;
+  std::string_view id;    ///< as in links and the API ("step-prm")
+  std::string_view name;  ///< as in the lesson menu ("Step PRM")
+  std::initializer_list<LessonParam> params;
   /// The robot types whose scenes it takes: "point", "arm2" (the 2-link arm), "arm" (any
   /// number of links), "polygon". Empty: the lesson has no scene.
-  std::vector<std::string> robots;
+  std::initializer_list<std::string_view> robots;
 };
 
 /// Every lesson, in the order of the app's menu (by category, then name).

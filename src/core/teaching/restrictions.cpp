@@ -1,6 +1,7 @@
 #include "core/teaching/restrictions.hpp"
 
 #include <algorithm>
+#include <iterator>
 #include <stdexcept>
 
 #include "core/base/text.hpp"
@@ -16,8 +17,7 @@ namespace {
 // own would ask. What stays visible is said where it is a choice: pictures that are not numbers
 // (the arc on the circle, the cone in sight, the force arrows, the path drawn), and the given
 // numbers and the first steps of a method (a ray's slope, a point's clearance check).
-std::vector<HideableAnswer> make_answers() {
-  return {
+const HideableAnswer kAnswers[] = {
       {"path_length", "torus", "the length of the path PRM found on the torus (the path itself is drawn)", {},
        {"/prm/path_length"}},
       {"q_notation",
@@ -69,8 +69,7 @@ std::vector<HideableAnswer> make_answers() {
         "/control_points/*/U_rep", "/control_points/*/tau", "/tau", "/F_att", "/F_rep", "/U_rep", "/tau_att",
         "/tau_rep", "/forces_table"}},
       {"path_length", "step-prm", "the length of the path PRM found (the path itself is drawn)", {}, {"/path_length"}},
-  };
-}
+};
 
 // "a,b" -> {"a", "b"}; "" -> {} (an empty piece between separators is kept: a bad word).
 std::vector<std::string> split(const std::string& text, char sep) {
@@ -104,7 +103,7 @@ std::string join(const std::vector<std::string>& words, const char* sep = ", ") 
 std::vector<std::string> answer_names(const std::string& lesson) {
   std::vector<std::string> out;
   for (const HideableAnswer& a : hideable_answers())
-    if (lesson.empty() || a.lesson == lesson) add_unique(out, a.name);
+    if (lesson.empty() || a.lesson == lesson) add_unique(out, std::string(a.name));
   return out;
 }
 
@@ -135,7 +134,7 @@ void erase_path(json& node, const std::vector<std::string>& path, std::size_t at
 }  // namespace
 
 const std::vector<HideableAnswer>& hideable_answers() {
-  static const std::vector<HideableAnswer> answers = make_answers();
+  static const std::vector<HideableAnswer> answers(std::begin(kAnswers), std::end(kAnswers));
   return answers;
 }
 
@@ -165,7 +164,7 @@ std::string Restrictions::hide_text() const {
   // In the list's order: the same hide= text for the same answers, whatever order a link gave.
   std::vector<std::string> names;
   for (const HideableAnswer& a : hideable_answers())
-    if (hidden.count(a.name)) add_unique(names, a.name);
+    if (hidden.count(std::string(a.name))) add_unique(names, std::string(a.name));
   return join(names, ",");
 }
 
@@ -205,7 +204,7 @@ Restrictions parse_restrictions(const std::string& lock, const std::string& hide
     }
   }
   if (r.hide_all)
-    for (const HideableAnswer& a : hideable_answers()) r.hidden.insert(a.name);
+    for (const HideableAnswer& a : hideable_answers()) r.hidden.emplace(a.name);
 
   if (reveal == "after-answer") r.reveal = Reveal::AfterAnswer;
   else if (!reveal.empty() && reveal != "never") bad("reveal: " + quoted(reveal) + " is not never or after-answer");
@@ -213,17 +212,17 @@ Restrictions parse_restrictions(const std::string& lock, const std::string& hide
 }
 
 bool answer_hidden(const Restrictions& r, const HideableAnswer& answer, const std::set<std::string>& solved) {
-  if (!r.hidden.count(answer.name)) return false;
+  if (!r.hidden.count(std::string(answer.name))) return false;
   if (r.reveal == Reveal::AfterAnswer)
-    for (const std::string& p : answer.problems)
-      if (solved.count(p)) return false;
+    for (const std::string_view p : answer.problems)
+      if (solved.count(std::string(p))) return false;
   return true;
 }
 
 void strip_answer_fields(json& state, const std::vector<const HideableAnswer*>& answers) {
   for (const HideableAnswer* a : answers)
-    for (const std::string& field : a->fields) {
-      std::vector<std::string> path = split(field, '/');
+    for (const std::string_view field : a->fields) {
+      std::vector<std::string> path = split(std::string(field), '/');
       if (!path.empty() && path.front().empty()) path.erase(path.begin());  // the pointer's leading "/"
       erase_path(state, path, 0);
     }

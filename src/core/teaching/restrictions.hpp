@@ -16,18 +16,21 @@
 // the CLI and the tests read the same list.
 #include <nlohmann/json.hpp>
 
+#include <initializer_list>
 #include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace csl {
 
+// (Static data, as the lesson catalogue: no code to build it in the wasm.)
 struct HideableAnswer {
-  std::string name;                   ///< as in hide= ("min_n")
-  std::string lesson;                 ///< the lesson that shows it ("collision")
-  std::string what;                   ///< one sentence: what it is
-  std::vector<std::string> problems;  ///< the homework problems it answers ("P12"); none: never revealed by an answer
-  std::vector<std::string> fields;    ///< where state() holds it ("/min_grid", "/control_points/*/rho")
+  std::string_view name;    ///< as in hide= ("min_n")
+  std::string_view lesson;  ///< the lesson that shows it ("collision")
+  std::string_view what;    ///< one sentence: what it is
+  std::initializer_list<std::string_view> problems;  ///< the homework problems it answers ("P12"); none: never revealed by an answer
+  std::initializer_list<std::string_view> fields;    ///< where state() holds it ("/min_grid", "/control_points/*/rho")
 };
 
 /// Every lesson's answers, lesson by lesson in the menu's order.
