@@ -143,7 +143,7 @@ class CSpaceLabAccess {
     } catch {
       return;  // a lab that stopped: its shell shows why; the section keeps its last state
     }
-    this.showLessons(status.lesson, (status.restrictions || {}).lesson || null);
+    this.showLessons(status.lesson, (status.restrictions || {}).locked_lesson || null);
     this.showParams(status.lesson, specs);
     this.showSteps(status.stepping || { controls: false }, !!status.busy);
     if (text !== this.seen.text) this.description.textContent = this.seen.text = text;

@@ -16,6 +16,7 @@
 
 #include "cli/commands.hpp"
 #include "core/base/text.hpp"
+#include "core/teaching/answer_descriptions.hpp"
 #include "core/teaching/lesson_catalogue.hpp"
 #include "core/teaching/restrictions.hpp"
 
@@ -226,7 +227,32 @@ void add(std::string& query, const std::string& key, const std::string& encoded)
   query += (query.empty() ? "" : "&") + key + "=" + encoded;
 }
 
+// --list: the lessons and what a link may lock and hide in each (core's lists).
+json catalogue_json() {
+  const auto words = [](std::initializer_list<std::string_view> list) {
+    json out = json::array();
+    for (const std::string_view w : list) out.push_back(std::string(w));
+    return out;
+  };
+  json lessons = json::array(), answers = json::array();
+  for (const CataloguedLesson& l : lesson_catalogue()) {
+    json params = json::array();
+    for (const LessonParam& p : l.params) params.push_back(std::string(p.name));
+    lessons.push_back({{"id", std::string(l.id)}, {"name", std::string(l.name)}, {"params", params}, {"robots", words(l.robots)}});
+  }
+  for (const HideableAnswer& a : hideable_answers())
+    answers.push_back({{"name", std::string(a.name)}, {"lesson", std::string(a.lesson)},
+                       {"what", std::string(answer_description(a.lesson, a.name))},
+                       {"problems", words(a.problems)}, {"fields", words(a.fields)}});
+  return {{"lessons", lessons}, {"answers", answers}};
+}
+
 int run_link(Args& args, std::ostream& os) {
+  if (args.take_flag("list")) {
+    args.finish();
+    print_json(os, catalogue_json());
+    return 0;
+  }
   const std::optional<std::string> lesson_id = args.take("lesson");
   if (!lesson_id) throw UsageError("--lesson is missing (" + lesson_ids_text() + ")");
   const CataloguedLesson* lesson = find_catalogued_lesson(*lesson_id);
@@ -287,7 +313,8 @@ int run_link(Args& args, std::ostream& os) {
 const Command kLinkCommand{
     "link", "the link and iframe that open a lesson with a scene file, locked and hidden as asked",
     "Usage: cspacelab link [SCENE.json] --lesson ID [--params JSON] [--lock WORDS] [--hide WORDS]\n"
-    "                      [--reveal never|after-answer] [--task TEXT] [--base URL]\n\n"
+    "                      [--reveal never|after-answer] [--task TEXT] [--base URL]\n"
+    "       cspacelab link --list\n\n"
     "Prints {\"url\": ..., \"iframe\": ...}: the link that opens the lab on lesson ID with the scene of\n"
     "SCENE.json (validated as `cspacelab validate` does; lessons without a scene, notation and\n"
     "distances, take none), and the iframe the lab's Embed button would write for it. The browser\n"
@@ -306,6 +333,10 @@ const Command kLinkCommand{
     "  --task TEXT      the exercise's text, shown with the lab (the link's task=)\n"
     "  --base URL       the lab's folder, ending in '/' (https://your.site/cspacelab/); default\n"
     "                   none: index.html and embed.html next to the course page\n\n"
+    "--list prints the lessons and what a link may lock and hide in each:\n"
+    "  {\"lessons\": [{\"id\", \"name\", \"params\", \"robots\"}],\n"
+    "   \"answers\": [{\"name\", \"lesson\", \"what\", \"problems\", \"fields\"}]}\n"
+    "(fields: where the lesson's state() holds the answer; the lab leaves them out while hidden).\n\n"
     "The scene is written z.<base64url of its deflate-raw JSON>, as the page's Share writes it\n"
     "(j.<base64url of the JSON> from a build without zlib). Servers often refuse addresses over\n"
     "about 8 KB: a scene that needs more is better shared as its file. A value past what a link\n"

@@ -91,6 +91,20 @@ test('lessons without a scene, parameters and a task as the page writes them', (
   fails(/unexpected argument 'x\.json'/, 'link', 'x.json', '--lesson', 'notation');
 });
 
+test('--list: the lessons and what a link may lock and hide in each', () => {
+  const list = json('link', '--list');
+  assert.deepEqual(list.lessons.map((l) => l.id), ['torus', 'notation', 'collision', 'distances', 'analysis', 'potential', 'step-prm']);
+  const collision = list.lessons.find((l) => l.id === 'collision');
+  assert.deepEqual(collision, { id: 'collision', name: 'Collision checking', params: ['grid_n', 'p', 'q'], robots: ['point', 'arm2'] });
+  const minN = list.answers.find((a) => a.name === 'min_n');
+  assert.deepEqual([minN.lesson, minN.problems, minN.fields], ['collision', ['P12'], ['/min_grid', '/min_grid_interior', '/min_grid_one_end']]);
+  assert.match(minN.what, /the smallest N/);
+  // Every problem of the homework is some answer's.
+  const problems = new Set(list.answers.flatMap((a) => a.problems));
+  for (const p of json('homework')) assert.ok(problems.has(p.id), p.id);
+  fails(/unexpected argument/, 'link', '--list', 'x.json');
+});
+
 test('bad input: one line naming what is wrong, exit 2', () => {
   const p12 = scene('p12.json');
   fails(/--lesson is missing \(torus, notation, collision, distances, analysis, potential, step-prm\)/, 'link', p12);

@@ -470,9 +470,7 @@ class AnalysisLesson : public Lesson, private NoSteps {
       ImGui::Text("the bound reaches p = %s at n = %s", target_text().c_str(),
                   count_text(std::ceil(bound(0).samples_for(target_))).c_str());
     if (const std::optional<TilingBound> t = tiling(); t && instructor::hidden("p8_n")) {
-      ImGui::TextWrapped("P8, the whole cube [0,1]^%d tiled instead: m = %s balls (the orange curve); see the tab Cube (P8)",
-                         dim_, count_text(t->balls).c_str());
-      instructor::hidden_line("P8's n");
+      instructor::hidden_line("P8, the whole cube tiled instead: its n");
     } else if (t) {
       // P8 beside it (the orange curve), the handout's version first; the tab has the details.
       ImGui::TextWrapped("P8, the whole cube [0,1]^%d tiled instead: m = %s balls, p = %s at n = %s (%s with the "
@@ -672,15 +670,13 @@ class AnalysisLesson : public Lesson, private NoSteps {
     if (open) {
       // The headline, in view also in a small embed: the handout's n first.
       const std::string path_n = path.rate > 0 ? count_text(std::ceil(path.samples_for(target_))) : "?";
-      if (hide_n) {
-        formula(ui::format("n for p = %s: %s for one path (2.1)", target_text().c_str(), path_n.c_str()), &key);
+      if (hide_n)
         instructor::hidden_line("P8's n (as in the handout, refined)");
-      } else {
+      else
         formula(ui::format("n for p = %s: %s as in the handout, %s refined, %s for one path (2.1)", target_text().c_str(),
                            count_text(std::ceil(n_handout)).c_str(), count_text(std::ceil(n_refined)).c_str(),
                            path_n.c_str()),
                 &key);
-      }
 
       ImGui::TextColored(key, "The handout's bound");
       dim_text_wrapped("A grid of N balls per axis, 1/N apart: neighbours at most r/2 apart needs N ≥ 2/r, and "
@@ -690,9 +686,7 @@ class AnalysisLesson : public Lesson, private NoSteps {
       formula(ui::format("σ = μ(B₁)/2^d = %.4g/%s = %.4g", unit_ball_volume(dim_), count_text(std::ldexp(1.0, dim_)).c_str(),
                      t->sigma));
       formula(ui::format("P(fail) ≤ m e^(−σ r^d n) = %s e^(−%.4g n)", m.c_str(), t->rate));
-      if (hide_n)
-        formula(ui::format("n = ln(m/p)/(σ r^d) = ln(%s/%s)/%.4g = ?", m.c_str(), target_text().c_str(), t->rate), &key);
-      else
+      if (!hide_n)
         formula(ui::format("n = ln(m/p)/(σ r^d) = ln(%s/%s)/%.4g = %s", m.c_str(), target_text().c_str(), t->rate,
                            count_text(std::ceil(n_handout)).c_str()),
                 &key);
@@ -703,8 +697,7 @@ class AnalysisLesson : public Lesson, private NoSteps {
                          "says: there the handout's formula is not quite a bound. Counting a ball that sticks out "
                          "along j axes at rate σ r^d/2^j:",
                          count_text(t->boundary_balls).c_str(), m.c_str());
-      if (hide_n) instructor::hidden_line("n");
-      else formula(ui::format("n = %s for p = %s", count_text(std::ceil(n_refined)).c_str(), target_text().c_str()), &key);
+      if (!hide_n) formula(ui::format("n = %s for p = %s", count_text(std::ceil(n_refined)).c_str(), target_text().c_str()), &key);
     }
 
     if (panel::fold("Against the path bound (2.1)", false)) {
@@ -713,9 +706,7 @@ class AnalysisLesson : public Lesson, private NoSteps {
                        count_text(std::ceil(path.samples_for(target_))).c_str()));
       else
         ImGui::TextWrapped("path: enter L, r and μ(F) in tab Bound");
-      if (hide_n)
-        formula(ui::format("cube: m = %s, n %s", m.c_str(), instructor::kHidden));
-      else
+      if (!hide_n)
         formula(ui::format("cube: m = %s, n = %s (refined %s)", m.c_str(), count_text(std::ceil(n_handout)).c_str(),
                            count_text(std::ceil(n_refined)).c_str()));
       dim_text_wrapped("Much worse: the cube's m grows like (1/r)^d, the path's like L/r, and n with ln m. The cube "

@@ -129,11 +129,8 @@ void App::register_api() {
                 {"panel", panel::state()},
                 {"layout", layout_},
                 {"busy", busy_json()},
-                // What the page's controls (web/lab-access.js) must show as fixed.
-                {"restrictions", {{"scene", instructor::scene_locked()},
-                                  {"params", instructor::restrictions().lock_params},
-                                  {"locked_params", instructor::restrictions().locked_params},
-                                  {"lesson", instructor::locked_lesson().empty() ? json(nullptr) : json(instructor::locked_lesson())}}},
+                // What the page's controls (web/lab-access.js) must show as fixed: restrictions()'s.
+                {"restrictions", restrictions_json()},
                 // What the page's step buttons (web/lab-access.js) need: whether the lesson steps, where.
                 {"stepping", {{"controls", shows_controls(*lesson_)},
                               {"steps", stepping(*lesson_).steps()},
@@ -161,7 +158,7 @@ void App::register_api() {
     strip_answer_fields(out, instructor::hidden_answers(lesson_id_));
     return out;
   };
-  api.add("state", "the lesson's state ({roadmap: true} adds the roadmap); an answer the instructor hid is left out",
+  api.add("state", "the lesson's state ({roadmap: true} adds the roadmap)",
           [state](const json& args) { return state(args); });
   api.add("param_specs",
           "the lesson's parameters for native controls: [{name, label, kind, min, max, step, unit, help, value, choices?, list?, locked}]",
@@ -177,7 +174,7 @@ void App::register_api() {
           });
   api.add("describe", "what the lesson shows now, in sentences (the scene, the main view's result)",
           [this](const json&) { return json(lesson_->describe()); });
-  api.add("set_params", "the lesson's parameters: {params: {...}}; one the instructor fixed is refused", [this, state](const json& args) {
+  api.add("set_params", "the lesson's parameters: {params: {...}}", [this, state](const json& args) {
     const json params = args.value("params", json::object());
     check_params_allowed(*lesson_, params);
     lesson_->set_params(params);
@@ -301,8 +298,7 @@ void App::register_api() {
                         {"params", l.params()},
                         {"steps", stepping(l).wanted_steps()}};
           });
-  api.add("restore", "restore a snapshot: {lesson, scene?, params?, steps?, background?}; all checked before anything changes; "
-          "what the instructor locked comes back as the lock holds it",
+  api.add("restore", "restore a snapshot: {lesson, scene?, params?, steps?, background?}; all checked before anything changes",
           [this](const json& request) {
             const std::string id = request.value("lesson", lesson_id_);
             const LessonInfo* info = find_lesson(id);

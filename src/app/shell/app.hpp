@@ -53,9 +53,11 @@ class App {
   void open_problem(const HomeworkProblem& problem, bool preset);
   // Shows `lesson` with {scene?, params} (an exercise's numbers) applied to it.
   void show_in_lesson(const std::string& lesson, const nlohmann::json& setup);
-  // What the instructor fixed (app_instructor.cpp): the API's restrict and restrictions, the
+  // What the instructor fixed (app_instructor.cpp): the API's restrict, the
   // scene and parameters each lesson is held to, the checks before an edit.
   void register_instructor_api();
+  // What is fixed and hidden, for restrict's answer and status().restrictions.
+  nlohmann::json restrictions_json() const;
   // The lesson `id`, made if it is not open yet (and pinned, while something is locked).
   Lesson& instance(const std::string& id);
   // Remembers `lesson`'s scene and the parameters locked now as what it is held to.

@@ -17,7 +17,6 @@
 #include "app/shell/instructor.hpp"
 #include "app/shell/js_api.hpp"
 #include "app/shell/theme.hpp"
-#include "core/teaching/lesson_catalogue.hpp"
 #include "core/teaching/restrictions.hpp"
 #include "imgui.h"
 
@@ -39,12 +38,6 @@ std::string words_arg(const json& args, const char* key) {
   return v.get<std::string>();
 }
 
-std::string names_text(const std::vector<std::string>& names) {
-  std::string out;
-  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
-  return out;
-}
-
 }  // namespace
 
 Lesson& App::instance(const std::string& id) {
@@ -58,9 +51,10 @@ Lesson& App::instance(const std::string& id) {
 
 void App::pin(const std::string& id, const Lesson& lesson) {
   Lesson& l = const_cast<Lesson&>(lesson);  // scene() is not const; nothing is changed
-  pins_[id] = {{"scene", l.scene() ? scene_to_json(*l.scene()) : json(nullptr)},
-               {"params", lesson.params()},
-               {"scene_params", lesson.scene_params()}};
+  json& pin = pins_[id] = json::object();
+  pin["scene"] = l.scene() ? scene_to_json(*l.scene()) : json(nullptr);
+  pin["params"] = lesson.params();
+  pin["scene_params"] = lesson.scene_params();
 }
 
 json App::pinned(const std::string& id, json snapshot) const {
@@ -120,51 +114,46 @@ void App::hold_locked_params(const json& before) {
 
 void App::instructor_note() {
   const Restrictions& r = instructor::restrictions();
-  std::vector<std::string> fixed;
-  if (r.lock_scene && lesson_->scene()) fixed.push_back("the scene");
-  if (r.lock_params) {
-    fixed.push_back("the parameters");
-  } else {
-    std::vector<std::string> mine;
-    const json params = lesson_->params();
-    for (const std::string& p : r.locked_params)
-      if (params.contains(p)) mine.push_back(p);
-    if (!mine.empty()) fixed.push_back(names_text(mine));
-  }
-  if (r.lock_lesson) fixed.push_back("the lesson");
-  std::vector<std::string> hidden;
-  for (const HideableAnswer* a : instructor::hidden_answers(lesson_id_)) hidden.push_back(std::string(a->name));
+  std::string fixed;  // "the scene, the parameters, the lesson"
+  const auto add = [&fixed](const std::string& what) { fixed += (fixed.empty() ? "" : ", ") + what; };
+  if (r.lock_scene && lesson_->scene()) add("the scene");
+  if (r.lock_params) add("the parameters");
+  const json params = r.locked_params.empty() ? json() : lesson_->params();
+  for (const std::string& p : r.locked_params)
+    if (params.contains(p)) add(p);
+  if (r.lock_lesson) add("the lesson");
+  std::string hidden;
+  for (const HideableAnswer* a : instructor::hidden_answers(lesson_id_))
+    hidden += (hidden.empty() ? "" : ", ") + std::string(a->name);
   if (fixed.empty() && hidden.empty()) return;
-  std::string text;
-  if (!fixed.empty()) text = "Fixed by your instructor: " + names_text(fixed) + ".";
-  if (!hidden.empty()) text += std::string(text.empty() ? "" : " ") + "Hidden: " + names_text(hidden) + ".";
+  const std::string text = (fixed.empty() ? "" : "Fixed by your instructor: " + fixed + ". ") +
+                           (hidden.empty() ? "" : "Hidden: " + hidden + ".");
   ImGui::PushStyleColor(ImGuiCol_Text, theme::vec4(theme::kTextKey));
   ImGui::TextWrapped("%s", text.c_str());
   ImGui::PopStyleColor();
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("Your instructor set up this lab for an exercise: what is fixed cannot be changed here, "
-                      "and hidden answers are not shown%s.",
-                      r.reveal == Reveal::AfterAnswer ? " until you answer the homework exercise right" : "");
   ImGui::Spacing();
+}
+
+json App::restrictions_json() const {
+  // (Assignments, and no more than the page and tests use: the wasm's budget is tight.)
+  const Restrictions& r = instructor::restrictions();
+  json out = json::object();
+  out["lock"] = r.lock_text();
+  out["hide"] = r.hide_text();
+  out["reveal"] = r.reveal_text();
+  out["scene"] = r.lock_scene;
+  json& now = out["hidden_now"] = json::array();
+  for (const HideableAnswer* a : instructor::hidden_answers(lesson_id_)) now.push_back(std::string(a->name));
+  out["locked_lesson"] = instructor::locked_lesson().empty() ? json(nullptr) : json(instructor::locked_lesson());
+  return out;
 }
 
 void App::register_instructor_api() {
   JsApi& api = js_api();
-  const auto restrictions_json = [this] {
-    json out = restrictions_to_json(instructor::restrictions());
-    json now = json::array();
-    for (const HideableAnswer* a : instructor::hidden_answers(lesson_id_)) now.push_back(std::string(a->name));
-    out["hidden_now"] = now;
-    out["locked_lesson"] = instructor::locked_lesson().empty() ? json(nullptr) : json(instructor::locked_lesson());
-    return out;
-  };
-  api.add("restrict",
-          "what the instructor fixes and hides, as a link's lock, hide and reveal: {lock?, hide?, reveal?, lesson?} "
-          "(comma-separated words, checked for `lesson`, default the one on screen; replaces what was set). Bad words "
-          "are left out and named in problems; lock=lesson keeps the lesson on screen",
-          [this, restrictions_json](const json& args) {
+  api.add("restrict", "a link's {lock?, hide?, reveal?, lesson?} (docs/web.md); bad words are left out, named in problems",
+          [this](const json& args) {
+            // (An unknown lesson has no parameters or answers: its words are all refused.)
             const std::string lesson = args.contains("lesson") ? words_arg(args, "lesson") : lesson_id_;
-            if (!find_lesson(lesson)) throw ApiError("lesson: no lesson \"" + lesson + "\"");
             std::vector<std::string> problems;
             const Restrictions r =
                 parse_restrictions(words_arg(args, "lock"), words_arg(args, "hide"), words_arg(args, "reveal"), lesson, &problems);
@@ -181,30 +170,6 @@ void App::register_instructor_api() {
             out["problems"] = problems;
             return out;
           });
-  api.add("catalogue",
-          "the core's list of the lessons (what cspacelab link checks against) and of the answers each can hide: "
-          "{lessons: [{id, name, params, robots}], answers: [{name, lesson, what, problems, fields}]}",
-          [](const json&) {
-            json lessons = json::array(), answers = json::array();
-            const auto list = [](std::initializer_list<std::string_view> words) {
-              json out = json::array();
-              for (const std::string_view w : words) out.push_back(std::string(w));
-              return out;
-            };
-            for (const CataloguedLesson& l : lesson_catalogue()) {
-              json params = json::array();
-              for (const LessonParam& p : l.params) params.push_back(std::string(p.name));
-              lessons.push_back({{"id", std::string(l.id)}, {"name", std::string(l.name)}, {"params", params}, {"robots", list(l.robots)}});
-            }
-            for (const HideableAnswer& a : hideable_answers())
-              answers.push_back({{"name", std::string(a.name)}, {"lesson", std::string(a.lesson)}, {"what", std::string(a.what)},
-                                 {"problems", list(a.problems)}, {"fields", list(a.fields)}});
-            return json{{"lessons", lessons}, {"answers", answers}};
-          });
-  api.add("restrictions",
-          "what the instructor fixed and hid: {lock, hide, reveal (as a link writes them), scene, params, lesson, "
-          "locked_params, hidden, hidden_now (this lesson's, after reveals), locked_lesson}",
-          [restrictions_json](const json&) { return restrictions_json(); });
 }
 
 }  // namespace csl::app

@@ -1,5 +1,7 @@
 #include "app/shell/instructor.hpp"
 
+#include <algorithm>
+
 #include "imgui.h"
 
 namespace csl::app::instructor {
@@ -11,7 +13,7 @@ namespace {
 struct State {
   Restrictions r;
   std::string lesson;
-  std::set<std::string> solved;
+  std::vector<std::string> solved;
 };
 State& state() {
   static State s;
@@ -35,10 +37,13 @@ void set(const Restrictions& r, const std::string& lesson) {
 }
 
 bool scene_locked() { return state().r.lock_scene; }
-bool param_locked(const std::string& key) { return state().r.param_locked(key); }
+bool param_locked(std::string_view key) { return state().r.param_locked(key); }
 bool lesson_allowed(const std::string& id) { return !state().r.lock_lesson || id == state().lesson; }
 
-void solved(const std::string& problem) { state().solved.insert(problem); }
+void solved(const std::string& problem) {
+  std::vector<std::string>& s = state().solved;
+  if (std::find(s.begin(), s.end(), problem) == s.end()) s.push_back(problem);
+}
 
 bool hidden(const char* name) {
   for (const HideableAnswer& a : hideable_answers())
@@ -60,7 +65,7 @@ std::string param_refusal(const std::string& key) {
   return key + " is fixed by your instructor (lock=" + (state().r.lock_params ? "params" : key) + ")";
 }
 std::string lesson_refusal() {
-  return "This lab stays on its lesson: the lesson is fixed by your instructor (lock=lesson).";
+  return "The lesson is fixed by your instructor (lock=lesson).";
 }
 
 void hidden_line(const char* what) { dim_line(std::string(what) + ": " + kHidden); }

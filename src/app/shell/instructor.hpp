@@ -5,8 +5,8 @@
 // answer hidden now. The page sets it through the API's "restrict" (App::register_api); the
 // lessons, the scene editor and the shell read it here. Nothing here is security: a student
 // may edit the address. It keeps an exercise an exercise.
-#include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/teaching/restrictions.hpp"
@@ -24,7 +24,7 @@ const std::string& locked_lesson();
 void set(const Restrictions& r, const std::string& lesson);
 
 bool scene_locked();
-bool param_locked(const std::string& key);
+bool param_locked(std::string_view key);
 /// Whether the student may switch to lesson `id`.
 bool lesson_allowed(const std::string& id);
 

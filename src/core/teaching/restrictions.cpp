@@ -14,61 +14,30 @@ using json = nlohmann::json;
 namespace {
 
 // Each lesson's answers to the homework (README's table: P1-P13), and what an exercise on its
-// own would ask. What stays visible is said where it is a choice: pictures that are not numbers
-// (the arc on the circle, the cone in sight, the force arrows, the path drawn), and the given
-// numbers and the first steps of a method (a ray's slope, a point's clearance check).
+// own would ask; answer_descriptions.cpp says each in words, and what stays visible where that
+// is a choice (pictures that are not numbers, the given numbers, the first steps of a method).
 const HideableAnswer kAnswers[] = {
-      {"path_length", "torus", "the length of the path PRM found on the torus (the path itself is drawn)", {},
-       {"/prm/path_length"}},
-      {"q_notation",
-       "notation",
-       "Q of the robot built (or of the practice exercise before it is checked): its notation, dimension, "
-       "factors and other spellings",
-       {"P1", "P2", "P3", "P4", "P5", "P6", "P7"},
-       {"/notation", "/dimension", "/factors", "/equivalent"}},
-      {"min_n",
-       "collision",
-       "the smallest N whose N configurations (p and q counted) see the collision, and the same N counted with "
-       "one end or neither",
-       {"P12"},
-       {"/min_grid", "/min_grid_interior", "/min_grid_one_end"}},
-      {"s1_distance",
-       "distances",
-       "the distance between the two angles on S^1, and the steps that give it away: the difference mod 2 pi, the "
-       "other way round, the dot product and its arccos, the case",
-       {"P10"},
-       {"/s1/modulus", "/s1/other_way", "/s1/modular_distance", "/s1/dot", "/s1/cross", "/s1/arccos_distance",
-        "/s1/distance", "/s1/rotation_distance", "/s1/signed_turn", "/s1/wraps_around", "/s1/case"}},
-      {"segment_distance",
-       "distances",
-       "the distance from the segment to the disk, and the steps that give it away: the projection parameter t "
-       "(raw and clamped), the closest point, the centre's distance, the case",
-       {"P11"},
-       {"/segment/length_squared", "/segment/dot", "/segment/t_raw", "/segment/t", "/segment/foot",
-        "/segment/closest", "/segment/centre_distance", "/segment/distance", "/segment/signed_distance",
-        "/segment/lab_clearance", "/segment/meets", "/segment/case"}},
-      {"p8_n",
-       "analysis",
-       "P8's n: the samples at which the whole-cube bound reaches the target p, as the handout has it and refined",
-       {"P8"},
-       {"/handout/n_for_target", "/refined/n_for_target"}},
-      {"p9_probability",
-       "analysis",
-       "P9's visibility probability: exact (the areas under the rays, by cases) and its Monte Carlo estimate with "
-       "its interval (the region in sight stays drawn)",
-       {"P9"},
-       {"/visibility/exact", "/visibility/probability", "/visibility/left_area", "/visibility/right_area",
-        "/visibility/upper/area_under", "/visibility/lower/area_under", "/visibility/monte_carlo",
-        "/visibility/ci_low", "/visibility/ci_high", "/visibility/within_ci"}},
-      {"p13_forces",
-       "potential",
-       "at each control point rho, its gradient, the attractive and repulsive forces, the repulsive potential and "
-       "the torque J^T F, and their sums: the numbers of the forces table (the arrows stay drawn)",
-       {"P13"},
-       {"/control_points/*/rho", "/control_points/*/grad_rho", "/control_points/*/F_att", "/control_points/*/F_rep",
-        "/control_points/*/U_rep", "/control_points/*/tau", "/tau", "/F_att", "/F_rep", "/U_rep", "/tau_att",
-        "/tau_rep", "/forces_table"}},
-      {"path_length", "step-prm", "the length of the path PRM found (the path itself is drawn)", {}, {"/path_length"}},
+    {"path_length", "torus", {}, {"/prm/path_length"}},
+    {"q_notation", "notation", {"P1", "P2", "P3", "P4", "P5", "P6", "P7"},
+     {"/notation", "/dimension", "/factors", "/equivalent"}},
+    {"min_n", "collision", {"P12"}, {"/min_grid", "/min_grid_interior", "/min_grid_one_end"}},
+    {"s1_distance", "distances", {"P10"},
+     {"/s1/modulus", "/s1/other_way", "/s1/modular_distance", "/s1/dot", "/s1/cross", "/s1/arccos_distance",
+      "/s1/distance", "/s1/rotation_distance", "/s1/signed_turn", "/s1/wraps_around", "/s1/case"}},
+    {"segment_distance", "distances", {"P11"},
+     {"/segment/length_squared", "/segment/dot", "/segment/t_raw", "/segment/t", "/segment/foot", "/segment/closest",
+      "/segment/centre_distance", "/segment/distance", "/segment/signed_distance", "/segment/lab_clearance",
+      "/segment/meets", "/segment/case"}},
+    {"p8_n", "analysis", {"P8"}, {"/handout/n_for_target", "/refined/n_for_target"}},
+    {"p9_probability", "analysis", {"P9"},
+     {"/visibility/exact", "/visibility/probability", "/visibility/left_area", "/visibility/right_area",
+      "/visibility/upper/area_under", "/visibility/lower/area_under", "/visibility/monte_carlo", "/visibility/ci_low",
+      "/visibility/ci_high", "/visibility/within_ci"}},
+    {"p13_forces", "potential", {"P13"},
+     {"/control_points/*/rho", "/control_points/*/grad_rho", "/control_points/*/F_att", "/control_points/*/F_rep",
+      "/control_points/*/U_rep", "/control_points/*/tau", "/tau", "/F_att", "/F_rep", "/U_rep", "/tau_att", "/tau_rep",
+      "/forces_table"}},
+    {"path_length", "step-prm", {}, {"/path_length"}},
 };
 
 // "a,b" -> {"a", "b"}; "" -> {} (an empty piece between separators is kept: a bad word).
@@ -145,8 +114,12 @@ std::vector<const HideableAnswer*> answers_of(const std::string& lesson) {
   return out;
 }
 
-bool Restrictions::param_locked(const std::string& key) const {
+bool Restrictions::param_locked(std::string_view key) const {
   return lock_params || std::find(locked_params.begin(), locked_params.end(), key) != locked_params.end();
+}
+
+bool Restrictions::hides(std::string_view answer) const {
+  return std::find(hidden.begin(), hidden.end(), answer) != hidden.end();
 }
 
 std::string Restrictions::lock_text() const {
@@ -164,7 +137,7 @@ std::string Restrictions::hide_text() const {
   // In the list's order: the same hide= text for the same answers, whatever order a link gave.
   std::vector<std::string> names;
   for (const HideableAnswer& a : hideable_answers())
-    if (hidden.count(std::string(a.name))) add_unique(names, std::string(a.name));
+    if (hides(a.name)) add_unique(names, std::string(a.name));
   return join(names, ",");
 }
 
@@ -172,9 +145,11 @@ std::string Restrictions::reveal_text() const { return reveal == Reveal::AfterAn
 
 Restrictions parse_restrictions(const std::string& lock, const std::string& hide, const std::string& reveal,
                                 const std::string& lesson, std::vector<std::string>* problems) {
-  const auto bad = [&](const std::string& line) {
+  // "KEY: "WORD" is not ALLOWED": thrown, or collected and the word left out.
+  const auto bad = [&](const char* key, const std::string& word, const std::string& allowed) {
+    std::string line = std::string(key) + ": " + quoted(word) + " is not " + allowed;
     if (!problems) throw std::invalid_argument(line);
-    problems->push_back(line);
+    problems->push_back(std::move(line));
   };
   const std::string of = lesson.empty() ? "any lesson" : lesson;
   Restrictions r;
@@ -184,9 +159,7 @@ Restrictions parse_restrictions(const std::string& lock, const std::string& hide
     else if (w == "params") r.lock_params = true;
     else if (w == "lesson") r.lock_lesson = true;
     else if (std::find(params.begin(), params.end(), w) != params.end()) add_unique(r.locked_params, w);
-    else
-      bad("lock: " + quoted(w) + " is not scene, params, lesson or a parameter of " + of +
-          (params.empty() ? "" : " (" + join(params) + ")"));
+    else bad("lock", w, "scene, params, lesson or a parameter of " + of + " (" + join(params) + ")");
   }
   if (r.lock_params) r.locked_params.clear();  // all of them
 
@@ -197,25 +170,24 @@ Restrictions parse_restrictions(const std::string& lock, const std::string& hide
     } else if (w == "none") {
       // nothing: hide=none says so explicitly
     } else if (std::find(answers.begin(), answers.end(), w) != answers.end()) {
-      r.hidden.insert(w);
+      add_unique(r.hidden, w);
     } else {
-      bad("hide: " + quoted(w) + " is not answers, none or an answer of " + of +
-          (answers.empty() ? " (it has none to hide)" : " (" + join(answers) + ")"));
+      bad("hide", w, "answers, none or an answer of " + of + " (" + join(answers) + ")");
     }
   }
   if (r.hide_all)
-    for (const HideableAnswer& a : hideable_answers()) r.hidden.emplace(a.name);
+    for (const HideableAnswer& a : hideable_answers()) add_unique(r.hidden, std::string(a.name));
 
   if (reveal == "after-answer") r.reveal = Reveal::AfterAnswer;
-  else if (!reveal.empty() && reveal != "never") bad("reveal: " + quoted(reveal) + " is not never or after-answer");
+  else if (!reveal.empty() && reveal != "never") bad("reveal", reveal, "never or after-answer");
   return r;
 }
 
-bool answer_hidden(const Restrictions& r, const HideableAnswer& answer, const std::set<std::string>& solved) {
-  if (!r.hidden.count(std::string(answer.name))) return false;
+bool answer_hidden(const Restrictions& r, const HideableAnswer& answer, const std::vector<std::string>& solved) {
+  if (!r.hides(answer.name)) return false;
   if (r.reveal == Reveal::AfterAnswer)
     for (const std::string_view p : answer.problems)
-      if (solved.count(std::string(p))) return false;
+      if (std::find(solved.begin(), solved.end(), p) != solved.end()) return false;
   return true;
 }
 
@@ -226,17 +198,6 @@ void strip_answer_fields(json& state, const std::vector<const HideableAnswer*>& 
       if (!path.empty() && path.front().empty()) path.erase(path.begin());  // the pointer's leading "/"
       erase_path(state, path, 0);
     }
-}
-
-json restrictions_to_json(const Restrictions& r) {
-  return {{"lock", r.lock_text()},
-          {"hide", r.hide_text()},
-          {"reveal", r.reveal_text()},
-          {"scene", r.lock_scene},
-          {"params", r.lock_params},
-          {"lesson", r.lock_lesson},
-          {"locked_params", r.locked_params},
-          {"hidden", std::vector<std::string>(r.hidden.begin(), r.hidden.end())}};
 }
 
 }  // namespace csl

@@ -9,15 +9,14 @@
 //   reveal=after-answer        a hidden answer comes back once its homework problem's exercise
 //                              was answered right in this visit (default: never)
 //
-// Each lesson's answers are listed once, here: the name a link uses, what it is in words, the
-// homework problems it answers, and the fields of the lesson's state() (JSON pointers; "*" is
-// every element of an array) that hold it. The app removes those fields from state() and
+// Each lesson's answers are listed once, here: the name a link uses, the homework problems it
+// answers, and the fields of the lesson's state() (JSON pointers; "*" is every element of an
+// array) that hold it; answer_descriptions.hpp says what each is in words. The app removes those fields from state() and
 // leaves the answer out of its drawing, its description and its event log while it is hidden;
 // the CLI and the tests read the same list.
 #include <nlohmann/json.hpp>
 
 #include <initializer_list>
-#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -28,7 +27,6 @@ namespace csl {
 struct HideableAnswer {
   std::string_view name;    ///< as in hide= ("min_n")
   std::string_view lesson;  ///< the lesson that shows it ("collision")
-  std::string_view what;    ///< one sentence: what it is
   std::initializer_list<std::string_view> problems;  ///< the homework problems it answers ("P12"); none: never revealed by an answer
   std::initializer_list<std::string_view> fields;    ///< where state() holds it ("/min_grid", "/control_points/*/rho")
 };
@@ -46,10 +44,11 @@ struct Restrictions {
   bool lock_lesson = false;  ///< no other lesson than the one the lock was set in
   std::vector<std::string> locked_params;  ///< parameters fixed by name (in any lesson that has them)
   bool hide_all = false;                   ///< hide=answers
-  std::set<std::string> hidden;            ///< the answers hidden (names; all of them for hide=answers)
+  std::vector<std::string> hidden;         ///< the answers hidden (names, each once; all of them for hide=answers)
   Reveal reveal = Reveal::Never;
 
-  bool param_locked(const std::string& key) const;
+  bool param_locked(std::string_view key) const;
+  bool hides(std::string_view answer) const;
   bool any_lock() const { return lock_scene || lock_params || lock_lesson || !locked_params.empty(); }
   bool empty() const { return !any_lock() && hidden.empty(); }
   /// The words of a link again, canonical (what Share writes): "scene,params,grid_n", "answers"
@@ -69,14 +68,10 @@ Restrictions parse_restrictions(const std::string& lock, const std::string& hide
 
 /// Whether `answer` is hidden now: hidden by `r`, and not revealed (reveal=after-answer and
 /// one of its problems is in `solved`, the problems answered right in this visit).
-bool answer_hidden(const Restrictions& r, const HideableAnswer& answer, const std::set<std::string>& solved);
+bool answer_hidden(const Restrictions& r, const HideableAnswer& answer, const std::vector<std::string>& solved);
 
 /// Removes every field of `answers` from `state` (a lesson's state()); a field that is not
 /// there is skipped.
 void strip_answer_fields(nlohmann::json& state, const std::vector<const HideableAnswer*>& answers);
-
-/// {lock, hide, reveal} as a link writes them (lock_text() ...), and the lists behind them:
-/// {lock, hide, reveal, scene, params, lesson, locked_params, hidden}.
-nlohmann::json restrictions_to_json(const Restrictions& r);
 
 }  // namespace csl
