@@ -8,11 +8,13 @@
 // window, memLevel 8), which is what Chromium's stream runs, so a link is as short as the
 // page's own. Without zlib (the wasm build of the CLI, which has no zlib port offline) the
 // scene is written j.<base64url of the JSON>, which every browser reads too.
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "cli/commands.hpp"
 #include "core/base/text.hpp"
@@ -29,9 +31,73 @@ namespace {
 
 using json = nlohmann::json;
 
-// web/lab-url.js's LIMITS: an encoded scene, and any other value, as a link may carry them.
+// web/lab-url.js's LIMITS: an encoded scene, a task and any other value, as a link may carry them.
 constexpr std::size_t kMaxSceneParam = 64 * 1024;
+constexpr std::size_t kMaxTaskParam = 12 * 1024;
 constexpr std::size_t kMaxValue = 256;
+// web/lab-task.js: a task holds at most this many characters.
+constexpr std::size_t kMaxTaskChars = 1000;
+
+// Characters (code points) of UTF-8 text: what Array.from(text).length counts.
+std::size_t characters(const std::string& text) {
+  std::size_t n = 0;
+  for (const char c : text) n += (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+  return n;
+}
+
+// The task as web/lab-task.js normalise() shows it: lines, each trimmed, runs of spaces one,
+// control characters (and the bidi overrides) spaces, empty lines gone.
+std::vector<std::string> task_lines(const std::string& raw) {
+  std::string text;
+  for (std::size_t i = 0; i < raw.size(); ++i) {
+    const unsigned char c = static_cast<unsigned char>(raw[i]);
+    if (c == '\r') {
+      text += '\n';
+      if (i + 1 < raw.size() && raw[i + 1] == '\n') ++i;
+    } else if (c == '\n') {
+      text += '\n';
+    } else if (c < 0x20 || c == 0x7f) {
+      text += ' ';
+    } else if (c == 0xC2 && i + 1 < raw.size() && static_cast<unsigned char>(raw[i + 1]) >= 0x80 &&
+               static_cast<unsigned char>(raw[i + 1]) <= 0x9f) {
+      text += ' ';  // a C1 control
+      ++i;
+    } else if (c == 0xE2 && i + 2 < raw.size() &&
+               ((raw[i + 1] == '\x80' && static_cast<unsigned char>(raw[i + 2]) >= 0xAA && static_cast<unsigned char>(raw[i + 2]) <= 0xAE) ||
+                (raw[i + 1] == '\x81' && static_cast<unsigned char>(raw[i + 2]) >= 0xA6 && static_cast<unsigned char>(raw[i + 2]) <= 0xA9))) {
+      text += ' ';  // U+202A-202E, U+2066-2069: the bidi overrides
+      i += 2;
+    } else {
+      text += static_cast<char>(c);
+    }
+  }
+  std::vector<std::string> lines;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t end = text.find('\n', start);
+    std::string line = text.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    std::string squeezed;
+    for (const char c : line)
+      if (!(c == ' ' && !squeezed.empty() && squeezed.back() == ' ')) squeezed += c;
+    const std::size_t a = squeezed.find_first_not_of(' ');
+    if (a != std::string::npos) lines.push_back(squeezed.substr(a, squeezed.find_last_not_of(' ') - a + 1));
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  return lines;
+}
+
+// The iframe's extra height for the task above the canvas (web/lab-task.js height(), at 700 px).
+int task_height(const std::vector<std::string>& lines) {
+  if (lines.empty()) return 0;
+  const int width = 700, per_line = std::max(20, (width - 26) * 2 / 15);  // floor((width - 26) / 7.5)
+  int rows = 0;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const int chars = static_cast<int>(characters(lines[i])) + (i ? 0 : 6);
+    rows += std::max(1, (chars + per_line - 1) / per_line);
+  }
+  return std::min(width * 2 / 5, 14 + 20 * rows + 2 * (static_cast<int>(lines.size()) - 1));
+}
 
 std::string base64url(const std::string& bytes) {
   static const char* const kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789-_";
@@ -171,13 +237,14 @@ std::string encode_value(const std::string& text) {
 // A parameter's value as a link writes it (web/lab-url.js formatValue): a number in the
 // shortest text that reads back as it, true/false, a string, comma-separated numbers.
 std::string format_value(const std::string& key, const json& v) {
+  if (v.is_number_float()) return js_number(v.get<double>());
   if (v.is_number() || v.is_boolean()) return v.dump();
   if (v.is_string()) return v.get<std::string>();
   bool numbers = v.is_array() && !v.empty();
   std::string out;
   for (std::size_t i = 0; numbers && i < v.size(); ++i) {
     numbers = v[i].is_number();
-    out += (i ? "," : "") + v[i].dump();
+    out += (i ? "," : "") + (v[i].is_number_float() ? js_number(v[i].get<double>()) : v[i].dump());
   }
   if (numbers) return out;
   throw UsageError("--params: " + key + " cannot be written in a link");
@@ -220,10 +287,11 @@ std::string check_base(const std::string& base) {
 }
 
 void add(std::string& query, const std::string& key, const std::string& encoded) {
-  if (encoded.size() > (key == "scene" ? kMaxSceneParam : kMaxValue))
+  const std::size_t limit = key == "scene" ? kMaxSceneParam : key == "task" ? kMaxTaskParam : kMaxValue;
+  if (encoded.size() > limit)
     throw UsageError(std::string(key == "scene" ? "the scene" : "--" + key) + " takes " + std::to_string(encoded.size()) +
-                     " characters in a link, more than the " + std::to_string(key == "scene" ? kMaxSceneParam : kMaxValue) +
-                     " a link may carry" + (key == "scene" ? " (share the scene file instead)" : ""));
+                     " characters in a link, more than the " + std::to_string(limit) + " a link may carry" +
+                     (key == "scene" ? " (share the scene file instead)" : ""));
   query += (query.empty() ? "" : "&") + key + "=" + encoded;
 }
 
@@ -295,16 +363,30 @@ int run_link(Args& args, std::ostream& os) {
   if (!r.lock_text().empty()) add(query, "lock", encode_value(r.lock_text()));
   if (!r.hide_text().empty()) add(query, "hide", encode_value(r.hide_text()));
   if (reveal) add(query, "reveal", encode_value(r.reveal_text()));
+  // The task, as the page shows it (web/lab-task.js): refused past its 1000 characters, where the
+  // page would cut it.
+  std::string with_task;
+  std::vector<std::string> lines;
   if (task) {
-    if (task->empty()) throw UsageError("--task: an empty text");
-    add(query, "task", encode_value(*task));
+    lines = task_lines(*task);
+    std::string text;
+    for (const std::string& l : lines) text += (text.empty() ? "" : "\n") + l;
+    if (text.empty()) throw UsageError("--task: an empty text");
+    if (characters(text) > kMaxTaskChars)
+      throw UsageError("--task: " + std::to_string(characters(text)) + " characters; a task holds at most " +
+                       std::to_string(kMaxTaskChars));
+    std::string task_query;
+    add(task_query, "task", encode_value(text));
+    with_task = "&" + task_query;
   }
-  // The Embed dialog's iframe (web/lab-shell.js embed()): its own autosave id from the link.
+  // The Embed dialog's iframe (web/lab-shell.js embedSnippets()): the task after the state, its
+  // own autosave id from the link, and as much taller than 600 px as the task above the canvas.
   const std::string id = "lab-" + fnv_hex(query).substr(0, 6);
-  const std::string iframe = "<iframe src=\"" + escape_attribute(base + "embed.html?" + query + "&id=" + id) +
-                             "\" width=\"100%\" height=\"600\" style=\"border:0\" title=\"C-Space Lab: " +
-                             escape_attribute(std::string(lesson->name)) + "\" allow=\"clipboard-write\"></iframe>";
-  print_json(os, {{"url", base + "index.html?" + query}, {"iframe", iframe}});
+  const std::string iframe = "<iframe src=\"" + escape_attribute(base + "embed.html?" + query + with_task + "&id=" + id) +
+                             "\" width=\"100%\" height=\"" + std::to_string(600 + task_height(lines)) +
+                             "\" style=\"border:0\" title=\"C-Space Lab: " + escape_attribute(std::string(lesson->name)) +
+                             "\" allow=\"clipboard-write\"></iframe>";
+  print_json(os, {{"url", base + "index.html?" + query + with_task}, {"iframe", iframe}});
   return 0;
 }
 
@@ -332,7 +414,8 @@ const Command kLinkCommand{
     "                   potential p13_forces; notation q_notation; torus and step-prm path_length\n"
     "  --reveal WHEN    never (default), or after-answer: a hidden answer comes back once the\n"
     "                   homework exercise of its problem was answered right in that visit\n"
-    "  --task TEXT      the exercise's text, shown with the lab (the link's task=)\n"
+    "  --task TEXT      the exercise's text, shown above the lab (the link's task=): plain text, each\n"
+    "                   line a paragraph, at most 1000 characters; the iframe is taller by its height\n"
     "  --base URL       the lab's folder, ending in '/' (https://your.site/cspacelab/); default\n"
     "                   none: index.html and embed.html next to the course page\n\n"
     "--list prints the lessons and what a link may lock and hide in each:\n"

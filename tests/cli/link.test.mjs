@@ -88,6 +88,12 @@ test('lessons without a scene, parameters and a task as the page writes them', (
   assert.equal(q.get('task'), 'How far is the disk? (P11, 2 marks)');
   assert.match(out.url, /&task=How%20far%20is%20the%20disk%3F%20\(P11,%202%20marks\)$/, 'encoded as encodeURIComponent, : and , left');
   assert.match(out.iframe, /title="C-Space Lab: Distances"/);
+  // The Embed dialog's iframe: the task after the state, and taller by the task's height over the
+  // canvas (web/lab-task.js: one line of 35 + 6 characters is one row, 14 + 20 px).
+  assert.match(out.iframe, /embed\.html\?lesson=distances&amp;q=1e-7,-2&amp;r=0\.25&amp;tool=segment&amp;hide=answers&amp;task=How%20far[^"]*&amp;id=lab-[0-9a-f]{6}" width="100%" height="634"/);
+  // Normalised as the page shows it: lines trimmed, spaces squeezed, controls gone, empty lines dropped.
+  const messy = json('link', '--lesson', 'notation', '--task', '  Write   Q\t for\r\n\n\u0007 P1.  ');
+  assert.equal(query(messy.url).get('task'), 'Write Q for\nP1.');
   fails(/unexpected argument 'x\.json'/, 'link', 'x.json', '--lesson', 'notation');
 });
 
@@ -124,7 +130,7 @@ test('bad input: one line naming what is wrong, exit 2', () => {
   fails(/cannot read file/, 'link', '/no/such/scene.json', '--lesson', 'collision');
   fails(/--base: 'https:\/\/x\.org\/lab' is not the lab's folder/, 'link', p12, '--lesson', 'collision', '--base', 'https://x.org/lab');
   fails(/--base: 'javascript:alert\(1\)\/' is not the lab's folder/, 'link', p12, '--lesson', 'collision', '--base', 'javascript:alert(1)/');
-  fails(/--task takes 3\d\d characters in a link, more than the 256/, 'link', p12, '--lesson', 'collision', '--task', 'é'.repeat(60));
+  fails(/--task: 1001 characters; a task holds at most 1000/, 'link', p12, '--lesson', 'collision', '--task', 'é'.repeat(1001));
   fails(/--task: an empty text/, 'link', p12, '--lesson', 'collision', '--task', '');
   // Nothing on stdout for any of them (fails() checks), and help on --help.
   const help = run('link', '--help');
