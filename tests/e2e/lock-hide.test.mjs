@@ -112,6 +112,16 @@ test('a locked scene refuses the mouse, the keys, the API and Import; locked par
   await keys(page, 'd');
   await drag(page, away, { x: away.x + 40, y: away.y });
   assert.deepEqual(await api(page, 'get_scene'), scene, 'no disk drawn');
+  // The context menu (right-click on the disk) is refused the same way.
+  await clearNotice(page);
+  await page.mouse.move(centre.x, centre.y);
+  await waitFrames(page, 2);
+  await page.mouse.down({ button: 'right' });
+  await waitFrames(page, 2);
+  await page.mouse.up({ button: 'right' });
+  await waitFrames(page, 2);
+  assert.match(await notice(page), FIXED, 'the context menu says why');
+  assert.deepEqual(await api(page, 'get_scene'), scene);
 
   // The API, and Import (a file dropped or picked): refused with the reason.
   assert.match(await refusal(page, 'setScene', DISK_SCENE(0.06)), FIXED);
@@ -332,12 +342,14 @@ test('cspacelab link, opened in Chromium, gives back the file\'s scene bit for b
   const file = tempJson(scene);
   const normal = cli('validate', file).scene;
   const out = cli('link', file, '--lesson', 'step-prm', '--params', '{"samples": 150, "seed": 12, "neighbors": "k:7"}',
-                  '--lock', 'scene', '--hide', 'path_length', '--base', url);
+                  '--lock', 'scene', '--hide', 'path_length', '--task', 'Find the gap, then explain it.', '--base', url);
   const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
   await page.addInitScript(() => localStorage.setItem('cspacelab:v1:welcomed', '1'));
   const errors = collectErrors(page);
   await openLab(page, out.url);
   assert.equal(await notice(page), '', 'nothing in the link was refused');
+  assert.equal(await page.evaluate(() => document.querySelector('.lab-task').textContent.includes('Find the gap, then explain it.')), true,
+               'the task is shown with the lab');
   const got = await api(page, 'get_scene');
   assert.deepEqual(got, normal);
   assert.equal(JSON.stringify(got), JSON.stringify(normal), 'every number to the last bit');
