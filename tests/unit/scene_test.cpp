@@ -209,6 +209,21 @@ TEST_CASE("same_scene: every field counts") {
   CHECK_FALSE(csl::same_scene(a, b));
 }
 
+TEST_CASE("same_content: every field but the name") {
+  csl::Scene a = csl::scene_from_string(
+      R"({"version": 1, "name": "P12", "obstacles": [{"type": "disk", "center": [0.5, 0.5], "radius": 0.1}]})");
+  csl::Scene b = a;
+  b.name = "P12 (edited)";
+  CHECK(csl::same_content(a, b));
+  b.name.clear();
+  CHECK(csl::same_content(a, b));
+  std::get<csl::Disk>(b.obstacles[0]).radius = std::nextafter(0.1, 1.0);
+  CHECK_FALSE(csl::same_content(a, b));
+  b = a;
+  b.start[0] = 0.25;
+  CHECK_FALSE(csl::same_content(a, b));
+}
+
 TEST_CASE("an arm of N links: 'arm' with 1 to 6 lengths, 'arm2' with two, each written back as read") {
   const json three = json::parse(R"({"version": 1, "robot": {"type": "arm", "base": [0.5, 0.5], "lengths": [0.3, 0.2, 0.1]},
                                      "start": [0.1, 0.2, 7.0], "goal": [1, 2, 3]})");

@@ -72,6 +72,9 @@ nlohmann::json scene_to_json(const Scene& s);
 /// Whether two scenes are the same in every field: their JSON is equal (it holds every field
 /// exactly; numbers compare by value).
 bool same_scene(const Scene& a, const Scene& b);
+/// Whether two scenes are the same but perhaps for their names: what a planner, a field or a
+/// check runs in (the app renames an edited scene without changing what it holds).
+bool same_content(const Scene& a, const Scene& b);
 
 /// Checks an obstacle on its own (used by the parser and by editors before they commit a
 /// change); returns what is wrong, or "" if it is valid. `path` prefixes the message.
