@@ -125,6 +125,9 @@ class AnalysisLesson : public Lesson, private NoSteps {
   }
 
   Scene* scene() override { return &scene_; }
+  std::vector<LessonView> views_kept() override {
+    return {{"workspace", &scene_view_, scene_.workspace_min, scene_.workspace_max}, {"p9", &p9_view_, Vec2(0, 0), Vec2(1, 1)}};
+  }
   SceneEditor* editor() override { return tab_ != kVisibilityTab ? &editor_ : nullptr; }
   bool accept_scene(const Scene& s, std::string& why) override {
     if (std::holds_alternative<ArmRobot>(s.robot)) {

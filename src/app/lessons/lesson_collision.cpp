@@ -183,6 +183,9 @@ class CollisionLesson : public Lesson, private Stepper {
   }
 
   Scene* scene() override { return &scene_; }
+  std::vector<LessonView> views_kept() override {
+    return {{"workspace", &view_, scene_.workspace_min, scene_.workspace_max}};
+  }
   SceneEditor* editor() override { return &editor_; }
   bool accept_scene(const Scene& s, std::string& why) override {
     if (std::holds_alternative<PolygonRobot>(s.robot) || (std::holds_alternative<ArmRobot>(s.robot) && !is_two_link_arm(s.robot))) {

@@ -36,6 +36,7 @@ using ui::text_flow;
 // workspace are allowed, nothing where a double's spacing would show in the printed digits.
 constexpr double kMaxAngle = 1000.0;
 constexpr double kMaxCoordinate = 1000.0;
+constexpr double kCircleHalf = 1.45;  // the circle view shows [-1.45, 1.45]^2: the unit circle and its labels
 
 // Colours: q1 and q2 as the lab's start and goal, the short arc as a path.
 constexpr ImU32 kQ1 = theme::kBlue;
@@ -152,6 +153,11 @@ class DistancesLesson : public Lesson {
       ctx.views.erase("workspace");
       s1_view(ctx, size);
     }
+  }
+
+  std::vector<LessonView> views_kept() override {
+    fit_bounds();  // (the segment tool's rectangle follows its segment and disk)
+    return {{"circle", &circle_view_, Vec2(-kCircleHalf, -kCircleHalf), Vec2(kCircleHalf, kCircleHalf)}, {"workspace", &view_, bounds_lo_, bounds_hi_}};
   }
 
   json state(const json&) const override {
@@ -423,8 +429,8 @@ class DistancesLesson : public Lesson {
 
   void s1_view(LabContext& ctx, ImVec2 size) {
     WorkspaceView& v = circle_view_;
-    v.begin("##distances-circle", ImVec2(size.x, size.y - hint_height(kS1Hint, size.x)), Vec2(-1.45, -1.45),
-            Vec2(1.45, 1.45));
+    v.begin("##distances-circle", ImVec2(size.x, size.y - hint_height(kS1Hint, size.x)),
+            Vec2(-kCircleHalf, -kCircleHalf), Vec2(kCircleHalf, kCircleHalf));
     ctx.views["circle"] = &v;
     v.draw_grid("cos q", "sin q");
     s1_drag(v);

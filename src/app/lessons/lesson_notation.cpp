@@ -165,6 +165,10 @@ class NotationLesson : public Lesson {
     ctx.areas["surfaces"] = {ImGui::GetItemRectMin(), ImGui::GetItemRectMax()};
   }
 
+  std::vector<LessonView> views_kept() override {
+    return {{"torus", nullptr, Vec2::Zero(), Vec2::Zero(), &torus_}, {"sphere", nullptr, Vec2::Zero(), Vec2::Zero(), &sphere_}};
+  }
+
   json state(const json&) const override {
     const RobotDescription robot = shown();
     const ConfigSpaceInfo info = configuration_space(robot);

@@ -250,6 +250,13 @@ class PotentialLesson : public Lesson, private Stepper {
   }
 
   Scene* scene() override { return &scene_; }
+  std::vector<LessonView> views_kept() override {
+    std::vector<LessonView> out{{"workspace", &view_, scene_.workspace_min, scene_.workspace_max}};
+    // A point's C-space is its workspace, one view; an arm's is the torus square.
+    if (robot_kind() == Kind::Arm) out.push_back({"cspace", &cspace_view_, Vec2(-kPi, -kPi), Vec2(kPi, kPi)});
+    else if (robot_kind() != Kind::Point) out.push_back({"cspace", &cspace_view_, scene_.workspace_min, scene_.workspace_max});
+    return out;
+  }
   SceneEditor* editor() override { return &editor_; }
   bool accept_scene(const Scene& s, std::string& why) override {
     // Every robot type has control points; the arm's C-space view is the torus square (2 links).
@@ -495,8 +502,10 @@ class PotentialLesson : public Lesson, private Stepper {
       return;
     }
     const bool start_moved = now["start"] != before["start"];
-    now.erase("start");
-    before.erase("start");
+    for (const char* key : {"start", "name"}) {  // (a new name, "(edited)", changes no field)
+      now.erase(key);
+      before.erase(key);
+    }
     if (start_moved) from_ = scene_.start;
     if (now == before) {
       built_ = scene_;

@@ -79,6 +79,9 @@ class StepPrmLesson : public Lesson {
   }
 
   Scene* scene() override { return &scene_; }
+  std::vector<LessonView> views_kept() override {  // (its "cspace" is this one view)
+    return {{"workspace", &view_, scene_.workspace_min, scene_.workspace_max}};
+  }
   SceneEditor* editor() override { return &editor_; }
   bool accept_scene(const Scene& s, std::string& why) override {
     if (!std::holds_alternative<PointRobot>(s.robot)) {

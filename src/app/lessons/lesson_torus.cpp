@@ -157,6 +157,11 @@ class TorusLesson : public Lesson {
   }
 
   Scene* scene() override { return &scene_; }
+  std::vector<LessonView> views_kept() override {
+    return {{"workspace", &view_, scene_.workspace_min, scene_.workspace_max},
+            {"cspace", &cspace_view_, Vec2(-kPi, -kPi), Vec2(kPi, kPi)},
+            {"torus", nullptr, Vec2::Zero(), Vec2::Zero(), &torus_view_}};
+  }
   SceneEditor* editor() override { return &editor_; }
   bool accept_scene(const Scene& s, std::string& why) override {
     if (!is_two_link_arm(s.robot)) {

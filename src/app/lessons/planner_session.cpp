@@ -48,7 +48,7 @@ void PlannerSession::rebuild(const Scene& scene, PlannerFactory make, long steps
 void PlannerSession::edited(const Scene& scene, bool dragging) {
   // A drag back to where it was pressed gives back the scene the planner ran in, exactly (see
   // SceneEditor::continue_drag): its world again, and nothing to replay.
-  if (same_scene(scene, shown_.scene)) {
+  if (same_content(scene, shown_.scene)) {  // (its name may say "(edited)" meanwhile: app/shell/scene_name)
     world_ = shown_.world;
     if (next_) {  // a replay for another scene: the one on screen is this scene's again
       next_.reset();

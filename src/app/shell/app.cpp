@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "app/shell/bundled_scenes.hpp"
+#include "app/shell/camera.hpp"
 #include "app/shell/fonts.hpp"
 #include "app/shell/instructor.hpp"
 #include "app/shell/js_api.hpp"
@@ -16,6 +17,7 @@
 #include "app/shell/theme_api.hpp"
 #include "app/shell/ui.hpp"
 #include "app/shell/web_bridge.hpp"
+#include "core/base/text.hpp"
 #include "core/base/version.hpp"
 
 namespace csl::app {
@@ -60,6 +62,56 @@ App::App(const Platform& platform) : platform_(platform) {
   theme::apply_style();
   register_api();
   select_lesson(lessons().front().id);
+  // An answer sees a scene's name as the frames do, also right after another call edited it.
+  js_api().before_each([this] {
+    name_scenes();
+    finish_notes();
+  });
+}
+
+void App::name_scenes() {
+  for (auto& [id, lesson] : instances_)
+    if (lesson && lesson->scene()) extras_[id].scene_name.refresh(*lesson->scene());
+}
+
+void App::scene_loaded(const std::string& id) {
+  auto it = instances_.find(id);
+  if (it == instances_.end() || !it->second || !it->second->scene()) return;
+  SceneName& name = extras_[id].scene_name;
+  name.loaded(*it->second->scene());
+  name.refresh(*it->second->scene());
+}
+
+void App::note_restored(const std::string& id, const std::string& from) {
+  auto it = instances_.find(id);
+  if (it == instances_.end() || !it->second) return;
+  Lesson& l = *it->second;
+  LessonExtras& e = extras_[id];
+  // A replay over frames: the step it reaches is known once it ends (finish_notes()); a link's
+  // steps=100000 may end at 1186, or where Cancel stopped it.
+  e.restored_from = stepping(l).busy() ? from : std::string();
+  const std::string name = l.scene() ? printable(l.scene()->name, 80) : std::string();
+  const std::string cameras = cameras_text(cameras_json(l, false));
+  e.log_note = !e.restored_from.empty() ? "Restoring from " + from + "..."
+                : "Restored from " + from + " at step " + std::to_string(stepping(l).steps()) +
+                      (name.empty() ? "" : ", scene \"" + name + "\"") + (cameras.empty() ? "" : "; " + cameras) +
+                      ". Earlier steps are not listed.";
+  if (id == lesson_id_) ctx_.log.set_note(e.log_note);
+}
+
+void App::finish_notes() {
+  for (auto& [id, e] : extras_) {
+    if (e.restored_from.empty()) continue;
+    const auto lesson = instances_.find(id);
+    if (lesson != instances_.end() && lesson->second && !stepping(*lesson->second).busy()) note_restored(id, e.restored_from);
+  }
+}
+
+json App::lesson_state(const json& args) const {
+  json out = lesson_->state(args);
+  strip_answer_fields(out, instructor::hidden_answers(lesson_id_));
+  if (out.is_object() && lesson_->scene()) out["scene_name"] = lesson_->scene()->name;
+  return out;
 }
 
 void App::open_problem(const HomeworkProblem& p, bool preset) {
@@ -96,6 +148,7 @@ void App::show_in_lesson(const std::string& id, const json& setup) {
       throw;
     }
   }
+  if (scene) scene_loaded(id);
   stepping(lesson).work(std::numeric_limits<double>::infinity());
   select_lesson(id);
 }
@@ -108,6 +161,8 @@ bool App::select_lesson(const std::string& id) {
   ctx_.views.clear();
   ctx_.plots.clear();
   ctx_.log.clear();
+  const auto extras = extras_.find(id);
+  ctx_.log.set_note(extras == extras_.end() ? std::string() : extras->second.log_note);
   lesson_->on_show();  // its log again (it went with the clear), from where it stands
   return true;
 }
@@ -151,15 +206,10 @@ void App::register_api() {
     select_lesson(id);
     return json(lesson_id_);
   });
-  // A hidden answer (instructor.hpp) is not in the state: its fields are taken out here, for
-  // every caller (the page's export of the state too).
-  const auto state = [this](const json& args) {
-    json out = lesson_->state(args);
-    strip_answer_fields(out, instructor::hidden_answers(lesson_id_));
-    return out;
-  };
-  api.add("state", "the lesson's state ({roadmap: true} adds the roadmap)",
-          [state](const json& args) { return state(args); });
+  // A hidden answer (instructor.hpp) is not in the state: lesson_state() takes its fields out,
+  // for every caller (the page's export of the state too).
+  api.add("state", "the lesson's state ({roadmap: true} adds the roadmap) and its scene's name (scene_name)",
+          [this](const json& args) { return lesson_state(args); });
   api.add("param_specs",
           "the lesson's parameters for native controls: [{name, label, kind, min, max, step, unit, help, value, choices?, list?, locked}]",
           [this](const json&) {
@@ -173,13 +223,18 @@ void App::register_api() {
             return specs;
           });
   api.add("describe", "what the lesson shows now, in sentences (the scene, the main view's result)",
-          [this](const json&) { return json(lesson_->describe()); });
-  api.add("set_params", "the lesson's parameters: {params: {...}}", [this, state](const json& args) {
+          [this](const json&) {
+            const Scene* scene = lesson_->scene();
+            const std::string name = scene && !scene->name.empty() ? "Scene \"" + scene->name + "\". " : std::string();
+            return json(name + lesson_->describe());
+          });
+  api.add("set_params", "the lesson's parameters: {params: {...}}", [this](const json& args) {
     const json params = args.value("params", json::object());
     check_params_allowed(*lesson_, params);
     lesson_->set_params(params);
     finish(*lesson_, args);
-    return state(json::object());
+    name_scenes();  // (Collision checking's p and q are its scene's start and goal)
+    return lesson_state(json::object());
   });
   api.add("step", "forward {count} steps (default 1)", [this](const json& args) {
     const long n = count_arg(args, "count", 1, 10000000);
@@ -242,6 +297,7 @@ void App::register_api() {
     const Scene s = scene_from_json(args["scene"]);  // throws before anything changes
     std::string why;
     if (!lesson_->accept_scene(s, why)) throw ApiError(why);
+    scene_loaded(lesson_id_);
     finish(*lesson_, args);
     return scene_to_json(*lesson_->scene());
   });
@@ -279,26 +335,48 @@ void App::register_api() {
                 throw ApiError("points must be [[x, y], ...]");
               points.push_back(vec_json(v.to_screen(Vec2(p[0].get<double>(), p[1].get<double>()))));
             }
+            const Vec2 centre = v.to_world(ImVec2(0.5f * (v.canvas_min().x + v.canvas_max().x),
+                                                  0.5f * (v.canvas_min().y + v.canvas_max().y)));
             return json{{"canvas_min", vec_json(v.canvas_min())},
                         {"canvas_max", vec_json(v.canvas_max())},
                         {"scale", v.scale()},
+                        {"center", {centre.x(), centre.y()}},  // the world point at the canvas's centre
+                        {"fitted", v.fitted()},
                         {"points", points},
                         {"ticks", {{"x", v.tick_labels(0)}, {"y", v.tick_labels(1)}}},
                         {"fit_button", v.fit_button_shown()}};
           });
   // The whole state a link or an autosave needs to reproduce what is on screen exactly.
-  api.add("snapshot", "{lesson, scene, params, steps}: everything needed to restore this view exactly ({lesson: id}: an open lesson's)",
+  api.add("snapshot", "{lesson, scene, params, steps, camera?}: everything needed to restore this view exactly ({lesson: id}: an open lesson's); camera only for views zoomed, panned or turned",
           [this](const json& args) {
             const std::string id = args.value("lesson", lesson_id_);
             auto it = instances_.find(id);
             if (it == instances_.end() || !it->second) throw ApiError("lesson: \"" + id + "\" is not open");
             Lesson& l = *it->second;
-            return json{{"lesson", id},
-                        {"scene", l.scene() ? scene_to_json(*l.scene()) : json(nullptr)},
-                        {"params", l.params()},
-                        {"steps", stepping(l).wanted_steps()}};
+            json out{{"lesson", id},
+                     {"scene", l.scene() ? scene_to_json(*l.scene()) : json(nullptr)},
+                     {"params", l.params()},
+                     {"steps", stepping(l).wanted_steps()}};
+            // Left out while every view is as it starts: such snapshots (and links) stay as before.
+            if (json camera = cameras_json(l, false); !camera.empty()) out["camera"] = camera;
+            return out;
           });
-  api.add("restore", "restore a snapshot: {lesson, scene?, params?, steps?, background?}; all checked before anything changes",
+  api.add("camera", "where each of the lesson's views looks: {name: [x, y, zoom] (a plane; zoom 1: Fit) | [yaw, pitch] (3-D)}",
+          [this](const json&) { return cameras_json(*lesson_, true); });
+  api.add("set_camera", "zoom and pan the lesson's views: {camera: {name: [x, y, zoom] | [yaw, pitch]}}; all checked first",
+          [this](const json& args) {
+            set_cameras(*lesson_, args.value("camera", json::object()));
+            return cameras_json(*lesson_, true);
+          });
+  api.add("note_restored", "the log's first line says the lesson on screen was restored: {from: 'the link'}",
+          [this](const json& args) {
+            const auto from = args.find("from");
+            if (from == args.end() || !from->is_string() || from->get<std::string>().empty())
+              throw ApiError("from: what it was restored from");
+            note_restored(lesson_id_, printable(from->get<std::string>(), 60));
+            return json(ctx_.log.note());
+          });
+  api.add("restore", "restore a snapshot: {lesson, scene?, params?, steps?, camera?, background?, from?}; all checked before anything changes; from: the log says so ('your saved work')",
           [this](const json& request) {
             const std::string id = request.value("lesson", lesson_id_);
             const LessonInfo* info = find_lesson(id);
@@ -314,9 +392,17 @@ void App::register_api() {
             std::string why;
             if (scene && !trial->accept_scene(*scene, why)) throw ApiError("scene: " + why);
             if (args.contains("params")) trial->set_params(args["params"]);
+            if (args.contains("camera")) set_cameras(*trial, args["camera"]);  // after params: they may choose the views
+            const auto from = args.find("from");
+            if (from != args.end() && (!from->is_string() || from->get<std::string>().empty()))
+              throw ApiError("from: what it was restored from");
             stepping(*trial).run_to(steps);
             finish(*trial, args);
             instances_[id] = std::move(trial);
+            extras_[id].log_note.clear();
+            extras_[id].restored_from.clear();
+            scene_loaded(id);
+            if (from != args.end()) note_restored(id, printable(from->get<std::string>(), 60));
             // (A lesson the lock keeps the lab from is restored, not shown.)
             if (instructor::lesson_allowed(id)) select_lesson(id);
             return json{{"lesson", lesson_id_}, {"steps", stepping(*lesson_).steps()}};
@@ -324,8 +410,12 @@ void App::register_api() {
   homework_.register_api(api);
   web::register_api(api, ctx_);  // notify, page_state, bundled_scenes: the page around the app
   theme::register_api(api);      // the colours that carry meaning (accessibility tests)
-  api.add("log", "the event log's lines", [this](const json&) {
+  api.add("log", "the event log's lines, first its note if it has one ({step: 0, text, note: true}: where a restored lesson came from)", [this](const json&) {
     json out = json::array();
+    if (!ctx_.log.note().empty()) {
+      out.push_back({{"step", 0}, {"text", ctx_.log.note()}});
+      out.back()["note"] = true;
+    }
     for (const auto& [step, text] : ctx_.log.lines()) out.push_back({{"step", step}, {"text", text}});
     return out;
   });

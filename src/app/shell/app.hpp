@@ -11,6 +11,7 @@
 #include "app/shell/homework_panel.hpp"
 #include "app/shell/lesson.hpp"
 #include "app/shell/platform.hpp"
+#include "app/shell/scene_name.hpp"
 
 namespace csl::app {
 
@@ -71,6 +72,16 @@ class App {
   void hold_locked_params(const nlohmann::json& before);
   // The panel's line saying what the instructor fixed and hid here, if anything.
   void instructor_note();
+  // Brings every open lesson's scene name up to date with its content (scene_name.hpp).
+  void name_scenes();
+  // A scene from elsewhere went into lesson `id`: it is what its name refers to from now on.
+  void scene_loaded(const std::string& id);
+  // The log of lesson `id` says it was restored from `from` ("the link"), where and how (once a
+  // replay over frames has ended: finish_notes()).
+  void note_restored(const std::string& id, const std::string& from);
+  void finish_notes();
+  // The lesson's state() with its scene's name ("scene_name"), as the API answers it.
+  nlohmann::json lesson_state(const nlohmann::json& args) const;
 
   const Platform& platform_;
   LabContext ctx_;
@@ -84,6 +95,13 @@ class App {
   // While something is locked: each lesson's scene (JSON, or null) and parameters as the lock
   // found them (or as the lesson began, opened later): what a restore or a reset gets.
   std::map<std::string, nlohmann::json> pins_;
+  // What the app keeps for each open lesson besides the lesson itself, by its id.
+  struct LessonExtras {
+    SceneName scene_name;       // its scene's name, true to what it holds
+    std::string log_note;       // the first line of its log (EventLog::set_note)
+    std::string restored_from;  // a restore's replay still runs: where from, for the note at its end
+  };
+  std::map<std::string, LessonExtras> extras_;
   HomeworkPanel homework_{[this](const HomeworkProblem& p, bool preset) { open_problem(p, preset); },
                           [this](const std::string& lesson, const nlohmann::json& setup) { show_in_lesson(lesson, setup); }};
 };

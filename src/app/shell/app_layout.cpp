@@ -60,6 +60,7 @@ void App::frame() {
   style.ScrollbarSize = input::touch() ? 18.0f : 12.0f;
   shortcuts();
   work();
+  finish_notes();  // a restore's replay that ended: its log's note says where it stands
   // Parameters the instructor fixed stay as they are, whatever the student's input reached.
   const Lesson* drawn = lesson_;
   const json params_before = instructor::restrictions().any_lock() ? lesson_->params() : json();
@@ -83,6 +84,7 @@ void App::frame() {
   if (lesson_ == drawn && !params_before.is_null()) hold_locked_params(params_before);
   notice();
   layout_ = layout_json();
+  name_scenes();  // after this frame's edits (the editor's, a marker dragged, a slider's p)
 }
 
 void App::wide_frame() {

@@ -13,6 +13,11 @@ void EventLog::add(long step, std::string text) {
 
 void EventLog::draw(const char* id, float height) const {
   ImGui::BeginChild(id, ImVec2(0, height), true);
+  if (!note_.empty()) {  // secondary: the lines below are the news; wrapped, it may be long
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextDisabled("%s", note_.c_str());
+    ImGui::PopTextWrapPos();
+  }
   for (std::size_t i = 0; i < lines_.size(); ++i) {
     const auto& [step, text] = lines_[i];
     const bool newest = i + 1 == lines_.size();
@@ -25,7 +30,7 @@ void EventLog::draw(const char* id, float height) const {
     else
       ImGui::TextUnformatted(text.c_str());
   }
-  if (!lines_.empty()) ImGui::SetScrollHereY(1.0f);
+  if (!lines_.empty() || !note_.empty()) ImGui::SetScrollHereY(1.0f);
   ImGui::EndChild();
 }
 

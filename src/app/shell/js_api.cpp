@@ -48,6 +48,7 @@ std::string JsApi::call(const std::string& request) const {
   json args = req.value("args", json::object());
   if (!args.is_object()) return error("\"args\" must be an object");
   try {
+    if (before_) before_();
     return text(json{{"ok", true}, {"result", it->second.handler(args)}});
   } catch (const std::exception& e) {
     // ApiError, SceneError and json type errors alike: the app state is untouched by a

@@ -25,6 +25,9 @@ class JsApi {
   void add(const std::string& name, const std::string& help, ApiHandler handler);
   /// request {"cmd": NAME, "args": {...}} -> {"ok": true, "result": ...} or {"ok": false, "error": "..."}.
   std::string call(const std::string& request) const;
+  /// Runs before every command's handler: what the app keeps up to date between frames (the
+  /// scenes' names after an edit by the API) is up to date for every answer.
+  void before_each(std::function<void()> hook) { before_ = std::move(hook); }
 
  private:
   struct Entry {
@@ -32,6 +35,7 @@ class JsApi {
     ApiHandler handler;
   };
   std::map<std::string, Entry> commands_;
+  std::function<void()> before_;
 };
 
 /// The one instance the exported csl_call() uses.

@@ -19,6 +19,17 @@
 namespace csl::app {
 
 class SceneEditor;
+class SurfaceView;
+class WorkspaceView;
+
+/// One of a lesson's views whose camera travels in snapshots and links (app/shell/camera.*):
+/// a plane (`plane`, with the rectangle the lesson shows in it now) or a 3-D surface.
+struct LessonView {
+  const char* name;  ///< as status().layout.views names it: "workspace", "cspace", "torus"
+  WorkspaceView* plane = nullptr;
+  Vec2 min{0, 0}, max{1, 1};
+  SurfaceView* surface = nullptr;
+};
 
 class Lesson {
  public:
@@ -64,6 +75,9 @@ class Lesson {
   /// The algorithm the lesson steps (the shared playback controls, keys and API drive it), or
   /// nullptr for a lesson with nothing to step.
   virtual Stepper* stepper() { return nullptr; }
+  /// The views whose zoom and pan (a 3-D view: its turn) a snapshot keeps, each once (a view
+  /// the API knows by two names, as Step PRM's workspace that is its C-space, under the first).
+  virtual std::vector<LessonView> views_kept() { return {}; }
   /// The scene editor of the view on screen, or nullptr: the compact layout puts its tool
   /// buttons over the views (the side panel, where they are, is another tab there).
   virtual SceneEditor* editor() { return nullptr; }

@@ -16,8 +16,8 @@ void SurfaceView::begin(const char* id, ImVec2 size, double extent) {
   hovered_ = ImGui::IsItemHovered();
   if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f)) {
     const ImVec2 d = ImGui::GetIO().MouseDelta;
-    yaw_ += 0.01 * static_cast<double>(d.x);
-    pitch_ = std::clamp(pitch_ + 0.01 * static_cast<double>(d.y), -1.5, 1.5);
+    yaw_ = wrap_angle(yaw_ + 0.01 * static_cast<double>(d.x));  // one number per direction: links stay short
+    pitch_ = std::clamp(pitch_ + 0.01 * static_cast<double>(d.y), -kMaxPitch, kMaxPitch);
   }
   centre_ = ImVec2(at.x + 0.5f * size.x, at.y + 0.5f * size.y);
   scale_ = 0.5f * std::min(size.x, size.y) / static_cast<float>(extent);

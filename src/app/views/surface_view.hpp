@@ -44,10 +44,17 @@ class SurfaceView {
  public:
   /// Lays out the canvas at the cursor (size in logical pixels); a left drag turns the view.
   void begin(const char* id, ImVec2 size, double extent);
+  /// The view's turn, as it starts and within what a drag reaches: yaw about the vertical axis,
+  /// kept in [-pi, pi) (it wraps), pitch the tilt towards the viewer, within +-kMaxPitch.
+  static constexpr double kDefaultYaw = 0.6;
+  static constexpr double kDefaultPitch = 0.9;
+  static constexpr double kMaxPitch = 1.5;
   void set_angles(double yaw, double pitch) {
     yaw_ = yaw;
     pitch_ = pitch;
   }
+  double yaw() const { return yaw_; }
+  double pitch() const { return pitch_; }
 
   /// Screen position of a 3-D point; depth > 0 is nearer the viewer.
   ImVec2 project(const Vec3& p, double* depth = nullptr) const;
@@ -68,7 +75,7 @@ class SurfaceView {
   Vec3 rotate(const Vec3& p) const;
   ImVec2 centre_{0, 0};
   float scale_ = 1.0f;
-  double yaw_ = 0.6, pitch_ = 0.9;
+  double yaw_ = kDefaultYaw, pitch_ = kDefaultPitch;
   bool hovered_ = false;
 };
 

@@ -62,7 +62,7 @@ void WorkspaceView::begin(const char* id, ImVec2 size, const Vec2& world_min, co
   // Zoom about the cursor: the world point under it stays put.
   if (hovered_ && io.MouseWheel != 0.0f) {
     const Vec2 before = mouse_world();
-    zoom_ = std::clamp(zoom_ * std::pow(1.2, static_cast<double>(io.MouseWheel)), 0.5, 200.0);
+    zoom_ = std::clamp(zoom_ * std::pow(1.2, static_cast<double>(io.MouseWheel)), kMinZoom, kMaxZoom);
     scale_ = fit * static_cast<float>(zoom_);
     center_world_ = 0.5 * (world_min_ + world_max_) + pan_;
     center_screen_ = ImVec2(canvas_min_.x + 0.5f * size.x, canvas_min_.y + 0.5f * size.y);
@@ -73,7 +73,7 @@ void WorkspaceView::begin(const char* id, ImVec2 size, const Vec2& world_min, co
   if (pinch.active && pinch.center.x >= canvas_min_.x && pinch.center.x < canvas_max_.x &&
       pinch.center.y >= canvas_min_.y && pinch.center.y < canvas_max_.y) {
     const Vec2 before = to_world(pinch.center);
-    zoom_ = std::clamp(zoom_ * static_cast<double>(pinch.scale), 0.5, 200.0);
+    zoom_ = std::clamp(zoom_ * static_cast<double>(pinch.scale), kMinZoom, kMaxZoom);
     scale_ = fit * static_cast<float>(zoom_);
     center_world_ = 0.5 * (world_min_ + world_max_) + pan_;
     center_screen_ = ImVec2(canvas_min_.x + 0.5f * size.x, canvas_min_.y + 0.5f * size.y);
@@ -90,10 +90,38 @@ void WorkspaceView::begin(const char* id, ImVec2 size, const Vec2& world_min, co
     else
       panning_ = false;
   }
+  // Not out of sight: a camera a link can hold (camera.cpp refuses the same limits).
+  Vec2 lo, hi;
+  center_limits(world_min_, world_max_, lo, hi);
+  const Vec2 mid = 0.5 * (world_min_ + world_max_);
+  for (int axis = 0; axis < 2; ++axis) {  // (pan_ untouched inside: no rounding creeps in a frame at a time)
+    if (mid[axis] + pan_[axis] < lo[axis]) pan_[axis] = lo[axis] - mid[axis];
+    if (mid[axis] + pan_[axis] > hi[axis]) pan_[axis] = hi[axis] - mid[axis];
+  }
   scale_ = fit * static_cast<float>(zoom_);
-  center_world_ = 0.5 * (world_min_ + world_max_) + pan_;
+  center_world_ = mid + pan_;
   // Snapped to whole pixels so that 1-pixel grid lines stay sharp.
   center_screen_ = ImVec2(std::round(canvas_min_.x + 0.5f * size.x), std::round(canvas_min_.y + 0.5f * size.y));
+}
+
+WorkspaceView::Camera WorkspaceView::camera(const Vec2& world_min, const Vec2& world_max) const {
+  const Vec2 mid = 0.5 * (world_min + world_max);
+  if (world_min != world_min_ || world_max != world_max_) return {mid, 1.0};
+  return {mid + pan_, zoom_};
+}
+
+void WorkspaceView::center_limits(const Vec2& world_min, const Vec2& world_max, Vec2& lo, Vec2& hi) {
+  const Vec2 extent = world_max - world_min;
+  lo = world_min - extent;
+  hi = world_max + extent;
+}
+
+void WorkspaceView::set_camera(const Vec2& world_min, const Vec2& world_max, const Camera& camera) {
+  world_min_ = world_min;  // so that begin() keeps the camera rather than fit a "new" rectangle
+  world_max_ = world_max;
+  zoom_ = camera.zoom;
+  pan_ = camera.center - 0.5 * (world_min + world_max);
+  panning_ = false;
 }
 
 double WorkspaceView::reach(float mouse_px) const { return pixels(input::reach(mouse_px)); }

@@ -13,6 +13,17 @@ namespace csl::app {
 
 class WorkspaceView {
  public:
+  /// The user's zoom (1: the whole rectangle, "Fit") stays within these: the wheel and a pinch
+  /// stop there, and a link or a saved camera outside them is refused.
+  static constexpr double kMinZoom = 0.5;
+  static constexpr double kMaxZoom = 200.0;
+  /// Where the view looks: the world point at the canvas's centre and the zoom (1: Fit). What
+  /// travels in snapshots and links (app/shell/camera.*), independent of the canvas's size.
+  struct Camera {
+    Vec2 center{0, 0};
+    double zoom = 1.0;
+  };
+
   /// Lays out the canvas in the current ImGui window at the cursor, filling `size` (logical
   /// pixels) and showing [world_min, world_max] as large as fits with equal scale on both axes
   /// (times the user's zoom). Handles pan and zoom. Call once a frame before the helpers.
@@ -27,6 +38,19 @@ class WorkspaceView {
     zoom_ = 1.0;
     pan_ = Vec2(0, 0);
   }
+  /// Whether the view shows the whole rectangle, as it starts (no zoom, no pan).
+  bool fitted() const { return zoom_ == 1.0 && pan_ == Vec2(0, 0); }
+  /// The camera on [world_min, world_max], the rectangle the lesson shows in this view now. A
+  /// rectangle other than the one last drawn (a new scene not drawn yet) is shown whole at its
+  /// next begin(): its camera is the Fit one.
+  Camera camera(const Vec2& world_min, const Vec2& world_max) const;
+  /// Where the centre may be for that rectangle: within one width (height) of it on each side,
+  /// so that some of it is always in sight at the least zoom. Pans stop there too.
+  static void center_limits(const Vec2& world_min, const Vec2& world_max, Vec2& lo, Vec2& hi);
+  /// Looks at `camera` in [world_min, world_max] (the lesson's rectangle for this view, which the
+  /// next begin() then keeps). The caller checked it (zoom within the limits, centre within
+  /// center_limits()).
+  void set_camera(const Vec2& world_min, const Vec2& world_max, const Camera& camera);
 
   ImVec2 to_screen(const Vec2& p) const;
   Vec2 to_world(ImVec2 s) const;
