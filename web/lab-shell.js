@@ -525,7 +525,7 @@
         if (store.get('work') !== null && !validWork(saved)) problems.push('the saved work in this browser could not be read');
         if (validWork(saved)) {
           this.beginRestore('your saved work', { kind: 'work' });
-          problems.push(...this.restoreWork(saved).map((p) => 'saved work: ' + p));
+          problems.push(...this.restoreWork(saved, 'your saved work').map((p) => 'saved work: ' + p));
           restored = true;
         }
         if (configKey && !(restored && saved.config === configKey)) {
@@ -725,6 +725,16 @@
         else if (Number(raw) > MAX_STEPS) problems.push(`steps ${U.excerpt(raw)} (more than the lab's ${MAX_STEPS} steps)`);
         else part((e) => `steps ${U.excerpt(raw)} (${e.message})`, () => api.call('run_to', { steps: Number(raw), background: true }));
       }
+      if (values.has('camera')) {
+        const raw = values.get('camera');
+        part((e) => `camera ${U.excerpt(raw)} (${e.message.replace(/^camera: /, '')})`,
+             () => api.call('set_camera', { camera: U.parseCamera(raw) }));
+      }
+      try {
+        api.call('note_restored', { from: 'the link' });  // the log's first line says so
+      } catch (e) {
+        if (this.dead) throw e;  // (it cannot fail otherwise: there is a lesson on screen)
+      }
       if (values.has('ui') && !['full', 'minimal'].includes(values.get('ui')))
         problems.push(`ui ${U.excerpt(values.get('ui'))} (full or minimal)`);
       if (values.has('scheme') && !SCHEMES.includes(values.get('scheme')))
@@ -883,8 +893,11 @@
                current: this.api.status().lesson, lessons };
     }
 
-    /** Restores a work record lesson by lesson; returns the problems (those lessons stay as they are). */
-    restoreWork(record) {
+    /**
+     * Restores a work record lesson by lesson; returns the problems (those lessons stay as they
+     * are). `from` ("your saved work") starts each restored lesson's log.
+     */
+    restoreWork(record, from) {
       const problems = [];
       const known = new Set(this.lessons.map((l) => l.id));
       for (const [id, snapshot] of Object.entries(record.lessons).slice(0, 64)) {
@@ -892,16 +905,23 @@
         if (!snapshot || typeof snapshot !== 'object') continue;
         try {
           // background: a long replay goes on over frames (progress and Cancel in the app).
-          this.api.restore(Object.assign({}, snapshot, { lesson: id, background: true }));
+          this.api.restore(Object.assign({}, snapshot, { lesson: id, background: true, from }));
         } catch (e) {
           if (this.dead) throw e;
           problems.push(`${this.lessonName(id)}: ${e.message}`);
-          // Parameters a newer version names differently must not cost the scene: keep what fits.
-          try {
-            if (snapshot.scene) this.api.restore({ lesson: id, scene: snapshot.scene });
-          } catch (e2) {
-            if (this.dead) throw e2;
-            // the scene itself is bad: the lesson stays as it was
+          // A view or parameters a newer version names differently must not cost the work: the
+          // rest without the views' cameras, else the scene alone.
+          const fallbacks = [];
+          if (snapshot.camera) fallbacks.push(Object.assign({}, snapshot, { lesson: id, background: true, from, camera: undefined }));
+          if (snapshot.scene) fallbacks.push({ lesson: id, scene: snapshot.scene, from });
+          for (const fallback of fallbacks) {
+            try {
+              this.api.restore(fallback);
+              break;
+            } catch (e2) {
+              if (this.dead) throw e2;
+              // the scene itself is bad: the lesson stays as it was
+            }
           }
         }
       }
@@ -1038,7 +1058,7 @@
       }
       const label = this.entryLabel(entry);
       this.beginRestore('your work of ' + label, { kind: 'history', id });
-      const problems = entry.work ? this.restoreWork(entry.work) : await this.applyConfig(U.parseConfig(entry.link.query).values);
+      const problems = entry.work ? this.restoreWork(entry.work, 'previous work') : await this.applyConfig(U.parseConfig(entry.link.query).values);
       this.cleanText = null;
       const saved = this.saveNow();
       if (saved) this.store.remove('history:' + id);  // it is the work now
@@ -1104,7 +1124,7 @@
       if (/^file:/i.test(url)) return this.shareFromFile(query, problems);
       const copied = await this.copy(url);
       const lines = [];
-      if (copied) lines.push('The link is on the clipboard. It opens this lesson with this scene, these parameters and seed, at this step.');
+      if (copied) lines.push('The link is on the clipboard. It opens this lesson with this scene, these parameters and seed, at this step, zoomed and turned as the views are now.');
       else lines.push('Copy the link below (the browser did not let the page use the clipboard).');
       if (problems.length) lines.push('Not exact: ' + problems.join('; ') + '. Export the scene as JSON to pass it on whole.');
       this.showDialog('Share this state', lines, [{ label: 'Link', value: url, rows: 3 }]);

@@ -12,6 +12,11 @@
 //            characters; not part of the state: a new task keeps a student's saved work)
 //   scheme   system | light | dark, and contrast system | normal | high: the look for this visit
 //            (the student's own choice in File > Display is kept by the page)
+//   camera   where the views look, each view name:numbers, views joined by "~":
+//              camera=workspace:0.31,0.62,4~torus:1.2,0.4
+//            a plane's centre x, y and zoom (1: Fit, 0.5 to 200), a 3-D view's yaw and pitch
+//            (radians); only views the user zoomed, panned or turned are written; the app
+//            checks names and ranges. Part of the state, as a snapshot holds it.
 //   and the lesson's own parameters (whatever its params() reports: samples, neighbors,
 //   checker, seed for Step PRM; grid_n, p, q for Collision checking; …).
 //   lock     scene, params, lesson or a parameter's name: what the student cannot change
@@ -39,7 +44,7 @@
     depth: 64,               // levels of JSON nesting (the app's kMaxJsonDepth, src/core/scene/scene.hpp)
   });
   const RESERVED = new Set(['lesson', 'scene', 'steps', 'ui', 'id', 'problem', 'task', 'scheme', 'contrast',
-                            'lock', 'hide', 'reveal']);
+                            'camera', 'lock', 'hide', 'reveal']);
   // Keys that say how to show the lab, not what it shows: they are not part of its state. (lock,
   // hide and reveal are: a link that adds a lock applies again, so the lock holds the link's scene.)
   const PRESENTATION = new Set(['ui', 'id', 'task', 'scheme', 'contrast']);
@@ -51,6 +56,8 @@
   const STEPS = /^\d{1,9}$/;
   const ID = /^[A-Za-z0-9_-]{1,40}$/;
   const B64URL = /^[A-Za-z0-9_-]+$/;
+  const VIEW = /^[a-z][a-z0-9]{0,15}$/;
+  const MAX_VIEWS = 8;
 
   /** A short, printable excerpt of untrusted text for a message: "abc…" (quotes included). */
   function excerpt(text, max = 24) {
@@ -164,6 +171,44 @@
       return parts.map(parseNumber);
     }
     throw new Error('cannot be set from a link');
+  }
+
+  /**
+   * The cameras of a link's camera value, as the app's snapshot holds them:
+   * "workspace:0.31,0.62,4~torus:1.2,0.4" -> {workspace: [0.31, 0.62, 4], torus: [1.2, 0.4]}.
+   * Throws an Error saying what is wrong (the syntax only: the app knows the lesson's views, which
+   * are planes and which 3-D, and their ranges).
+   */
+  function parseCamera(raw) {
+    const out = {};
+    const parts = raw.split('~');
+    if (parts.length > MAX_VIEWS) throw new Error(`more than ${MAX_VIEWS} views`);
+    for (const part of parts) {
+      const m = /^([^:]*):(.*)$/.exec(part);
+      if (!m) throw new Error(`${excerpt(part)} is not view:numbers`);
+      const [, name, list] = m;
+      if (!VIEW.test(name)) throw new Error(`${excerpt(name)} is not a view's name`);
+      if (Object.prototype.hasOwnProperty.call(out, name)) throw new Error(`${name} is given twice`);
+      let numbers;
+      try {
+        numbers = list.split(',').map(parseNumber);
+      } catch (e) {
+        throw new Error(`${name}: ${excerpt(list)} is not comma-separated numbers`);
+      }
+      if (numbers.length !== 2 && numbers.length !== 3)
+        throw new Error(`${name}: x,y,zoom (a plane) or yaw,pitch (a 3-D view), not ${numbers.length} numbers`);
+      out[name] = numbers;
+    }
+    return out;
+  }
+
+  /** A snapshot's cameras as a link's camera value (parseCamera's inverse), or null if there are none. */
+  function formatCamera(camera) {
+    const parts = [];
+    for (const [name, numbers] of Object.entries(camera || {}))
+      if (VIEW.test(name) && Array.isArray(numbers) && numbers.every((x) => typeof x === 'number' && Number.isFinite(x)))
+        parts.push(name + ':' + numbers.map(String).join(','));
+    return parts.length ? parts.join('~') : null;
   }
 
   /** The text of a parameter's value in a link, or null if a link cannot hold it. */
@@ -290,7 +335,7 @@
   }
 
   /**
-   * The query (without '?') that reproduces a snapshot {lesson, scene, params, steps} exactly.
+   * The query (without '?') that reproduces a snapshot {lesson, scene, params, steps, camera} exactly.
    * `bundled` maps names to the bundled scenes; a scene equal to one is written by name.
    * Returns {query, problems}: problems name what a link cannot hold (the link is then inexact).
    */
@@ -319,6 +364,10 @@
       parts.push(key + '=' + encoded);
     }
     parts.push('steps=' + String(snapshot.steps || 0));
+    const camera = formatCamera(snapshot.camera);
+    if (camera !== null && encodeValue(camera).length > LIMITS.value)
+      problems.push(`the views' zoom takes ${sizeText(encodeValue(camera).length)} in a link, more than the ${sizeText(LIMITS.value)} a value may`);
+    else if (camera !== null) parts.push('camera=' + encodeValue(camera));
     for (const [key, value] of Object.entries(extra)) parts.push(key + '=' + encodeValue(String(value)));
     return { query: parts.join('&'), problems };
   }
@@ -353,6 +402,7 @@
   const api = Object.freeze({
     LIMITS, RESERVED, PRESENTATION, RESTRICTION_KEYS, NAME, STEPS, ID,
     excerpt, sizeText, parseConfig, hasState, stateKey, parseValue, formatValue, encodeValue, restrictionsOf,
+    parseCamera, formatCamera,
     encodeScene, decodeScene, tooDeep, buildQuery, hash, toBase64Url, fromBase64Url,
   });
   global.CSpaceLabUrl = api;

@@ -124,6 +124,50 @@ test('buildQuery names a value too long for a link instead of writing one parseC
   assert.deepEqual((await U.buildQuery({ ...snapshot, params: { description: ' '.repeat(85) } })).problems, []);
 });
 
+test('camera: the views\' zoom, pan and turn round-trip through a link exactly', async () => {
+  const r = rng(5);
+  for (let i = 0; i < 200; ++i) {
+    const camera = { workspace: [r() * 4 - 2, r() * 1e-6, 0.5 + r() * 199.5] };
+    if (r() < 0.5) camera.cspace = [-r() * 3, r() * 3, 1 + Math.round(r() * 100)];
+    if (r() < 0.5) camera.torus = [r() * 6 - 3, r() * 3 - 1.5];
+    const { query, problems } = await U.buildQuery({ lesson: 'torus', scene: null, params: { seed: 3 }, steps: 7, camera });
+    assert.deepEqual(problems, []);
+    const { values, problems: p2 } = U.parseConfig(query);
+    assert.deepEqual(p2, []);
+    assert.deepEqual(U.parseCamera(values.get('camera')), camera, query);
+    assert.match(query, /&steps=7&camera=workspace:[^&]+$/, 'after the step, readable (":" and "," unescaped)');
+  }
+  // No camera, or an empty one (every view as it starts): no key, the link as before.
+  assert.equal((await U.buildQuery({ lesson: 'x', scene: null, params: {}, steps: 0 })).query, 'lesson=x&steps=0');
+  assert.equal((await U.buildQuery({ lesson: 'x', scene: null, params: {}, steps: 0, camera: {} })).query, 'lesson=x&steps=0');
+  assert.equal(U.formatCamera({ workspace: [0.31, 0.62, 4], torus: [1.2, 0.4] }), 'workspace:0.31,0.62,4~torus:1.2,0.4');
+  assert.ok(U.RESERVED.has('camera'), 'no lesson parameter can take the name');
+});
+
+test('camera: its syntax is checked strictly, each fault named', () => {
+  const fault = (text) => {
+    try {
+      U.parseCamera(text);
+    } catch (e) {
+      return e.message;
+    }
+    return null;
+  };
+  assert.equal(fault('workspace:0.5,0.5,2'), null);
+  assert.equal(fault('workspace'), '"workspace" is not view:numbers');
+  assert.equal(fault('Workspace:1,2,3'), '"Workspace" is not a view\'s name');
+  assert.equal(fault('work space:1,2,3'), '"work space" is not a view\'s name');
+  assert.equal(fault('workspace:1,2,3~workspace:1,2,3'), 'workspace is given twice');
+  assert.equal(fault('workspace:1,x,3'), 'workspace: "1,x,3" is not comma-separated numbers');
+  assert.equal(fault('workspace:1,Infinity,3'), 'workspace: "1,Infinity,3" is not comma-separated numbers');
+  assert.equal(fault('workspace:1e999,1,3'), 'workspace: "1e999,1,3" is not comma-separated numbers');
+  assert.equal(fault('workspace:1,2,3,4'), 'workspace: x,y,zoom (a plane) or yaw,pitch (a 3-D view), not 4 numbers');
+  assert.equal(fault('workspace:'), 'workspace: "" is not comma-separated numbers');
+  assert.equal(fault(Array.from({ length: 9 }, (_, i) => `v${i}:1,2`).join('~')), 'more than 8 views');
+  // The app knows which view is a plane: it refuses a plane given two numbers ("is a plane").
+  assert.deepEqual(U.parseCamera('torus:0.1,-0.2~workspace:1,2,3'), { torus: [0.1, -0.2], workspace: [1, 2, 3] });
+});
+
 test('messages quote untrusted text short and printable', () => {
   assert.equal(U.excerpt('abc'), '"abc"');
   assert.equal(U.excerpt('a\u0000b\nc\u202e'), '"a?b?c\u202e"');
