@@ -6,7 +6,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { withBrowser, withPage, collectErrors, openLab, click, waitFrames, api, pageButton, screenshot,
-         drawDisk, chord, worldToPage } from './lib/harness.mjs';
+         drawDisk, chord, worldToPage, inspectPng, LOOKS } from './lib/harness.mjs';
 
 const VIEWPORT = { width: 1280, height: 800 };
 
@@ -172,6 +172,17 @@ test('Step PRM: a zoomed and panned view comes back the same through Share, pixe
   const d = await difference(browser, zoomed, reopened);
   assert.ok(d.size && d.share < 0.003, `the same region, the same pixels (${(d.share * 100).toFixed(3)} % differ)`);
   t.diagnostic(`zoom ${cz}: ${(changed * 100).toFixed(1)} % of the view changed; the link's page differs in ${(d.share * 100).toFixed(4)} %`);
+  // Opened zoomed, the view shows its way back: the Fit button, drawn over the zoomed scene (it
+  // was drawn under the world rectangle once that covered the canvas).
+  const fit = await other.page.evaluate(() => {
+    const r = window.cspacelab.pageState().buttons['fit##prm-workspace'];
+    const box = window.cspacelab.module.canvas.getBoundingClientRect();
+    return r && { x: box.left + r[0], y: box.top + r[1], width: r[2] - r[0], height: r[3] - r[1] };
+  });
+  assert.ok(fit && fit.width > 40, 'the Fit button is on screen');
+  const { at } = await inspectPng(browser, await other.page.screenshot({ clip: fit }),
+                                  [[3, fit.height / 2], [fit.width - 3, fit.height / 2]]);
+  for (const c of at) assert.ok(!LOOKS.canvas(c), `the button's face, not the canvas under it: rgb(${c})`);
   // Its log says what the link restored.
   const note = (await api(other.page, 'log'))[0];
   assert.equal(note.note, true);

@@ -31,17 +31,25 @@ void WorkspaceView::begin(const char* id, ImVec2 size, const Vec2& world_min, co
   size.y = std::max(size.y, 64.0f);
   canvas_max_ = ImVec2(canvas_min_.x + size.x, canvas_min_.y + size.y);
   if (zoom_ != 1.0 || pan_ != Vec2(0, 0)) {
-    // Zoomed or panned: a button back to the whole picture, at the canvas's top right. Submitted
-    // before the canvas, so that it takes the press (ImGui gives a press to the first of two
-    // overlapping items) and an editor under it sees none.
+    // Zoomed or panned: a button back to the whole picture, at the canvas's top right, in a child
+    // window of its own. A child is drawn after its parent's draw list: zoomed in, the world
+    // rectangle's background and the scene drawn after begin() cover the whole canvas, and hid a
+    // button drawn in it (a link opened zoomed showed no way back). The mouse over the child is
+    // not over the canvas, so the press is the button's and an editor under it sees none.
     const char* label = "Fit view (F)";
-    ImGui::SetCursorScreenPos(ImVec2(canvas_max_.x - ui_button_width(label) - 6.0f, canvas_min_.y + 4.0f));
+    const ImVec2 button(ui_button_width(label), ImGui::GetTextLineHeight());
+    ImGui::SetCursorScreenPos(ImVec2(canvas_max_.x - button.x - 6.0f, canvas_min_.y + 4.0f));
     ImGui::PushID(id);
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+    ImGui::BeginChild("##fit", button, false,
+                      ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse | ImGuiWindowFlags_NoBackground);
     if (ImGui::SmallButton(label)) reset_view();
     web::record_control((std::string("fit") + id).c_str());  // "fit##prm-workspace": for tests
-    fit_button_ = true;
-    ImGui::PopID();
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("the whole scene again (F)");
+    ImGui::EndChild();
+    ImGui::PopStyleVar();
+    ImGui::PopID();
+    fit_button_ = true;
     ImGui::SetCursorScreenPos(canvas_min_);
   } else {
     fit_button_ = false;
