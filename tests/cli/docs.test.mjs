@@ -61,3 +61,20 @@ test('every robot type and obstacle type the CLI knows has a row in the doc', ()
   assert.ok(types.size >= 6, [...types].join(', '));
   for (const t of types) assert.match(text, new RegExp('^\\| `' + t + '` \\| ', 'm'), `the type ${t} has a row`);
 });
+
+test('the link keys lesson and hide name every lesson id and every hideable answer the core lists', () => {
+  const r = spawnSync(CLI, ['link', '--list'], { encoding: 'utf8' });
+  assert.equal(r.status, 0, r.stderr);
+  const list = JSON.parse(r.stdout);
+  const row = (key) => {
+    const m = text.match(new RegExp('^\\| `' + key + '` \\| (.*)$', 'm'));
+    assert.ok(m, `the link key ${key} has a row`);
+    return m[1];
+  };
+  const lessonRow = row('lesson');
+  assert.ok(list.lessons.length >= 7, 'the core lists the lessons');
+  for (const { id } of list.lessons) assert.ok(lessonRow.includes('`' + id + '`'), `lesson id ${id} in the lesson row`);
+  const hideRow = row('hide');
+  for (const { name } of list.answers) assert.ok(hideRow.includes('`' + name + '`'), `answer ${name} in the hide row`);
+  for (const key of ['lock', 'reveal', 'task', 'camera', 'scheme', 'contrast']) row(key);
+});
