@@ -103,7 +103,9 @@ void App::finish_notes() {
   for (auto& [id, e] : extras_) {
     if (e.restored_from.empty()) continue;
     const auto lesson = instances_.find(id);
-    if (lesson != instances_.end() && lesson->second && !stepping(*lesson->second).busy()) note_restored(id, e.restored_from);
+    // A copy: note_restored() clears e.restored_from, which must not be the text it writes.
+    const std::string from = e.restored_from;
+    if (lesson != instances_.end() && lesson->second && !stepping(*lesson->second).busy()) note_restored(id, from);
   }
 }
 
