@@ -241,3 +241,19 @@ test('Phone: a long press opens the context menu; add a disk where the finger wa
   assert.deepEqual((await api(page, 'get_scene')).start, before.start);
   assert.deepEqual(errors, []);
 }));
+
+test('Phone: under lock=scene a long press on empty space says why no menu opens',
+  () => withBrowser(async ({ browser, url }) => {
+  const { page, errors, touch, control } = await phone(browser, url, PORTRAIT, '?lesson=step-prm&scene=prm-demo&lock=scene');
+  const before = await api(page, 'get_scene');
+  assert.equal((await api(page, 'status')).notice, '', 'the link was read without complaint');
+  const [at] = await worldToPage(page, [[0.2, 0.45]]);  // free in prm-demo
+  await touch('touchStart', [at]);
+  // As long as an unlocked lab takes to open its menu (0.5 s and 30 frames held still).
+  await page.waitForFunction(() => /fixed by your instructor/.test(window.cspacelab.status().notice), null, { timeout: 10000 });
+  await touch('touchEnd', []);
+  await waitFrames(page, 2);
+  assert.equal(await control('context-add-disk'), null, 'no menu');
+  assert.deepEqual(await api(page, 'get_scene'), before, 'nothing changed');
+  assert.deepEqual(errors, []);
+}));

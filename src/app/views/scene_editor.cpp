@@ -385,10 +385,8 @@ bool SceneEditor::locked_edit(WorkspaceView& view, const Scene& scene, LabContex
   tool_ = Tool::Select;
   key_burst_ = false;
   bool tried = false;
-  // The context menu (a right-click that did not pan) is the editor's too.
-  if (view.hovered() && ImGui::IsMouseReleased(ImGuiMouseButton_Right) &&
-      ImGui::GetIO().MouseDragMaxDistanceSqr[ImGuiMouseButton_Right] <= 16.0f)
-    tried = true;
+  // The context menu (a right-click that did not pan, a long press) is the editor's too.
+  if (menu_right_click(view) || menu_long_press(view)) tried = true;
   if (view.hovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
     const Vec2 m = view.mouse_world();
     if (options.endpoints_are_points)

@@ -78,6 +78,10 @@ class SceneEditor {
   bool handle_keys(Scene& scene, LabContext& ctx);
   // scene_editor_menu.cpp: the context menu (right-click, long press).
   bool context_menu(WorkspaceView& view, Scene& scene, LabContext& ctx, const Options& options);
+  // What opens the context menu: a right-click that did not pan; a long press (which it
+  // records, once per press). locked_edit() asks them too, to say why nothing opens.
+  bool menu_right_click(const WorkspaceView& view) const;
+  bool menu_long_press(const WorkspaceView& view);
   // edit() while the instructor fixed the scene: no change; a press or key that would edit
   // shows the notice saying why.
   bool locked_edit(WorkspaceView& view, const Scene& scene, LabContext& ctx, const Options& options);

@@ -32,22 +32,31 @@ const char* shape_name(const Obstacle& o) {
 
 }  // namespace
 
-bool SceneEditor::context_menu(WorkspaceView& view, Scene& scene, LabContext& ctx, const Options& options) {
+bool SceneEditor::menu_right_click(const WorkspaceView& view) const {
+  // The right button released where it was pressed (a right-drag pans the view).
+  return view.hovered() && ImGui::IsMouseReleased(ImGuiMouseButton_Right) &&
+         ImGui::GetIO().MouseDragMaxDistanceSqr[ImGuiMouseButton_Right] <= kPanPixels * kPanPixels;
+}
+
+bool SceneEditor::menu_long_press(const WorkspaceView& view) {
+  // A finger held still, once per press, never during a pinch, and only with the Select tool:
+  // with Disk, Wall or Polygon a press draws (a slow start of a drawing is no long press).
   const ImGuiIO& io = ImGui::GetIO();
-  // Mouse: the right button released where it was pressed (a right-drag pans the view).
-  const bool right_click = view.hovered() && ImGui::IsMouseReleased(ImGuiMouseButton_Right) &&
-                           io.MouseDragMaxDistanceSqr[ImGuiMouseButton_Right] <= kPanPixels * kPanPixels;
-  // Touch: a finger held still, once per press, never during a pinch, and only with the Select
-  // tool: with Disk, Wall or Polygon a press draws (a slow start of a drawing is no long press).
   if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) long_pressed_ = false, press_frames_ = 0;
   else ++press_frames_;
   const bool long_press = input::touch() && tool_ == Tool::Select && !long_pressed_ && view.hovered() && !input::pinch().active &&
                           ImGui::IsMouseDown(ImGuiMouseButton_Left) &&
                           io.MouseDownDuration[ImGuiMouseButton_Left] >= kLongPressSeconds && press_frames_ >= kLongPressFrames &&
                           input::finger_travel() <= (drag_ != Drag::None ? kStillGrabbing : kStillPixels);
+  if (long_press) long_pressed_ = true;
+  return long_press;
+}
+
+bool SceneEditor::context_menu(WorkspaceView& view, Scene& scene, LabContext& ctx, const Options& options) {
+  const bool right_click = menu_right_click(view);
+  const bool long_press = menu_long_press(view);
   if (right_click || long_press) {
     if (long_press) {
-      long_pressed_ = true;
       // The press may have begun a drag (of the start, an obstacle); a long press means the menu instead.
       if (drag_ != Drag::None) {
         if (before_drag_) scene = *before_drag_;
