@@ -92,6 +92,17 @@ inline constexpr ParamSpec kLabCheckerStepD = kCheckerStepD.in_lab(0.001, kInf, 
 inline constexpr ParamSpec kSeed{"seed", "seed", true, 0, 9007199254740991.0, 1, 1, "",
                                  "the random generator's seed (same seed, same result everywhere)"};
 
+// --- tree planners (core/planning/rrt.hpp, rrt_connect.hpp; cspacelab plan --planner rrt) ---
+
+/// B: the chance that RRT extends toward q_final instead of a uniform sample.
+inline constexpr ParamSpec kGoalBias{"goal_bias", "goal-bias", false, 0, 1, 0.05, 0.01, "",
+                                     "the chance of extending toward the goal instead of a sample (RRT)"};
+/// D: how far one extension goes, in the space's metric; 0 picks a fifth of the space's extent
+/// (tree_step(), OMPL's default for its RRTs, so that both grow alike on the same scene).
+inline constexpr ParamSpec kTreeStep{"tree_step", "step", false, 0, kInf, 0, 0.01, "",
+                                     "the longest extension of a tree, in the space's metric (0: a fifth of "
+                                     "the space's extent)"};
+
 // --- experiments (core/teaching/experiment.hpp, the PRM analysis lesson, cspacelab experiment) ---
 
 /// T. One range for the lab and the CLI: the CLI's (a contract); the lab's earlier 1..1000 was
@@ -158,6 +169,6 @@ inline constexpr const ParamSpec* kAllParams[] = {
     &kLabExperimentTrials, &kExperimentSamples,  &kLabExperimentSamples, &kReferenceSamples,
     &kVisibilityTrials,  &kLabVisibilityTrials,  &kMcSeed,              &kTracedGridN,  &kMinGridMax,
     &kFieldZeta,         &kFieldSwitch,          &kFieldEta,            &kFieldRho0,    &kDescentStep,
-    &kDescentEscapes};
+    &kDescentEscapes,    &kGoalBias,             &kTreeStep};
 
 }  // namespace csl

@@ -1,0 +1,81 @@
+#include "core/planning/planner_choice.hpp"
+
+#include <stdexcept>
+
+#include "core/base/params.hpp"
+#include "core/base/text.hpp"
+
+namespace csl {
+namespace {
+
+PrmParams prm_params(const PlannerChoice& c) {
+  PrmParams p;
+  p.samples = c.samples;
+  p.neighbors = c.kind == PlannerChoice::Kind::PrmStar ? NeighborRule::parse("prm*") : c.neighbors;
+  p.checker = c.checker;
+  p.seed = c.seed;
+  p.connector = c.connector;
+  return p;
+}
+
+PlannerFactory make_prm(const PlannerChoice& c) { return prm_factory(prm_params(c)); }
+
+// The table: a planner is a row here (and its Kind).
+struct Row {
+  PlannerKindInfo info;
+  PlannerFactory (*make)(const PlannerChoice&);
+};
+const std::vector<Row>& rows() {
+  static const std::vector<Row> kRows = {
+      {{PlannerChoice::Kind::Prm, "prm", "the probabilistic roadmap (--k, --radius or --prm-star close vertices)", false},
+       make_prm},
+      {{PlannerChoice::Kind::PrmStar, "prm-star", "PRM with PRM*'s k(n) = ceil(e (1 + 1/d) ln n) nearest", false},
+       make_prm},
+  };
+  return kRows;
+}
+
+const Row& row_of(PlannerChoice::Kind kind) {
+  for (const Row& r : rows())
+    if (r.info.kind == kind) return r;
+  throw std::logic_error("planner kind without a row in planner_choice.cpp");
+}
+
+}  // namespace
+
+const std::vector<PlannerKindInfo>& planner_kinds() {
+  static const std::vector<PlannerKindInfo> kInfos = [] {
+    std::vector<PlannerKindInfo> out;
+    for (const Row& r : rows()) out.push_back(r.info);
+    return out;
+  }();
+  return kInfos;
+}
+
+const PlannerKindInfo& planner_kind_info(PlannerChoice::Kind kind) { return row_of(kind).info; }
+
+std::string planner_names(const char* separator) {
+  std::string out;
+  for (const Row& r : rows()) out += (out.empty() ? "" : separator) + std::string(r.info.name);
+  return out;
+}
+
+PlannerChoice::Kind parse_planner_kind(const std::string& name) {
+  for (const Row& r : rows())
+    if (name == r.info.name) return r.info.kind;
+  throw std::invalid_argument("unknown planner '" + printable(name, 40) + "' (" + planner_names(", ") + ")");
+}
+
+void validate(const PlannerChoice& c) {
+  const PlannerKindInfo& info = planner_kind_info(c.kind);
+  if (!in_range(kPrmSamples, c.samples)) throw std::invalid_argument(param_error(kPrmSamples));
+  if (info.tree && c.connector)
+    throw std::invalid_argument(std::string(info.name) + " joins its trees by straight lines: no local connector");
+}
+
+PlannerFactory make_planner_factory(const PlannerChoice& choice) {
+  validate(choice);
+  return row_of(choice.kind).make(choice);
+}
+
+}  // namespace csl
