@@ -1,8 +1,9 @@
 #pragma once
 // A steppable sampling-based planner, as the app, the CLI and experiments see one (OMPL's
 // base::Planner plays this part there; ours steps instead of solving in one call, so that a
-// lesson can draw every step and a test can assert it). PRM (core/planning/prm.hpp) implements it; a
-// tree planner (RRT) would store its tree as a Roadmap whose edges join a child to its parent.
+// lesson can draw every step and a test can assert it). PRM (core/planning/prm.hpp), RRT and
+// RRT-Connect (core/planning/rrt.hpp, rrt_connect.hpp) implement it; the tree planners store
+// their trees as a Roadmap whose edges join a child to its parent.
 //
 // The contract every planner keeps:
 // - step() does one unit of work and returns what it did; the event stays valid until the next
@@ -24,8 +25,12 @@
 
 namespace csl {
 
-/// What one step did. The kinds are PRM's; other sampling-based planners reuse them (a tree's
-/// new vertex is a SampleAccepted with its `vertex`, its new edge an EdgeAdded).
+/// What one step did. The kinds are PRM's; the tree planners (core/planning/tree_planner.hpp)
+/// reuse them: a tree's new vertex comes with its edge to its parent, one SampleAccepted with
+/// `vertex` the new one and `other` its parent (`sample` -1 for RRT-Connect's connect steps);
+/// an edge between vertices already there (the trees' join) is an EdgeAdded; an extension
+/// whose end q is in collision is a SampleRejected, one whose edge is, an EdgeRejected with
+/// `other` -1 (q: the end; `vertex`: the tree vertex it left from).
 struct PlannerEvent {
   enum class Kind {
     AddEndpoint,          ///< vertex (0 = q_init, 1 = q_final) added

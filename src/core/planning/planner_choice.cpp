@@ -4,6 +4,8 @@
 
 #include "core/base/params.hpp"
 #include "core/base/text.hpp"
+#include "core/planning/rrt.hpp"
+#include "core/planning/rrt_connect.hpp"
 
 namespace csl {
 namespace {
@@ -19,6 +21,8 @@ PrmParams prm_params(const PlannerChoice& c) {
 }
 
 PlannerFactory make_prm(const PlannerChoice& c) { return prm_factory(prm_params(c)); }
+PlannerFactory make_rrt(const PlannerChoice& c) { return rrt_factory(tree_params(c)); }
+PlannerFactory make_rrt_connect(const PlannerChoice& c) { return rrt_connect_factory(tree_params(c)); }
 
 // The table: a planner is a row here (and its Kind).
 struct Row {
@@ -31,6 +35,11 @@ const std::vector<Row>& rows() {
        make_prm},
       {{PlannerChoice::Kind::PrmStar, "prm-star", "PRM with PRM*'s k(n) = ceil(e (1 + 1/d) ln n) nearest", false},
        make_prm},
+      {{PlannerChoice::Kind::Rrt, "rrt", "a rapidly-exploring random tree from the start (--goal-bias, --step)", true},
+       make_rrt},
+      {{PlannerChoice::Kind::RrtConnect, "rrt-connect", "two trees, from start and goal, grown toward each other (--step)",
+        true},
+       make_rrt_connect},
   };
   return kRows;
 }
@@ -71,6 +80,18 @@ void validate(const PlannerChoice& c) {
   if (!in_range(kPrmSamples, c.samples)) throw std::invalid_argument(param_error(kPrmSamples));
   if (info.tree && c.connector)
     throw std::invalid_argument(std::string(info.name) + " joins its trees by straight lines: no local connector");
+  if (!in_range(kGoalBias, c.goal_bias)) throw std::invalid_argument(param_error(kGoalBias));
+  if (!in_range(kTreeStep, c.step)) throw std::invalid_argument(param_error(kTreeStep));
+}
+
+TreeParams tree_params(const PlannerChoice& c) {
+  TreeParams p;
+  p.samples = c.samples;
+  p.goal_bias = c.goal_bias;
+  p.step = c.step;
+  p.checker = c.checker;
+  p.seed = c.seed;
+  return p;
 }
 
 PlannerFactory make_planner_factory(const PlannerChoice& choice) {

@@ -13,11 +13,12 @@
 #include "core/planning/local_connector.hpp"
 #include "core/planning/planner.hpp"
 #include "core/planning/prm.hpp"
+#include "core/planning/tree_planner.hpp"
 
 namespace csl {
 
 struct PlannerChoice {
-  enum class Kind { Prm, PrmStar };
+  enum class Kind { Prm, PrmStar, Rrt, RrtConnect };
   Kind kind = Kind::Prm;
   /// The sample budget: PRM's n; a tree planner's samples drawn (goal draws included).
   int samples = 200;
@@ -27,6 +28,9 @@ struct PlannerChoice {
   std::uint64_t seed = 1;
   /// PRM's local connector (null: the straight line).
   std::shared_ptr<const LocalConnector> connector;
+  /// The tree planners': B (RRT's goal bias; RRT-Connect has none) and D (0: tree_step()'s default).
+  double goal_bias = kGoalBias.def;
+  double step = kTreeStep.def;
 };
 
 /// One planner the choice offers.
@@ -46,9 +50,11 @@ PlannerChoice::Kind parse_planner_kind(const std::string& name);
 
 /// std::invalid_argument with one line naming the first bad option (params.hpp's error text:
 /// "samples: an integer in [0, 1000000]"), or an option the planner does not take (a local
-/// connector for a tree planner).
+/// connector for a tree planner), a goal bias or step outside kGoalBias's or kTreeStep's range.
 void validate(const PlannerChoice& choice);
 /// Makes planners of `choice` (validated first: throws as validate() does).
 PlannerFactory make_planner_factory(const PlannerChoice& choice);
+/// The tree planners' parameters of `choice`.
+TreeParams tree_params(const PlannerChoice& choice);
 
 }  // namespace csl

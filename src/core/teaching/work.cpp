@@ -51,6 +51,18 @@ WorkEstimate expected_prm_work(const CollisionWorld& world, const PrmParams& par
   return w;
 }
 
+WorkEstimate expected_tree_work(const CollisionWorld& world, const TreeParams& params, double edges_per_sample) {
+  const double cost = world.evaluation_cost();
+  const double n = static_cast<double>(params.samples) + 2.0;
+  WorkEstimate w;
+  w.pairs = n * edges_per_sample;
+  w.per_edge = (1.0 + expected_edge_evaluations(params.checker, tree_step(world.space(), params.step))) * cost;
+  w.sampling = n * cost;
+  w.connecting = w.pairs * w.per_edge;
+  w.neighbours = 20.0 * n;  // a nearest-vertex search per sample: a few dozen distances
+  return w;
+}
+
 ExperimentWork expected_experiment_work(const CollisionWorld& world, const ExperimentParams& params) {
   PrmParams run;
   run.neighbors = params.neighbors;

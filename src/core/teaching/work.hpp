@@ -10,6 +10,7 @@
 // (the ends' clearances settle most roadmap edges without a configuration: measured on the
 // bundled scenes at n = 2000, bisection evaluates 0.1 to 1.5 configurations per edge).
 #include "core/planning/prm.hpp"
+#include "core/planning/tree_planner.hpp"
 #include "core/teaching/experiment.hpp"
 
 namespace csl {
@@ -56,6 +57,11 @@ struct WorkEstimate {
 };
 /// What PRM with `params` on `world` is expected to cost.
 WorkEstimate expected_prm_work(const CollisionWorld& world, const PrmParams& params);
+
+/// A tree planner's (core/planning/tree_planner.hpp) expected work: per sample, its new end
+/// and `edges_per_sample` edge checks of length D (RRT: 1; RRT-Connect's connect adds more;
+/// the CLI counts 2), and a nearest-vertex search.
+WorkEstimate expected_tree_work(const CollisionWorld& world, const TreeParams& params, double edges_per_sample);
 
 /// An experiment's expected work (experiment.hpp), in units.
 struct ExperimentWork {
