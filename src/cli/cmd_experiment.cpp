@@ -59,7 +59,10 @@ int run_experiment(Args& args, std::ostream& os) {
   const auto list = args.take("samples-list"), trials = args.take("trials"), reference = args.take("reference-samples");
   const auto max_total_text = args.take("max-total-pairs");
   const auto max_total_work_text = args.take("max-total-work");
-  const PlannerOptions options = take_planner_options(args);
+  PlannerOptions options = take_planner_options(args);
+  const PlannerChoice choice = take_planner_choice(args, options);
+  const PlannerKindInfo& info = planner_kind_info(choice.kind);
+  if (choice.kind == PlannerChoice::Kind::PrmStar) options.neighbors = NeighborRule::parse("prm*");
   const double max_total_work =
       max_total_work_text ? parse_max_work(*max_total_work_text, "--max-total-work") : 10.0 * options.max_work;
   double max_total = kDefaultRunsInTotal * options.max_pairs;
@@ -85,25 +88,58 @@ int run_experiment(Args& args, std::ostream& os) {
   params.seed = options.seed;
   params.neighbors = options.neighbors;
   params.checker = options.checker;
+  if (info.tree) {
+    // The trials' planner; the reference run stays PRM's (it measures the scene).
+    params.planner = [choice](int samples, std::uint64_t seed) {
+      PlannerChoice trial = choice;
+      trial.samples = samples;
+      trial.seed = seed;
+      return make_planner_factory(trial);
+    };
+  }
   std::optional<Experiment> ex;
   try {
     ex.emplace(world, scene.start, scene.goal, params);
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
   }
-  // Every run within the budget: the largest n, and the reference run (by default 4 x that n).
-  require_pairs_budget(world.space(), options, *std::max_element(params.sample_counts.begin(), params.sample_counts.end()));
-  require_pairs_budget(world.space(), options, ex->params().reference_samples,
-                       "the reference run (--reference-samples M, by default 4 x the largest n, within [2000, 1000000]): ");
-  require_total_budget(world.space(), options, params, *list, ex->params().reference_samples, max_total);
+  const int largest_n = *std::max_element(params.sample_counts.begin(), params.sample_counts.end());
   PrmParams largest;
   largest.neighbors = params.neighbors;
   largest.checker = params.checker;
-  largest.samples = *std::max_element(params.sample_counts.begin(), params.sample_counts.end());
-  require_work_budget(world, options, largest);
-  largest.samples = ex->params().reference_samples;
-  require_work_budget(world, options, largest, "the reference run: ");
-  require_total_work(world, ex->params(), max_total_work);
+  if (!info.tree) {
+    // Every run within the budget: the largest n, and the reference run (by default 4 x that n).
+    require_pairs_budget(world.space(), options, largest_n);
+    require_pairs_budget(world.space(), options, ex->params().reference_samples,
+                         "the reference run (--reference-samples M, by default 4 x the largest n, within [2000, 1000000]): ");
+    require_total_budget(world.space(), options, params, *list, ex->params().reference_samples, max_total);
+    largest.samples = largest_n;
+    require_work_budget(world, options, largest);
+    largest.samples = ex->params().reference_samples;
+    require_work_budget(world, options, largest, "the reference run: ");
+    require_total_work(world, ex->params(), max_total_work);
+  } else {
+    // The trials' tree runs, and the reference run, which is PRM's all the same.
+    PlannerChoice run = choice;
+    run.samples = largest_n;
+    require_tree_work_budget(world, options, run);
+    require_pairs_budget(world.space(), options, ex->params().reference_samples,
+                         "the reference run (--reference-samples M, by default 4 x the largest n, within [2000, 1000000]): ");
+    largest.samples = ex->params().reference_samples;
+    require_work_budget(world, options, largest, "the reference run: ");
+    // All runs' work: the reference run's (an experiment with no rows) and T tree runs per n.
+    ExperimentParams reference_only = ex->params();
+    reference_only.sample_counts.clear();
+    double total = expected_experiment_work(world, reference_only).total;
+    for (int n : params.sample_counts) {
+      run.samples = n;
+      total += params.trials * expected_tree_work(world, tree_params(run), 2.0).total();
+    }
+    if (total > max_total_work)
+      throw UsageError("the experiment's runs mean about " + work_text(total) + " of work in all, more than the " +
+                       work_text(max_total_work) + " an experiment may take (--max-total-work, default 10 x --max-work); " +
+                       "take fewer trials or fewer samples");
+  }
   ex->run();
 
   const ExperimentReference& ref = ex->reference();
@@ -127,7 +163,10 @@ int run_experiment(Args& args, std::ostream& os) {
                     {"free_fraction", ref.free_fraction},
                     {"free_volume", ref.free_volume},
                     {"dimension", ref.dimension}}},
-                  {"neighbors", params.neighbors.name()},
+                  {"planner", info.name},
+                  {"neighbors", info.tree ? json(nullptr) : json(params.neighbors.name())},
+                  {"goal_bias", choice.kind == PlannerChoice::Kind::Rrt ? json(choice.goal_bias) : json(nullptr)},
+                  {"step", info.tree ? json(tree_step(world.space(), choice.step)) : json(nullptr)},
                   {"checker", params.checker.name()},
                   {"seed", params.seed},
                   {"rows", rows}});
@@ -137,14 +176,16 @@ int run_experiment(Args& args, std::ostream& os) {
 }  // namespace
 
 const Command kExperimentCommand{
-    "experiment", "PRM's failure rate over many runs, for several n, against the bound",
+    "experiment", "a planner's failure rate over many runs, for several n, against PRM's bound",
     "Usage: cspacelab experiment SCENE.json --samples-list N1,N2,... [--trials T]\n"
+    "                            [--planner prm|prm-star|rrt|rrt-connect] [--goal-bias B] [--step D]\n"
     "                            [--k K | --radius R | --prm-star] [--checker C] [--seed S]\n"
     "                            [--reference-samples M] [--max-pairs P] [--max-total-pairs P]\n"
     "                            [--max-work W] [--max-total-work W]\n\n" +
     option_help(kExperimentSamples, "N1,...", false) + option_help(kExperimentTrials, "T") +
-    option_help(kReferenceSamples, "M") + option_help(kNeighborK, "K") + option_help(kSeed, "S") +
-    "\nRuns PRM T times (each with its own seed derived from S) for each n, and counts\n"
+    option_help(kReferenceSamples, "M") + planner_choice_help() + option_help(kNeighborK, "K") + option_help(kSeed, "S") +
+    "\nRuns the planner (PRM by default) T times (each with its own seed derived from S) for each n,\n"
+    "and counts "
     "failures: start and goal not connected. Whether a path exists at all, and its length L and\n"
     "clearance r for the bound of section 2.1, come from a reference run with M samples (default,\n"
     "or M = 0: max(2000, 4 x the largest n), at most 1000000): its roadmap's widest path (the\n"
@@ -156,7 +197,11 @@ const Command kExperimentCommand{
     "      \"clearance\", \"free_fraction\", \"free_volume\", \"dimension\"},\n"
     "      \"rows\": [{\"samples\": n, \"trials\": T, \"failures\", \"failure_rate\", \"ci_low\",\n"
     "      \"ci_high\" (95% Wilson interval), \"bound\" (null without a reference path),\n"
-    "      \"bound_vacuous\"}], \"neighbors\", \"checker\", \"seed\"}\n"
+    "      \"bound_vacuous\"}], \"planner\", \"neighbors\" (null for a tree planner), \"checker\",\n"
+    "      \"seed\", \"goal_bias\" (rrt's B, else null), \"step\" (a tree planner's D, else null)}\n"
+    "With --planner rrt or rrt-connect the T runs for each n are that planner's with a budget of n\n"
+    "samples (see `cspacelab help plan`); the reference run is PRM's all the same (it measures the\n"
+    "scene), and the bound stays PRM's, for comparison.\n"
     "If the reference run finds no path, failures are still counted but mean little.\n"
     "If any run, the reference run included, is expected to check more than P candidate pairs\n"
     "(--max-pairs, default 2e7), nothing runs: an error (exit status 2) says so, and for --radius\n"

@@ -1,5 +1,6 @@
 // cspacelab plan: the probabilistic roadmap method on a scene, from start to goal.
 #include <chrono>
+#include <cstring>
 
 #include "cli/commands.hpp"
 #include "core/planning/planner_json.hpp"
@@ -17,10 +18,15 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
 int run_plan(Args& args, std::ostream& os) {
   const auto samples = args.take("samples");
   const PlannerOptions options = take_planner_options(args);
+  PlannerChoice choice = take_planner_choice(args, options);
   const bool roadmap_out = args.take_flag("roadmap");
-  const std::string connector = args.take("connector").value_or("straight");
+  const auto connector_flag = args.take("connector");
+  const std::string connector = connector_flag.value_or("straight");
   if (connector != "straight" && connector != "potential")
     throw UsageError("--connector: '" + connector + "' is not straight or potential");
+  const PlannerKindInfo& info = planner_kind_info(choice.kind);
+  if (info.tree && connector_flag)
+    throw UsageError(std::string("--connector is PRM's: ") + info.name + " joins its trees by straight lines");
   const std::string path = args.take_positional("SCENE.json");
   args.finish();
 
@@ -28,32 +34,55 @@ int run_plan(Args& args, std::ostream& os) {
   const CollisionWorld world(scene);
   require_free(world, scene.start, "the start");
   require_free(world, scene.goal, "the goal");
-  PrmParams params;
-  params.samples = static_cast<int>(samples ? parse_param(*samples, kPrmSamples) : kPrmSamples.def);
-  require_pairs_budget(world.space(), options, params.samples);
-  params.neighbors = options.neighbors;
-  params.checker = options.checker;
-  params.seed = options.seed;
-  if (connector == "potential") params.connector = std::make_shared<const PotentialConnector>();
-  require_work_budget(world, options, params);
-  Prm prm(world, scene.start, scene.goal, params);
+  choice.samples = static_cast<int>(samples ? parse_param(*samples, kPrmSamples) : kPrmSamples.def);
+  if (connector == "potential") choice.connector = std::make_shared<const PotentialConnector>();
+  if (info.tree) {
+    require_tree_work_budget(world, options, choice);
+  } else {
+    PrmParams params;
+    params.samples = choice.samples;
+    params.neighbors = choice.kind == PlannerChoice::Kind::PrmStar ? NeighborRule::parse("prm*") : options.neighbors;
+    params.checker = options.checker;
+    params.connector = choice.connector;
+    PlannerOptions budget = options;
+    budget.neighbors = params.neighbors;
+    require_pairs_budget(world.space(), budget, params.samples);
+    require_work_budget(world, budget, params);
+  }
+  std::unique_ptr<Planner> planner;
+  try {
+    planner = make_planner_factory(choice)(world, scene.start, scene.goal);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
 
+  // Build: to the query (PRM's graph search, a tree's path check); then the query.
   const auto t0 = std::chrono::steady_clock::now();
-  while (!prm.done() && prm.phase() != PrmPhase::Query) prm.step();
+  while (!planner->done() && std::strcmp(planner->phase_label(), "query") != 0) planner->finish_phase();
   const double build = seconds_since(t0);
   const auto t1 = std::chrono::steady_clock::now();
-  prm.run();
+  planner->run();
   const double query = seconds_since(t1);
 
   // The planner's state as the lab reports it (core/planning/planner_json.hpp), and how this run went.
-  json out = planner_state_json(prm, roadmap_out);
+  json out = planner_state_json(*planner, roadmap_out);
   out["build_seconds"] = build;
   out["query_seconds"] = query;
-  out["samples"] = params.samples;
-  out["neighbors"] = params.neighbors.name();
-  out["checker"] = params.checker.name();
+  out["planner"] = info.name;
+  out["samples"] = choice.samples;
+  out["checker"] = choice.checker.name();
   out["connector"] = connector;
-  out["seed"] = params.seed;
+  out["seed"] = choice.seed;
+  if (const auto* prm = dynamic_cast<const Prm*>(planner.get())) {
+    out["neighbors"] = prm->params().neighbors.name();
+    out["goal_bias"] = nullptr;
+    out["step"] = nullptr;
+  } else {
+    const auto& tree = dynamic_cast<const TreePlanner&>(*planner);
+    out["neighbors"] = nullptr;
+    out["goal_bias"] = choice.kind == PlannerChoice::Kind::Rrt ? json(choice.goal_bias) : json(nullptr);
+    out["step"] = tree.step_size();
+  }
   print_json(os, out);
   return 0;
 }
@@ -62,10 +91,11 @@ int run_plan(Args& args, std::ostream& os) {
 
 const Command kPlanCommand{
     "plan", "plan from start to goal with the probabilistic roadmap method",
-    "Usage: cspacelab plan SCENE.json [--samples N] [--k K | --radius R | --prm-star]\n"
+    "Usage: cspacelab plan SCENE.json [--planner prm|prm-star|rrt|rrt-connect] [--samples N]\n"
+    "                      [--k K | --radius R | --prm-star] [--goal-bias B] [--step D]\n"
     "                      [--checker bisection|grid:N|step:D] [--seed S] [--roadmap]\n"
     "                      [--connector straight|potential] [--max-pairs P] [--max-work W]\n\n" +
-    option_help(kPrmSamples, "N") + option_help(kNeighborK, "K") + option_help(kSeed, "S") +
+    planner_choice_help() + option_help(kPrmSamples, "N") + option_help(kNeighborK, "K") + option_help(kSeed, "S") +
     "\nRuns PRM as the homework states it: add start and goal to V; draw N samples\n"
     "uniformly in the configuration space and keep the free ones; for each vertex, check the\n"
     "straight line to each close vertex (the K nearest; all within distance R; or\n"
@@ -78,18 +108,31 @@ const Command kPlanCommand{
     "`cspacelab help potential`; here a gentle field, eta = 1e-6 and rho0 = 0.05, steps of\n"
     "0.01, at most 200, tolerance 0.02, no escapes): an edge exists if the descent gets there;\n"
     "its pieces are proven free by the exact check (--checker then plays no part). The path\n"
-    "then runs through the descents' waypoints.\n\n"
+    "then runs through the descents' waypoints.\n"
+    "--planner prm-star is PRM with --prm-star (which keeps working with the default planner).\n"
+    "--planner rrt grows a tree from the start: each step draws the goal with probability B\n"
+    "(--goal-bias) or else a uniform sample, and extends the tree's nearest vertex toward it by at\n"
+    "most D (--step, in the space's metric, angles the short way round); the new end and the\n"
+    "edge are checked with --checker. Only a goal draw within D of the tree reaches the goal, so\n"
+    "B = 0 finds no path. --planner rrt-connect grows one tree from the start and one from the\n"
+    "goal: one extends toward a sample, the other then extends toward that new vertex by steps of\n"
+    "D until it reaches it (a path) or is blocked; then they swap. N is the tree planners' budget\n"
+    "of samples drawn. Their path is re-checked exactly, as PRM's. --k, --radius, --prm-star and\n"
+    "--connector are PRM's; --goal-bias is RRT's alone, --step the tree planners'. Each is an\n"
+    "error (exit status 2) with a planner that does not take it.\n\n"
     "Output: {\"solved\": bool, \"path\": [Q, ...] (with any connector's waypoints),\n"
     "  \"path_length\": x|null, \"nodes\": int, \"edges\": int, \"components\": int,\n"
     "  \"edge_checks\": int, \"evaluations\": int, \"build_seconds\": x, \"query_seconds\": x,\n"
     "  (evaluations: configurations the collision checker tested; with grid:N or step:D a roadmap\n"
     "  edge skips those its endpoints' clearances prove free, which changes no verdict),\n"
-    "  \"samples\", \"neighbors\", \"checker\", \"connector\", \"seed\",\n"
+    "  \"planner\", \"samples\", \"neighbors\" (null for a tree planner), \"checker\", \"connector\",\n"
+    "  \"seed\", \"goal_bias\" (rrt's B, else null), \"step\" (a tree planner's D as used, else null),\n"
     "  \"steps\": the planner's step count, \"roadmap_hash\": 16 hex digits (FNV-1a of V and E),\n"
     "  \"phase\": \"done\", \"done\": true, \"samples_drawn\": int (accepted and rejected),\n"
     "  \"last_event\": \"path_found\" or \"no_path\"} (the fields the lab's state() reports)\n"
     "With --roadmap also \"vertices\": [Q, ...] and \"edge_list\": [[a, b], ...] (indices into\n"
-    "vertices; 0 is the start, 1 the goal).\n"
+    "vertices; 0 is the start, 1 the goal). A tree planner's edges join each vertex to its parent\n"
+    "(and the one edge that joins the start's tree to the goal or its tree).\n"
     "A start or goal in collision is an error (exit status 2) naming the obstacle.\n"
     "So is a run expected to check more than P candidate pairs (default 2e7): a radius makes them\n"
     "grow with N^2 ((N+2)(N+1)/2 times the chance that two vertices lie within R), k rules with\n"

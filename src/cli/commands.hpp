@@ -7,6 +7,7 @@
 
 #include "cli/args.hpp"
 #include "core/checking/collision.hpp"
+#include "core/planning/planner_choice.hpp"
 #include "core/planning/prm.hpp"
 #include "core/scene/scene.hpp"
 #include "core/teaching/work.hpp"
@@ -57,6 +58,7 @@ inline constexpr double kDefaultMaxPairs = 2e7;
 /// seed 1, kDefaultMaxPairs.
 struct PlannerOptions {
   NeighborRule neighbors;
+  std::string neighbor_flag;  ///< the neighbour option given ("--k", "--radius", "--prm-star"), "" for none
   EdgeCheckerSpec checker;
   std::uint64_t seed = 1;
   double max_pairs = kDefaultMaxPairs;  ///< --max-pairs
@@ -81,6 +83,16 @@ void require_pairs_budget(const Space& space, const PlannerOptions& options, int
 /// alone passed and the run took hours). `run` as for require_pairs_budget.
 void require_work_budget(const CollisionWorld& world, const PlannerOptions& options, const PrmParams& params,
                          const std::string& run = "");
+/// --planner NAME (default prm), --goal-bias B and --step D, checked against each other and
+/// against the neighbour option in `options` (a tree planner takes none; prm-star takes no --k or
+/// --radius; only rrt takes --goal-bias, only the tree planners --step): UsageError naming the
+/// flag. The choice carries `options`' neighbour rule, checker and seed; the caller sets samples.
+PlannerChoice take_planner_choice(Args& args, const PlannerOptions& options);
+/// The --help lines of --planner, --goal-bias and --step.
+std::string planner_choice_help();
+/// require_work_budget() for a tree planner (expected_tree_work()).
+void require_tree_work_budget(const CollisionWorld& world, const PlannerOptions& options, const PlannerChoice& choice,
+                              const std::string& run = "");
 /// --max-work's value: a number >= 1.
 double parse_max_work(const std::string& text, const std::string& what);
 /// UsageError if q is not free in the scene ("where it matters": planning from it).

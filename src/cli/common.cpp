@@ -1,4 +1,5 @@
 // Helpers shared by the CLI's commands: files, scenes, configurations, output.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -70,6 +71,7 @@ PlannerOptions take_planner_options(Args& args) {
     if (k) o.neighbors = NeighborRule::parse("k:" + *k);
     if (radius) o.neighbors = NeighborRule::parse("radius:" + *radius);
     if (star) o.neighbors = NeighborRule::parse("prm*");
+    o.neighbor_flag = k ? "--k" : radius ? "--radius" : star ? "--prm-star" : "";
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string(k ? "--k: " : "--radius: ") + e.what());
   }
@@ -130,6 +132,58 @@ void require_pairs_budget(const Space& space, const PlannerOptions& options, int
                   "(--max-pairs); take fewer samples or fewer neighbours (--k)",
                   named.c_str(), samples, pairs.c_str(), limit.c_str());
   }
+  throw UsageError(run + text);
+}
+
+PlannerChoice take_planner_choice(Args& args, const PlannerOptions& options) {
+  const auto name = args.take("planner"), bias = args.take("goal-bias"), step = args.take("step");
+  PlannerChoice c;
+  if (name) {
+    try {
+      c.kind = parse_planner_kind(*name);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--planner: ") + e.what());
+    }
+  }
+  const PlannerKindInfo& info = planner_kind_info(c.kind);
+  if (info.tree && !options.neighbor_flag.empty())
+    throw UsageError(options.neighbor_flag + " is PRM's: " + info.name + " grows trees (choose --planner prm or prm-star)");
+  if (c.kind == PlannerChoice::Kind::PrmStar && (options.neighbor_flag == "--k" || options.neighbor_flag == "--radius"))
+    throw UsageError(options.neighbor_flag + " does not go with --planner prm-star, which takes PRM*'s k(n)");
+  if (bias && c.kind != PlannerChoice::Kind::Rrt)
+    throw UsageError(std::string("--goal-bias is RRT's (--planner rrt); ") + info.name + " has no goal bias");
+  if (step && !info.tree) throw UsageError(std::string("--step is the tree planners' (rrt, rrt-connect), not ") + info.name + "'s");
+  c.neighbors = options.neighbors;
+  c.checker = options.checker;
+  c.seed = options.seed;
+  if (bias) c.goal_bias = parse_param(*bias, kGoalBias);
+  if (step) c.step = parse_param(*step, kTreeStep);
+  return c;
+}
+
+std::string planner_choice_help() {
+  std::string out = "  --planner NAME      the planner: " + planner_names(", ") + "; default prm\n";
+  for (const PlannerKindInfo& info : planner_kinds()) {
+    std::string name = info.name;
+    name.resize(std::max<std::size_t>(name.size(), 14), ' ');
+    out += "      " + name + info.summary + "\n";
+  }
+  return out + option_help(kGoalBias, "B") + option_help(kTreeStep, "D");
+}
+
+void require_tree_work_budget(const CollisionWorld& world, const PlannerOptions& options, const PlannerChoice& choice,
+                              const std::string& run) {
+  const TreeParams params = tree_params(choice);
+  const WorkEstimate w = expected_tree_work(world, params, 2.0);
+  if (w.total() <= options.max_work) return;
+  char text[600];
+  std::snprintf(text, sizeof text,
+                "%s with %d samples, step %g and %s means about %s of work (one configuration of this scene costs "
+                "%.0f), more than the %s a run may take (--max-work); take fewer samples, a longer step or a "
+                "coarser checker",
+                planner_kind_info(choice.kind).name, params.samples, tree_step(world.space(), params.step),
+                params.checker.name().c_str(), work_text(w.total()).c_str(), world.evaluation_cost(),
+                work_text(options.max_work).c_str());
   throw UsageError(run + text);
 }
 
