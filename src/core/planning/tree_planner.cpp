@@ -163,8 +163,15 @@ bool TreePlanner::check(int near, const Config& q, double length, double& eta_q,
     double eta_p = std::numeric_limits<double>::quiet_NaN();
     if (checker_.has_interior(length)) {
       // As PRM: a clearance is computed when an edge with configurations between its ends needs it.
-      if (std::isnan(roadmap_.clearance[un])) roadmap_.clearance[un] = world_->clearance(p);
-      if (std::isnan(eta_q)) eta_q = world_->clearance(q);
+      // Each one a configuration evaluated (counted: the bench compares evaluations with OMPL's).
+      if (std::isnan(roadmap_.clearance[un])) {
+        roadmap_.clearance[un] = world_->clearance(p);
+        ++evaluations_;
+      }
+      if (std::isnan(eta_q)) {
+        eta_q = world_->clearance(q);
+        ++evaluations_;
+      }
       eta_p = roadmap_.clearance[un];
     }
     checker_.check_grid_known_free(p, q, length, eta_p, eta_q);

@@ -68,7 +68,8 @@ class TreePlanner : public Planner {
   std::vector<Config> path_configurations() const override;
   double path_length() const override { return path_length_; }
   long edge_checks() const override { return edge_checks_; }
-  /// Configurations evaluated: each extension's new end, and the edge checks' (not the re-check's).
+  /// Configurations evaluated: each extension's new end, the edge checks' and the clearances they
+  /// needed (not the path's re-check).
   long evaluations() const override { return evaluations_; }
   int samples_drawn() const override { return samples_drawn_; }
 
