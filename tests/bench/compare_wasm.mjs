@@ -1,11 +1,14 @@
-// Runs the PRM benchmark natively and as wasm under node, and prints the wasm/native ratio
-// of our time per milestone for every row.
-//   node tests/bench/compare_wasm.mjs [build/native] [build/wasm]
+// Runs the PRM benchmark (or another: prm, rrt) natively and as wasm under node, and prints the
+// wasm/native ratio of our time per milestone (rrt: per solved query) for every row.
+//   node tests/bench/compare_wasm.mjs [build/native] [build/wasm] [prm|rrt]
 import { execFileSync } from 'node:child_process';
 import path from 'node:path';
 
 const native = process.argv[2] || 'build/native';
 const wasm = process.argv[3] || 'build/wasm';
+const bench = process.argv[4] || 'prm';
+if (!['prm', 'rrt'].includes(bench)) throw new Error(`no benchmark '${bench}' (prm or rrt)`);
+const unit = bench === 'rrt' ? 'us/query' : 'us/ms';
 const run = (cmd, args, env = {}) =>
   JSON.parse(execFileSync(cmd, args, { encoding: 'utf8', env: { ...process.env, ...env } }));
 
@@ -16,18 +19,19 @@ const run = (cmd, args, env = {}) =>
 const fastest = (runs) => runs[0].map((row, i) => runs.reduce((best, r) => (r[i].ours_us < best.ours_us ? r[i] : best), row));
 const nativeRuns = [], wasmRuns = [];
 for (let round = 0; round < 5; ++round) {
-  nativeRuns.push(run(path.join(native, 'tests/bench/cspacelab_bench_prm'), ['--json']));
-  wasmRuns.push(run(process.execPath, [path.join(wasm, 'tests/bench/cspacelab_bench_prm.js'), '--json'],
+  nativeRuns.push(run(path.join(native, `tests/bench/cspacelab_bench_${bench}`), ['--json']));
+  wasmRuns.push(run(process.execPath, [path.join(wasm, `tests/bench/cspacelab_bench_${bench}.js`), '--json'],
                     { NODE_OPTIONS: '--no-experimental-fetch' }));
 }
 const n = fastest(nativeRuns), w = fastest(wasmRuns);
-console.log('scene                       samples  native us/ms  wasm us/ms  wasm/native');
+console.log(`${'scene'.padEnd(40)} samples ${('native ' + unit).padStart(15)} ${('wasm ' + unit).padStart(13)}  wasm/native`);
 for (let i = 0; i < n.length; ++i) {
   const ratio = w[i].ours_us / n[i].ours_us;
-  console.log(`${n[i].scene.padEnd(27)} ${String(n[i].samples).padStart(7)} ${n[i].ours_us.toFixed(3).padStart(13)} ` +
-              `${w[i].ours_us.toFixed(3).padStart(11)} ${ratio.toFixed(2).padStart(11)}x`);
-  if (n[i].milestones !== w[i].milestones) {
-    console.log(`MISMATCH: ${n[i].milestones} milestones natively, ${w[i].milestones} in wasm`);
+  console.log(`${n[i].scene.padEnd(40)} ${String(n[i].samples).padStart(7)} ${n[i].ours_us.toFixed(3).padStart(15)} ` +
+              `${w[i].ours_us.toFixed(3).padStart(13)} ${ratio.toFixed(2).padStart(11)}x`);
+  if (n[i].milestones !== w[i].milestones || n[i].checks !== w[i].checks) {
+    console.log(`MISMATCH: ${n[i].milestones} milestones (solved), ${n[i].checks} checks natively; ` +
+                `${w[i].milestones}, ${w[i].checks} in wasm`);
     process.exitCode = 1;
   }
 }
