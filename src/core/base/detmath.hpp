@@ -374,4 +374,44 @@ inline double acos(double x) {
   return 2.0 * (df + w);
 }
 
+/// The natural logarithm within 1 ulp (fdlibm e_log.c, as musl ships it): log(+-0) = -Inf,
+/// log(x < 0) = NaN, log(+Inf) = +Inf, log(1) = +0. The Gaussian and bridge samplers take normal
+/// deviates by Marsaglia's polar method, whose log must give the same bits in both builds.
+inline double log(double x) {
+  constexpr double ln2_hi = 0x1.62e42fee00000p-1, ln2_lo = 0x1.a39ef35793c76p-33;
+  constexpr double Lg1 = 0x1.5555555555593p-1, Lg2 = 0x1.999999997fa04p-2, Lg3 = 0x1.2492494229359p-2,
+                   Lg4 = 0x1.c71c51d8e78afp-3, Lg5 = 0x1.7466496cb03dep-3, Lg6 = 0x1.39a09d078c69fp-3,
+                   Lg7 = 0x1.2f112df3e5244p-3;
+  std::uint64_t u = detail::bits_of(x);
+  auto hx = static_cast<std::uint32_t>(u >> 32);
+  int k = 0;
+  if (hx < 0x00100000u || (hx >> 31) != 0) {
+    if ((u << 1) == 0) return -1.0 / (x * x);  // log(+-0) = -Inf
+    if ((hx >> 31) != 0) return (x - x) / 0.0;  // log(negative) = NaN
+    k -= 54;  // subnormal: scale up
+    x *= 0x1p54;
+    u = detail::bits_of(x);
+    hx = static_cast<std::uint32_t>(u >> 32);
+  } else if (hx >= 0x7ff00000u) {
+    return x;  // +Inf or NaN
+  } else if (hx == 0x3ff00000u && (u << 32) == 0) {
+    return 0.0;
+  }
+  // x = 2^k (1 + f) with 1 + f in [sqrt(2)/2, sqrt(2)].
+  hx += 0x3ff00000u - 0x3fe6a09eu;
+  k += static_cast<int>(hx >> 20) - 0x3ff;
+  hx = (hx & 0x000fffffu) + 0x3fe6a09eu;
+  x = detail::from_bits((static_cast<std::uint64_t>(hx) << 32) | (u & 0xffffffffull));
+  const double f = x - 1.0;
+  const double hfsq = 0.5 * f * f;
+  const double s = f / (2.0 + f);
+  const double z = s * s;
+  const double w = z * z;
+  const double t1 = w * (Lg2 + w * (Lg4 + w * Lg6));
+  const double t2 = z * (Lg1 + w * (Lg3 + w * (Lg5 + w * Lg7)));
+  const double R = t2 + t1;
+  const double dk = k;
+  return s * (hfsq + R) + dk * ln2_lo - hfsq + f + dk * ln2_hi;
+}
+
 }  // namespace csl::det

@@ -25,7 +25,8 @@
 
 namespace csl {
 
-/// What one step did. The kinds are PRM's; the tree planners (core/planning/tree_planner.hpp)
+/// What one step did. The kinds are PRM's (and two of Lazy PRM's: EdgeChecked, PathCandidate);
+/// the tree planners (core/planning/tree_planner.hpp)
 /// reuse them: a tree's new vertex comes with its edge to its parent, one SampleAccepted with
 /// `vertex` the new one and `other` its parent (`sample` -1 for RRT-Connect's connect steps);
 /// an edge between vertices already there (the trees' join) is an EdgeAdded; an extension
@@ -45,6 +46,10 @@ struct PlannerEvent {
                           ///< (collision_t: on the failing straight piece of the edge)
     PathFound,            ///< q_init and q_final connected: path_length
     NoPath,               ///< not connected: the planner declares no path
+    // Lazy PRM's (core/planning/lazy_prm.hpp), whose edges go in unchecked (EdgeAdded with no
+    // evaluation) and are checked only when a shortest path uses them:
+    EdgeChecked,          ///< (vertex, other), an edge of the candidate path, proven free by the exact check
+    PathCandidate,        ///< the search found a path (path_length) with `candidates` edges still unchecked
   };
   Kind kind = Kind::AddEndpoint;
   long step = 0;      ///< 1-based number of this step

@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/planning/lazy_prm.hpp"
+
 namespace csl {
 
 using json = nlohmann::json;
@@ -24,13 +26,21 @@ json planner_state_json(const Planner& planner, bool roadmap) {
            {"path_length", planner.solved() ? json(planner.path_length()) : json(nullptr)},
            {"roadmap_hash", roadmap_hash_text(r)},
            {"last_event", planner.steps() > 0 ? json(event_kind_name(planner.last_event().kind)) : json(nullptr)}};
+  // Lazy PRM adds what it never had to check: a count, and with the roadmap a flag per edge.
+  const auto* lazy = dynamic_cast<const LazyPrm*>(&planner);
+  if (lazy) out["edges_unchecked"] = lazy->edges_unchecked();
   if (roadmap) {
-    json vertices = json::array(), edges = json::array();
+    json vertices = json::array(), edges = json::array(), checked = json::array();
     for (const Config& q : r.vertices) vertices.push_back(config_to_json(q));
-    for (const RoadmapEdge& e : r.edges)
-      if (e.alive) edges.push_back(json::array({e.a, e.b}));
+    for (std::size_t i = 0; i < r.edges.size(); ++i) {
+      const RoadmapEdge& e = r.edges[i];
+      if (!e.alive) continue;
+      edges.push_back(json::array({e.a, e.b}));
+      if (lazy) checked.push_back(lazy->edge_checked()[i] != 0);
+    }
     out["vertices"] = vertices;
     out["edge_list"] = edges;
+    if (lazy) out["edge_checked"] = checked;
   }
   return out;
 }

@@ -118,6 +118,7 @@ Prm::Prm(const CollisionWorld& world, Config start, Config goal, PrmParams param
       start_(world.space().wrap(start)),
       goal_(world.space().wrap(goal)),
       params_(params),
+      sampler_(world, params.sampler),
       checker_(world, params.checker, /*report_clearance=*/false),
       exact_(world, EdgeCheckerSpec::parse("bisection")),
       index_(world.space()) {
@@ -234,6 +235,10 @@ const PrmEvent& Prm::step() {
 
 template <bool kEmit>
 void Prm::draw_sample() {
+  if (params_.sampler.kind != SamplerSpec::Kind::Uniform) {
+    draw_from_sampler<kEmit>();
+    return;
+  }
   const Config q = world_->space().sample(rng_);
   ++samples_drawn_;
   const bool free = world_->is_free(q);
@@ -256,6 +261,35 @@ void Prm::draw_sample() {
       e.kind = PrmEvent::Kind::SampleRejected;
       e.obstacle = world_->nearest(q).obstacle;
     }
+  }
+}
+
+template <bool kEmit>
+void Prm::draw_from_sampler() {
+  // The uniform sampler stays in draw_sample() above, as it always was (its roadmaps' hashes
+  // are pinned); the others keep at most one configuration per draw.
+  SamplerDraw d = sampler_.draw(rng_, samples_drawn_ + 1);
+  ++samples_drawn_;
+  if (d.kept) {
+    roadmap_.vertices.push_back(d.q);
+    roadmap_.clearance.push_back(params_.checker.kind == EdgeCheckerSpec::Kind::Bisection
+                                     ? world_->clearance(d.q)
+                                     : std::numeric_limits<double>::quiet_NaN());
+    components_.add();
+  }
+  if constexpr (kEmit) {
+    PrmEvent& e = event_;
+    e.sample = samples_drawn_;
+    e.evaluations = d.tested;
+    if (d.kept) {
+      e.kind = PrmEvent::Kind::SampleAccepted;
+      e.vertex = static_cast<int>(roadmap_.vertices.size()) - 1;
+    } else {
+      e.kind = PrmEvent::Kind::SampleRejected;
+      // A free q rejected (no obstacle near it): obstacle stays -1.
+      if (!d.q_free) e.obstacle = world_->nearest(d.q).obstacle;
+    }
+    e.q = std::move(d.q);
   }
 }
 

@@ -24,6 +24,7 @@
 #include "core/planning/nearest_grid.hpp"
 #include "core/planning/planner.hpp"
 #include "core/planning/roadmap.hpp"
+#include "core/planning/sampler.hpp"
 
 namespace csl {
 
@@ -40,7 +41,9 @@ struct NeighborRule {
 };
 
 struct PrmParams {
-  int samples = 200;  ///< n, the number of samples drawn (kept only if free)
+  int samples = 200;  ///< n, the number of samples drawn: draws of `sampler`, each keeping at most one
+  /// Where samples come from (core/planning/sampler.hpp); uniform: the homework's PRM.
+  SamplerSpec sampler;
   NeighborRule neighbors;
   EdgeCheckerSpec checker;  ///< default: exact bisection
   std::uint64_t seed = 1;
@@ -131,6 +134,8 @@ class Prm final : public Planner {
   // without, and must leave the same state).
   template <bool kEmit>
   void draw_sample();
+  template <bool kEmit>
+  void draw_from_sampler();
   void begin_connecting();
   template <bool kEmit>
   void find_candidates();
@@ -151,6 +156,7 @@ class Prm final : public Planner {
   Config start_, goal_;
   PrmParams params_;
   Rng rng_;
+  Sampler sampler_;
   EdgeChecker checker_;
   EdgeChecker exact_;  // re-verifies paths
   NeighborIndex index_;

@@ -37,6 +37,26 @@ std::string neighbors_text(const PrmEvent& e, const Prm& prm) {
   return out;
 }
 
+// Why a non-uniform sampler kept or dropped its draw (uniform: nothing to add).
+const char* accepted_why(SamplerSpec::Kind k) {
+  switch (k) {
+    case SamplerSpec::Kind::Gaussian: return " and its Gaussian partner in collision";
+    case SamplerSpec::Kind::Bridge: return ", the midpoint of a bridge between two collisions";
+    case SamplerSpec::Kind::Halton: return " (Halton point)";
+    case SamplerSpec::Kind::Uniform: break;
+  }
+  return "";
+}
+const char* rejected_why(SamplerSpec::Kind k) {
+  switch (k) {
+    case SamplerSpec::Kind::Gaussian: return ", and so is its Gaussian partner";
+    case SamplerSpec::Kind::Bridge: return " (a bridge's midpoint)";
+    case SamplerSpec::Kind::Halton: return " (Halton point)";
+    case SamplerSpec::Kind::Uniform: break;
+  }
+  return "";
+}
+
 }  // namespace
 
 std::string describe_prm_event(const PlannerEvent& e, const Prm& prm, const Scene& scene) {
@@ -53,11 +73,19 @@ std::string describe_prm_event(const PlannerEvent& e, const Prm& prm, const Scen
                     e.vertex == 0 ? "start" : "end");
       break;
     case PrmEvent::Kind::SampleAccepted:
-      std::snprintf(buf, sizeof buf, "sample #%d at %s: free, added as vertex %d", e.sample, q.c_str(), e.vertex);
+      std::snprintf(buf, sizeof buf, "sample #%d at %s: free%s, added as vertex %d", e.sample, q.c_str(),
+                    accepted_why(prm.params().sampler.kind), e.vertex);
       break;
     case PrmEvent::Kind::SampleRejected:
-      std::snprintf(buf, sizeof buf, "sample #%d at %s: rejected, inside %s", e.sample, q.c_str(),
-                    obstacle_label(scene, e.obstacle).c_str());
+      if (e.obstacle < 0) {
+        std::snprintf(buf, sizeof buf, "sample #%d at %s: rejected, %s", e.sample, q.c_str(),
+                      prm.params().sampler.kind == SamplerSpec::Kind::Bridge
+                          ? "a bridge end is free (the bridge test keeps only midpoints between two collisions)"
+                          : "free, and so is its Gaussian partner (nothing near an obstacle's boundary)");
+        break;
+      }
+      std::snprintf(buf, sizeof buf, "sample #%d at %s: rejected, inside %s%s", e.sample, q.c_str(),
+                    obstacle_label(scene, e.obstacle).c_str(), rejected_why(prm.params().sampler.kind));
       break;
     case PrmEvent::Kind::Neighbors:
       std::snprintf(buf, sizeof buf, "connecting vertex %d: %s", e.vertex, neighbors_text(e, prm).c_str());
@@ -76,6 +104,10 @@ std::string describe_prm_event(const PlannerEvent& e, const Prm& prm, const Scen
     case PrmEvent::Kind::PathFound:
       std::snprintf(buf, sizeof buf, "q_init and q_final are connected: a path of %zu edges, length %.4f",
                     prm.path().size() - 1, e.path_length);
+      break;
+    case PrmEvent::Kind::EdgeChecked:  // Lazy PRM's: PRM checks every edge as it adds it
+    case PrmEvent::Kind::PathCandidate:
+      std::snprintf(buf, sizeof buf, "%s (not a PRM event)", event_kind_name(e.kind));
       break;
     case PrmEvent::Kind::NoPath:
       std::snprintf(buf, sizeof buf, "q_init and q_final are not connected: PRM declares no path (n = %d)",

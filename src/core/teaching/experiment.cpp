@@ -199,6 +199,7 @@ void Experiment::step() {
     p.samples = row.samples;
     p.neighbors = params_.neighbors;
     p.checker = params_.checker;
+    p.sampler = params_.sampler;
     p.seed = seed;
     make = prm_factory(p);
   }

@@ -28,6 +28,8 @@ struct ExperimentParams {
   std::uint64_t seed = 1;
   NeighborRule neighbors;
   EdgeCheckerSpec checker;
+  /// PRM's sampler in the trials (the reference run samples uniformly: it measures the scene).
+  SamplerSpec sampler;
   int reference_samples = 0;     ///< 0: max(2000, 4 x the largest n)
   long volume_samples = 100000;  ///< Monte Carlo samples for mu(F)
   /// The planner under test, for a trial with n samples and its seed; null: PRM with
