@@ -88,8 +88,9 @@ int run_experiment(Args& args, std::ostream& os) {
   params.seed = options.seed;
   params.neighbors = options.neighbors;
   params.checker = options.checker;
-  if (info.tree) {
-    // The trials' planner; the reference run stays PRM's (it measures the scene).
+  params.sampler = options.sampler;
+  if (choice.kind != PlannerChoice::Kind::Prm && choice.kind != PlannerChoice::Kind::PrmStar) {
+    // The trials' planner (a tree, Lazy PRM); the reference run stays PRM's (it measures the scene).
     params.planner = [choice](int samples, std::uint64_t seed) {
       PlannerChoice trial = choice;
       trial.samples = samples;
@@ -168,6 +169,7 @@ int run_experiment(Args& args, std::ostream& os) {
                   {"goal_bias", choice.kind == PlannerChoice::Kind::Rrt ? json(choice.goal_bias) : json(nullptr)},
                   {"step", info.tree ? json(tree_step(world.space(), choice.step)) : json(nullptr)},
                   {"checker", params.checker.name()},
+                  {"sampler", info.tree ? json(nullptr) : json(params.sampler.name())},
                   {"seed", params.seed},
                   {"rows", rows}});
   return 0;
@@ -181,7 +183,8 @@ const Command kExperimentCommand{
     "                            [--planner prm|prm-star|rrt|rrt-connect] [--goal-bias B] [--step D]\n"
     "                            [--k K | --radius R | --prm-star] [--checker C] [--seed S]\n"
     "                            [--reference-samples M] [--max-pairs P] [--max-total-pairs P]\n"
-    "                            [--max-work W] [--max-total-work W]\n\n" +
+    "                            [--max-work W] [--max-total-work W]\n"
+    "                            [--sampler uniform|gaussian:S|bridge:S|halton]\n\n" +
     option_help(kExperimentSamples, "N1,...", false) + option_help(kExperimentTrials, "T") +
     option_help(kReferenceSamples, "M") + planner_choice_help() + option_help(kNeighborK, "K") + option_help(kSeed, "S") +
     "\nRuns the planner (PRM by default) T times (each with its own seed derived from S) for each n,\n"
@@ -198,10 +201,12 @@ const Command kExperimentCommand{
     "      \"rows\": [{\"samples\": n, \"trials\": T, \"failures\", \"failure_rate\", \"ci_low\",\n"
     "      \"ci_high\" (95% Wilson interval), \"bound\" (null without a reference path),\n"
     "      \"bound_vacuous\"}], \"planner\", \"neighbors\" (null for a tree planner), \"checker\",\n"
-    "      \"seed\", \"goal_bias\" (rrt's B, else null), \"step\" (a tree planner's D, else null)}\n"
-    "With --planner rrt or rrt-connect the T runs for each n are that planner's with a budget of n\n"
-    "samples (see `cspacelab help plan`); the reference run is PRM's all the same (it measures the\n"
-    "scene), and the bound stays PRM's, for comparison.\n"
+    "      \"sampler\" (null for a tree planner), \"seed\", \"goal_bias\" (rrt's B, else null), \"step\"\n"
+    "      (a tree planner's D, else null)}\n"
+    "With --planner rrt, rrt-connect or lazy-prm the T runs for each n are that planner's with a\n"
+    "budget of n samples (see `cspacelab help plan`); the reference run is PRM's all the same (it\n"
+    "measures the scene), and the bound stays PRM's, for comparison.\n"
+    "--sampler is the trials' (below); the reference run samples uniformly.\n" + kSamplerHelp +
     "If the reference run finds no path, failures are still counted but mean little.\n"
     "If any run, the reference run included, is expected to check more than P candidate pairs\n"
     "(--max-pairs, default 2e7), nothing runs: an error (exit status 2) says so, and for --radius\n"

@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "cli/commands.hpp"
+#include "core/planning/lazy_prm.hpp"
 #include "core/planning/planner_json.hpp"
 #include "core/planning/potential_connector.hpp"
 
@@ -44,6 +45,7 @@ int run_plan(Args& args, std::ostream& os) {
     params.neighbors = choice.kind == PlannerChoice::Kind::PrmStar ? NeighborRule::parse("prm*") : options.neighbors;
     params.checker = options.checker;
     params.connector = choice.connector;
+    params.sampler = choice.sampler;
     PlannerOptions budget = options;
     budget.neighbors = params.neighbors;
     require_pairs_budget(world.space(), budget, params.samples);
@@ -71,10 +73,15 @@ int run_plan(Args& args, std::ostream& os) {
   out["planner"] = info.name;
   out["samples"] = choice.samples;
   out["checker"] = choice.checker.name();
+  out["sampler"] = info.tree ? json(nullptr) : json(choice.sampler.name());
   out["connector"] = connector;
   out["seed"] = choice.seed;
   if (const auto* prm = dynamic_cast<const Prm*>(planner.get())) {
     out["neighbors"] = prm->params().neighbors.name();
+    out["goal_bias"] = nullptr;
+    out["step"] = nullptr;
+  } else if (const auto* lazy = dynamic_cast<const LazyPrm*>(planner.get())) {
+    out["neighbors"] = lazy->params().neighbors.name();
     out["goal_bias"] = nullptr;
     out["step"] = nullptr;
   } else {
@@ -94,6 +101,7 @@ const Command kPlanCommand{
     "Usage: cspacelab plan SCENE.json [--planner prm|prm-star|rrt|rrt-connect] [--samples N]\n"
     "                      [--k K | --radius R | --prm-star] [--goal-bias B] [--step D]\n"
     "                      [--checker bisection|grid:N|step:D] [--seed S] [--roadmap]\n"
+    "                      [--sampler uniform|gaussian:S|bridge:S|halton]\n"
     "                      [--connector straight|potential] [--max-pairs P] [--max-work W]\n\n" +
     planner_choice_help() + option_help(kPrmSamples, "N") + option_help(kNeighborK, "K") + option_help(kSeed, "S") +
     "\nRuns PRM as the homework states it: add start and goal to V; draw N samples\n"
@@ -119,14 +127,20 @@ const Command kPlanCommand{
     "D until it reaches it (a path) or is blocked; then they swap. N is the tree planners' budget\n"
     "of samples drawn. Their path is re-checked exactly, as PRM's. --k, --radius, --prm-star and\n"
     "--connector are PRM's; --goal-bias is RRT's alone, --step the tree planners'. Each is an\n"
-    "error (exit status 2) with a planner that does not take it.\n\n"
+    "error (exit status 2) with a planner that does not take it.\n"
+    "--planner lazy-prm builds PRM's roadmap without checking its edges (Bohlin and Kavraki 2000),\n"
+    "then repeatedly takes the shortest path, checks its unchecked edges with --checker (bisection:\n"
+    "exact), removes those in collision and searches again, until a path is proven free or none is\n"
+    "left. It adds \"edges_unchecked\": the edges never checked; with --roadmap also \"edge_checked\":\n"
+    "[bool, ...] beside \"edge_list\". It takes no --connector.\n" + kSamplerHelp + "\n"
     "Output: {\"solved\": bool, \"path\": [Q, ...] (with any connector's waypoints),\n"
     "  \"path_length\": x|null, \"nodes\": int, \"edges\": int, \"components\": int,\n"
     "  \"edge_checks\": int, \"evaluations\": int, \"build_seconds\": x, \"query_seconds\": x,\n"
     "  (evaluations: configurations the collision checker tested; with grid:N or step:D a roadmap\n"
     "  edge skips those its endpoints' clearances prove free, which changes no verdict),\n"
-    "  \"planner\", \"samples\", \"neighbors\" (null for a tree planner), \"checker\", \"connector\",\n"
-    "  \"seed\", \"goal_bias\" (rrt's B, else null), \"step\" (a tree planner's D as used, else null),\n"
+    "  \"planner\", \"samples\", \"neighbors\" (null for a tree planner), \"checker\", \"sampler\" (null\n"
+    "  for a tree planner), \"connector\", \"seed\", \"goal_bias\" (rrt's B, else null), \"step\" (a tree\n"
+    "  planner's D as used, else null),\n"
     "  \"steps\": the planner's step count, \"roadmap_hash\": 16 hex digits (FNV-1a of V and E),\n"
     "  \"phase\": \"done\", \"done\": true, \"samples_drawn\": int (accepted and rejected),\n"
     "  \"last_event\": \"path_found\" or \"no_path\"} (the fields the lab's state() reports)\n"

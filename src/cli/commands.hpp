@@ -54,17 +54,29 @@ Vec2 parse_point(const std::string& text, const std::string& what);
 inline constexpr double kDefaultMaxPairs = 2e7;
 
 /// The planner options shared by plan and experiment: [--k K | --radius R | --prm-star]
-/// [--checker bisection|grid:N|step:D] [--seed S] [--max-pairs P]; defaults k = 10, bisection,
+/// [--checker bisection|grid:N|step:D] [--sampler ...] [--seed S] [--max-pairs P]; defaults k = 10, bisection, uniform,
 /// seed 1, kDefaultMaxPairs.
 struct PlannerOptions {
   NeighborRule neighbors;
   std::string neighbor_flag;  ///< the neighbour option given ("--k", "--radius", "--prm-star"), "" for none
   EdgeCheckerSpec checker;
+  SamplerSpec sampler;  ///< --sampler uniform|gaussian:S|bridge:S|halton (default uniform)
   std::uint64_t seed = 1;
   double max_pairs = kDefaultMaxPairs;  ///< --max-pairs
   double max_work = kCliMaxWork;        ///< --max-work (work.hpp's units)
 };
 PlannerOptions take_planner_options(Args& args);
+/// --sampler in plan's and experiment's help.
+inline const std::string kSamplerHelp =
+    "--sampler: where PRM's N samples come from (N counts draws; a draw keeps at most one\n"
+    "configuration; core/planning/sampler.hpp): uniform (default) keeps q if free; gaussian:S\n"
+    "draws q1 uniformly and q2 ~ N(q1, S) in the space's metric and keeps whichever is free if\n"
+    "exactly one is (Boor et al. 1999: samples near obstacles' boundaries); bridge:S keeps the\n"
+    "midpoint of q1 and q2 when both are in collision and it is free (Hsu et al. 2003: samples\n"
+    "inside narrow passages); halton takes the Halton sequence (bases 2, 3, 5, ...; the seed plays\n"
+    "no part). S > 0, in the units of the space's metric. q2 is clamped into the bounds.\n"
+    "Gaussian and bridge need obstacles with an inside: a wall (a segment) has none, and\n"
+    "near walls alone they keep next to nothing.\n";
 /// An expected count of candidate pairs as an error names it: in full below 10^6, else with
 /// `digits` significant digits.
 std::string pairs_text(double pairs, int digits = 3);

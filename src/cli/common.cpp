@@ -80,6 +80,11 @@ PlannerOptions take_planner_options(Args& args) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--checker: ") + e.what());
   }
+  try {
+    o.sampler = SamplerSpec::parse(args.take("sampler").value_or("uniform"));
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--sampler: ") + e.what());
+  }
   if (const auto max_pairs = args.take("max-pairs")) {
     o.max_pairs = parse_number(*max_pairs, "--max-pairs");
     if (!(o.max_pairs >= 1.0)) throw UsageError("--max-pairs: must be at least 1");
@@ -155,7 +160,10 @@ PlannerChoice take_planner_choice(Args& args, const PlannerOptions& options) {
   if (step && !info.tree) throw UsageError(std::string("--step is the tree planners' (rrt, rrt-connect), not ") + info.name + "'s");
   c.neighbors = options.neighbors;
   c.checker = options.checker;
+  c.sampler = options.sampler;
   c.seed = options.seed;
+  if (info.tree && c.sampler.kind != SamplerSpec::Kind::Uniform)
+    throw UsageError(std::string("--sampler is the roadmap planners' (prm, prm-star, lazy-prm); ") + info.name + " samples uniformly");
   if (bias) c.goal_bias = parse_param(*bias, kGoalBias);
   if (step) c.step = parse_param(*step, kTreeStep);
   return c;

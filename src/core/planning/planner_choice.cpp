@@ -4,6 +4,7 @@
 
 #include "core/base/params.hpp"
 #include "core/base/text.hpp"
+#include "core/planning/lazy_prm.hpp"
 #include "core/planning/rrt.hpp"
 #include "core/planning/rrt_connect.hpp"
 
@@ -17,10 +18,12 @@ PrmParams prm_params(const PlannerChoice& c) {
   p.checker = c.checker;
   p.seed = c.seed;
   p.connector = c.connector;
+  p.sampler = c.sampler;
   return p;
 }
 
 PlannerFactory make_prm(const PlannerChoice& c) { return prm_factory(prm_params(c)); }
+PlannerFactory make_lazy_prm(const PlannerChoice& c) { return lazy_prm_factory(prm_params(c)); }
 PlannerFactory make_rrt(const PlannerChoice& c) { return rrt_factory(tree_params(c)); }
 PlannerFactory make_rrt_connect(const PlannerChoice& c) { return rrt_connect_factory(tree_params(c)); }
 
@@ -35,6 +38,9 @@ const std::vector<Row>& rows() {
        make_prm},
       {{PlannerChoice::Kind::PrmStar, "prm-star", "PRM with PRM*'s k(n) = ceil(e (1 + 1/d) ln n) nearest", false},
        make_prm},
+      {{PlannerChoice::Kind::LazyPrm, "lazy-prm",
+        "PRM with its edges checked only when a shortest path uses them (Bohlin and Kavraki)", false},
+       make_lazy_prm},
       {{PlannerChoice::Kind::Rrt, "rrt", "a rapidly-exploring random tree from the start (--goal-bias, --step)", true},
        make_rrt},
       {{PlannerChoice::Kind::RrtConnect, "rrt-connect", "two trees, from start and goal, grown toward each other (--step)",
@@ -80,6 +86,10 @@ void validate(const PlannerChoice& c) {
   if (!in_range(kPrmSamples, c.samples)) throw std::invalid_argument(param_error(kPrmSamples));
   if (info.tree && c.connector)
     throw std::invalid_argument(std::string(info.name) + " joins its trees by straight lines: no local connector");
+  if (c.kind == PlannerChoice::Kind::LazyPrm && c.connector)
+    throw std::invalid_argument("lazy-prm checks straight edges only when a path uses them: no local connector");
+  if (info.tree && c.sampler.kind != SamplerSpec::Kind::Uniform)
+    throw std::invalid_argument(std::string(info.name) + " samples uniformly: the sampler " + c.sampler.name() + " is PRM's");
   if (!in_range(kGoalBias, c.goal_bias)) throw std::invalid_argument(param_error(kGoalBias));
   if (!in_range(kTreeStep, c.step)) throw std::invalid_argument(param_error(kTreeStep));
 }

@@ -13,18 +13,22 @@
 #include "core/planning/local_connector.hpp"
 #include "core/planning/planner.hpp"
 #include "core/planning/prm.hpp"
+#include "core/planning/sampler.hpp"
 #include "core/planning/tree_planner.hpp"
 
 namespace csl {
 
 struct PlannerChoice {
-  enum class Kind { Prm, PrmStar, Rrt, RrtConnect };
+  enum class Kind { Prm, PrmStar, LazyPrm, Rrt, RrtConnect };
   Kind kind = Kind::Prm;
   /// The sample budget: PRM's n; a tree planner's samples drawn (goal draws included).
   int samples = 200;
   /// PRM's rule for close vertices (prm-star ignores it: PRM*'s k(n) always).
   NeighborRule neighbors;
   EdgeCheckerSpec checker;  ///< default: exact bisection
+  /// Where the roadmap planners (prm, prm-star, lazy-prm) draw their samples; the tree planners
+  /// sample uniformly (another sampler is an error).
+  SamplerSpec sampler;
   std::uint64_t seed = 1;
   /// PRM's local connector (null: the straight line).
   std::shared_ptr<const LocalConnector> connector;
