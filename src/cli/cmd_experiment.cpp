@@ -115,7 +115,9 @@ int run_experiment(Args& args, std::ostream& os) {
                          "the reference run (--reference-samples M, by default 4 x the largest n, within [2000, 1000000]): ");
     require_total_budget(world.space(), options, params, *list, ex->params().reference_samples, max_total);
     largest.samples = largest_n;
+    largest.sampler = params.sampler;  // (Lazy PRM's work is PRM's at most: it checks fewer edges)
     require_work_budget(world, options, largest);
+    largest.sampler = SamplerSpec{};  // the reference run samples uniformly
     largest.samples = ex->params().reference_samples;
     require_work_budget(world, options, largest, "the reference run: ");
     require_total_work(world, ex->params(), max_total_work);

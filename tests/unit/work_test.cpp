@@ -36,6 +36,12 @@ TEST_CASE("a roadmap's work: samples, pairs times the checker's configurations, 
   CHECK(w.per_edge == doctest::Approx((1 + 100) * cost));
   CHECK(w.sampling == doctest::Approx(1002 * cost));
   CHECK(w.total() == doctest::Approx(w.sampling + w.connecting + w.neighbours));
+  // A Gaussian draw tests two configurations, a bridge draw up to three (core/planning/sampler.hpp).
+  auto gaussian = params(1000, "k:10", "grid:102");
+  gaussian.sampler = csl::SamplerSpec::parse("gaussian:0.1");
+  CHECK(csl::expected_prm_work(world, gaussian).sampling == doctest::Approx(2 * 1002 * cost));
+  gaussian.sampler = csl::SamplerSpec::parse("bridge:0.1");
+  CHECK(csl::expected_prm_work(world, gaussian).sampling == doctest::Approx(3 * 1002 * cost));
   // The expected edge length for k of n uniform points in the unit square: the disc of area k / n.
   CHECK(csl::expected_edge_length(world.space(), csl::NeighborRule::parse("k:10"), 998) ==
         doctest::Approx(std::sqrt(0.01 / csl::kPi)));

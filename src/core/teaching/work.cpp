@@ -44,7 +44,11 @@ WorkEstimate expected_prm_work(const CollisionWorld& world, const PrmParams& par
       params.connector ? params.connector->expected_evaluations()
                        : expected_edge_evaluations(params.checker, expected_edge_length(space, params.neighbors, params.samples));
   w.per_edge = (1.0 + evaluations) * cost;  // the motion bound and the ends' check count as one
-  w.sampling = n * cost;
+  // A draw of the Gaussian sampler tests 2 configurations, of the bridge test up to 3 (sampler.hpp).
+  const double per_draw = params.sampler.kind == SamplerSpec::Kind::Gaussian ? 2.0
+                          : params.sampler.kind == SamplerSpec::Kind::Bridge ? 3.0
+                                                                              : 1.0;
+  w.sampling = n * per_draw * cost;
   w.connecting = w.pairs * w.per_edge;
   // The neighbour search: about one distance per candidate and per vertex (a grid or k-d tree).
   w.neighbours = n + 4.0 * w.pairs;
@@ -72,6 +76,7 @@ ExperimentWork expected_experiment_work(const CollisionWorld& world, const Exper
   w.reference = expected_prm_work(world, run).total() +
                 (kReferenceProofEvaluations + static_cast<double>(params.volume_samples)) * world.evaluation_cost();
   w.largest_run = w.total = w.reference;
+  run.sampler = params.sampler;  // the trials' (the reference run's is uniform)
   for (int n : params.sample_counts) {
     run.samples = n;
     const double one = expected_prm_work(world, run).total();
