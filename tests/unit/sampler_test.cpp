@@ -170,6 +170,10 @@ TEST_CASE("a draw is one sample: its events say what was tested and why it was k
         if (e.obstacle < 0) {
           ++rejected_free;
           CHECK(world.is_free(e.q));
+          // The log says why a free configuration was dropped.
+          const std::string text = prm.describe(e, csl::Scene{});
+          CHECK(text.find(std::string(s).rfind("bridge", 0) == 0 ? "a bridge end is free" : "its Gaussian partner") !=
+                std::string::npos);
         } else {
           ++rejected_hit;
           CHECK_FALSE(world.is_free(e.q));
