@@ -152,7 +152,10 @@ TEST_CASE("a draw is one sample: its events say what was tested and why it was k
   const csl::CollisionWorld world = narrow_passage();
   // The bridge test keeps about 1 draw in 200 here (both ends inside the wall's blocks, on either
   // side of the gap): 3000 draws.
-  for (const auto& [s, n] : {std::pair<const char*, int>{"gaussian:0.05", 300}, {"bridge:0.1", 3000}}) {
+  // (No structured bindings: clang 14, the wasm build's, cannot capture them in CAPTURE's lambda.)
+  for (const auto& draws : {std::pair<const char*, int>{"gaussian:0.05", 300}, {"bridge:0.1", 3000}}) {
+    const char* s = draws.first;
+    const int n = draws.second;
     CAPTURE(s);
     csl::Prm prm(world, config({0.05, 0.5}), config({0.95, 0.5}), params(n, s, 3));
     prm.step();
@@ -195,7 +198,9 @@ TEST_CASE("each sampler gives the same roadmap in every build (pinned hashes)") 
       {"gaussian:0.05", 3798585946714865070ull},
       {"bridge:0.1", 4993253417752152880ull},
       {"halton", 15391366077283307875ull}};
-  for (const auto& [sampler, hash] : pinned) {
+  for (const auto& pin : pinned) {
+    const char* sampler = pin.first;
+    const std::uint64_t hash = pin.second;
     CAPTURE(sampler);
     const bool bridge = std::string(sampler).rfind("bridge", 0) == 0;
     csl::Prm prm(world, config({0.05, 0.5}), config({0.95, 0.5}), params(bridge ? 3000 : 400, sampler, 11));
