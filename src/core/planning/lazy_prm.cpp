@@ -47,6 +47,8 @@ void LazyPrm::reset() {
   next_pair_ = 0;
   candidate_.clear();
   candidate_edges_.clear();
+  graph_.clear();
+  to_goal_.clear();
   next_check_ = 0;
   path_.clear();
   path_length_ = 0.0;
@@ -227,16 +229,21 @@ void LazyPrm::add_pair() {
 }
 
 void LazyPrm::search() {
-  std::vector<GraphEdge> graph;
-  graph.reserve(roadmap_.edges.size());
-  for (const RoadmapEdge& r : roadmap_.edges) graph.push_back({r.a, r.b, r.length});
   const auto& vertices = roadmap_.vertices;
-  const Config& goal = vertices[1];
+  // The graph and A*'s heuristic (the distance to q_final) once, at the first search: only
+  // edges' alive flags change between searches, and a search is most of Lazy PRM's time (on the
+  // arm's T^2 with 5000 samples, 11 searches took 63 of 75 ms when each rebuilt both).
+  if (graph_.size() != roadmap_.edges.size()) {
+    graph_.clear();
+    graph_.reserve(roadmap_.edges.size());
+    for (const RoadmapEdge& r : roadmap_.edges) graph_.push_back({r.a, r.b, r.length});
+    to_goal_.resize(vertices.size());
+    for (std::size_t v = 0; v < vertices.size(); ++v) to_goal_[v] = world_->space().distance(vertices[v], vertices[1]);
+  }
   candidate_edges_.clear();
   candidate_ = shortest_path(
-      static_cast<int>(vertices.size()), graph, [&](int i) { return roadmap_.edges[static_cast<std::size_t>(i)].alive; },
-      0, 1, [&](int v) { return world_->space().distance(vertices[static_cast<std::size_t>(v)], goal); },
-      &candidate_edges_);
+      static_cast<int>(vertices.size()), graph_, [&](int i) { return roadmap_.edges[static_cast<std::size_t>(i)].alive; },
+      0, 1, [&](int v) { return to_goal_[static_cast<std::size_t>(v)]; }, &candidate_edges_);
   PlannerEvent& e = event_;
   if (candidate_.empty()) {
     e.kind = PlannerEvent::Kind::NoPath;
