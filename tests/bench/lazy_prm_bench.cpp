@@ -10,9 +10,10 @@
 // of the space's extent, our step:D checker with that D. The sample budget is n for both: ours
 // draws n samples, then searches and checks; OMPL's LazyPRM adds milestones one at a time and
 // stops at its first proven path, or at n milestones (a termination condition on its milestone
-// count, never on time). Reported: microseconds per solved query (all runs' time over the runs
-// that solved), per collision check (a configuration tested: a sample, a point along an edge, or
-// for ours a clearance), the checks per query, and the ratio OMPL / ours. It fails (exit 1) when
+// count, never on time). Reported: microseconds per solved query (the median over the runs that
+// solved), per collision check (the median of a run's time over the configurations it tested: a
+// sample, a point along an edge, or for ours a clearance), the checks per query, and the ratio
+// OMPL / ours. It fails (exit 1) when
 // a planner solves fewer than half of its queries (the figures would compare failures).
 #include <algorithm>
 #include <cmath>
@@ -37,19 +38,29 @@
 
 namespace {
 
+// One run's figures, or (add()) a contender's runs. Reported as medians over runs: the machine is
+// shared, and a mean (or a sum) lets one disturbed run move a row by 10x.
 struct Result {
-  double seconds = 0;  ///< all runs
+  double seconds = 0;  ///< one run
   int runs = 0, solved = 0;
-  long checks = 0;       ///< configurations tested, all runs
-  long milestones = 0;   ///< all runs
-  double us_per_query() const { return solved ? 1e6 * seconds / solved : std::numeric_limits<double>::quiet_NaN(); }
-  double us_per_check() const { return checks ? 1e6 * seconds / static_cast<double>(checks) : std::numeric_limits<double>::quiet_NaN(); }
+  long checks = 0;      ///< configurations tested (all runs)
+  long milestones = 0;  ///< all runs
+  std::vector<double> query_us, check_us;  ///< per run: its time if solved; its time per check
+
+  static double median(std::vector<double> v) {
+    if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
+    std::sort(v.begin(), v.end());
+    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+  }
+  double us_per_query() const { return median(query_us); }
+  double us_per_check() const { return median(check_us); }
   void add(const Result& r) {
-    seconds += r.seconds;
     runs += r.runs;
     solved += r.solved;
     checks += r.checks;
     milestones += r.milestones;
+    if (r.solved) query_us.push_back(1e6 * r.seconds);
+    if (r.checks) check_us.push_back(1e6 * r.seconds / static_cast<double>(r.checks));
   }
 };
 
@@ -192,7 +203,7 @@ int main(int argc, char** argv) {
   }
 #endif
 
-  std::printf("Lazy PRM, one query per scene, k = 10, matching edge-check resolution, %d runs each, in turns\n", repeats);
+  std::printf("Lazy PRM, one query per scene, k = 10, matching edge-check resolution, medians of %d runs each, in turns\n", repeats);
   std::printf("%-26s %6s %-6s %6s %9s %11s %11s %9s %9s\n", "scene", "n", "who", "solved", "miles/run", "us/query",
               "us/check", "checks/q", "ratio");
   int bad = 0;
@@ -232,7 +243,7 @@ int main(int argc, char** argv) {
       }
     }
   }
-  std::printf("(miles/run: milestones per run; us/query: all runs' time / queries solved; us/check: time per\n"
+  std::printf("(miles/run: milestones per run; us/query: median time of a solved query; us/check: median time per\n"
               " configuration tested; checks/q: configurations tested per run; ratio: OMPL / ours per query, per check;\n"
               " ours@m: ours with m samples, the milestones OMPL's took to its first path, less start and goal)\n");
   if (bad) std::fprintf(stderr, "%d row(s) with fewer than half the queries solved\n", bad);
