@@ -182,7 +182,8 @@ int run_experiment(Args& args, std::ostream& os) {
 const Command kExperimentCommand{
     "experiment", "a planner's failure rate over many runs, for several n, against PRM's bound",
     "Usage: cspacelab experiment SCENE.json --samples-list N1,N2,... [--trials T]\n"
-    "                            [--planner prm|prm-star|rrt|rrt-connect] [--goal-bias B] [--step D]\n"
+    "                            [--planner prm|prm-star|lazy-prm|rrt|rrt-connect]\n"
+    "                            [--goal-bias B] [--step D]\n"
     "                            [--k K | --radius R | --prm-star] [--checker C] [--seed S]\n"
     "                            [--reference-samples M] [--max-pairs P] [--max-total-pairs P]\n"
     "                            [--max-work W] [--max-total-work W]\n"

@@ -98,8 +98,8 @@ int run_plan(Args& args, std::ostream& os) {
 
 const Command kPlanCommand{
     "plan", "plan from start to goal with the probabilistic roadmap method",
-    "Usage: cspacelab plan SCENE.json [--planner prm|prm-star|rrt|rrt-connect] [--samples N]\n"
-    "                      [--k K | --radius R | --prm-star] [--goal-bias B] [--step D]\n"
+    "Usage: cspacelab plan SCENE.json [--planner prm|prm-star|lazy-prm|rrt|rrt-connect]\n"
+    "                      [--samples N] [--k K | --radius R | --prm-star] [--goal-bias B] [--step D]\n"
     "                      [--checker bisection|grid:N|step:D] [--seed S] [--roadmap]\n"
     "                      [--sampler uniform|gaussian:S|bridge:S|halton]\n"
     "                      [--connector straight|potential] [--max-pairs P] [--max-work W]\n\n" +

@@ -91,7 +91,7 @@ test('experiment --planner rrt-connect: rows from the tree planner', () => {
 });
 
 test('bad planner flags: one clear line and exit status 2', () => {
-  fails(/--planner: unknown planner 'rrt-star' \(prm, prm-star, rrt, rrt-connect/, 'plan', GAP, '--planner', 'rrt-star');
+  fails(/--planner: unknown planner 'rrt-star' \(prm, prm-star, lazy-prm, rrt, rrt-connect/, 'plan', GAP, '--planner', 'rrt-star');
   fails(/--goal-bias: '1.5' is not a number in \[0, 1\]/, 'plan', GAP, '--planner', 'rrt', '--goal-bias', '1.5');
   fails(/--goal-bias: 'nan' is not/, 'plan', GAP, '--planner', 'rrt', '--goal-bias', 'nan');
   fails(/--step: '-0.1' is not a number >= 0/, 'plan', GAP, '--planner', 'rrt', '--step', '-0.1');

@@ -8,7 +8,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/planning/lazy_prm.hpp"
 #include "core/planning/planner_choice.hpp"
+#include "core/planning/potential_connector.hpp"
 #include "core/planning/prm.hpp"
 
 namespace {
@@ -66,4 +68,30 @@ TEST_CASE("prm and prm-star factories make PRM with the options given") {
   auto star = csl::make_planner_factory(c)(world, csl::config({0.1, 0.1}), csl::config({0.9, 0.9}));
   REQUIRE(dynamic_cast<csl::Prm*>(star.get()) != nullptr);
   CHECK(dynamic_cast<csl::Prm*>(star.get())->params().neighbors.name() == "prm*");
+}
+
+TEST_CASE("lazy-prm makes Lazy PRM with the sampler; the tree planners refuse a sampler") {
+  const auto world = open_square();
+  csl::PlannerChoice c;
+  c.kind = csl::parse_planner_kind("lazy-prm");
+  c.samples = 40;
+  c.sampler = csl::SamplerSpec::parse("halton");
+  auto planner = csl::make_planner_factory(c)(world, csl::config({0.1, 0.1}), csl::config({0.9, 0.9}));
+  auto* lazy = dynamic_cast<csl::LazyPrm*>(planner.get());
+  REQUIRE(lazy != nullptr);
+  CHECK(lazy->params().sampler.name() == "halton");
+  CHECK(lazy->params().samples == 40);
+  // PRM takes the sampler too.
+  c.kind = csl::PlannerChoice::Kind::Prm;
+  auto prm = csl::make_planner_factory(c)(world, csl::config({0.1, 0.1}), csl::config({0.9, 0.9}));
+  CHECK(dynamic_cast<csl::Prm*>(prm.get())->params().sampler.name() == "halton");
+  // A tree samples uniformly; another sampler is named in the error.
+  c.kind = csl::PlannerChoice::Kind::Rrt;
+  CHECK(error_of(c).find("halton") != std::string::npos);
+  c.sampler = csl::SamplerSpec{};
+  CHECK(error_of(c).empty());
+  // Lazy PRM takes no local connector.
+  c.kind = csl::PlannerChoice::Kind::LazyPrm;
+  c.connector = std::make_shared<const csl::PotentialConnector>();
+  CHECK(error_of(c).find("connector") != std::string::npos);
 }

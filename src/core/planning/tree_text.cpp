@@ -71,8 +71,10 @@ std::string describe_tree_event(const PlannerEvent& e, const TreePlanner& planne
       std::snprintf(buf, sizeof buf, "the trees did not meet in %d samples: %s declares no path",
                     planner.params().samples, planner.name());
       break;
-    case PlannerEvent::Kind::Neighbors:
-      std::snprintf(buf, sizeof buf, "vertex %d: %d candidates", e.vertex, e.candidates);  // PRM's alone
+    case PlannerEvent::Kind::Neighbors:  // PRM's and Lazy PRM's alone: a tree never emits these
+    case PlannerEvent::Kind::EdgeChecked:
+    case PlannerEvent::Kind::PathCandidate:
+      std::snprintf(buf, sizeof buf, "%s event at vertex %d", event_kind_name(e.kind), e.vertex);
       break;
   }
   return buf;
