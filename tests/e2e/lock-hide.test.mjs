@@ -241,6 +241,7 @@ test('every lesson: hide=answers takes its listed fields out of state() and its 
   const setups = {
     'step-prm': async () => { await api(page, 'set_scene', { scene: bundled['wall-gap'] }); await api(page, 'run'); },
     torus: async () => api(page, 'run'),
+    compare: async () => api(page, 'run'),
     distances: async () => {},
     analysis: async () => {},
   };
@@ -263,6 +264,12 @@ test('every lesson: hide=answers takes its listed fields out of state() and its 
     const log = (await api(page, 'log')).map((x) => x.text).join('\n');
     // The numbers a description would read out (4 significant digits).
     const four = (v) => String(Number(v.toPrecision(4)));
+    if (l.id === 'compare') {
+      for (const p of shown.planners) assert.ok(p.path_length > 0, `compare: ${p.planner} found a path`);
+      assert.match(shownText, /length \d/);
+      assert.doesNotMatch(text, /length/, 'compare: describe');
+      assert.doesNotMatch(log, /length/, 'compare: the log');
+    }
     if (l.id === 'step-prm' || l.id === 'torus') {
       const length = l.id === 'torus' ? shown.prm.path_length : shown.path_length;
       assert.ok(length > 0, `${l.id}: a path was found`);
@@ -323,7 +330,7 @@ test('lock=lesson keeps the lab on its lesson; bad words are named and the rest 
   await page.waitForFunction(() => document.querySelector('.lab-access-lessons button[data-lesson="collision"]').disabled);
   const buttons = await page.evaluate(() => [...document.querySelectorAll('.lab-access-lessons button')]
     .map((b) => [b.dataset.lesson, b.disabled]));
-  assert.ok(buttons.length === 7);
+  assert.ok(buttons.length === 8);
   for (const [id, disabled] of buttons) assert.equal(disabled, id !== 'distances', id);
   assert.equal((await api(page, 'status')).lesson, 'distances');
 }));

@@ -12,6 +12,7 @@
 #include "core/scene/scene.hpp"
 #include "core/teaching/answer_descriptions.hpp"
 #include "core/teaching/homework.hpp"
+#include "core/planning/planner_choice.hpp"
 #include "core/teaching/lesson_catalogue.hpp"
 #include "core/teaching/restrictions.hpp"
 
@@ -151,7 +152,7 @@ TEST_CASE("strip_answer_fields removes the answers' fields, in arrays too, and l
 }
 
 TEST_CASE("the catalogue: lessons, their parameters checked as a link would set them") {
-  CHECK(csl::lesson_ids_text() == "torus, notation, collision, distances, analysis, potential, step-prm");
+  CHECK(csl::lesson_ids_text() == "torus, notation, collision, compare, distances, analysis, potential, step-prm");
   const csl::CataloguedLesson* c = csl::find_catalogued_lesson("collision");
   REQUIRE(c);
   CHECK(c->name == "Collision checking");
@@ -177,6 +178,17 @@ TEST_CASE("the catalogue: lessons, their parameters checked as a link would set 
   CHECK(csl::lesson_params_problem(*analysis, json{{"tab", "cube"}}) == "tab: one of bound, tiling, visibility");
   CHECK(csl::lesson_params_problem(*analysis, json{{"gap", 2}}) == "gap: a number in [0, 1]");
   CHECK(csl::lesson_params_problem(*analysis, json{{"sample_counts", json::array()}}).rfind("sample_counts: 1 to 20 integers", 0) == 0);
+
+  // Compare planners: its planners are the planner choice's, whatever its table lists.
+  const csl::CataloguedLesson* compare = csl::find_catalogued_lesson("compare");
+  REQUIRE(compare);
+  for (const csl::PlannerKindInfo& k : csl::planner_kinds())
+    CHECK(csl::lesson_params_problem(*compare, json{{"planner_a", k.name}, {"planner_b", k.name}}).empty());
+  CHECK(csl::lesson_params_problem(*compare, json{{"planner_b", "rrt*"}}) ==
+        "planner_b: unknown planner 'rrt*' (" + csl::planner_names(", ") + ")");
+  CHECK(csl::lesson_params_problem(*compare, json{{"passage", 0.6}}) == "passage: a number in [0, 0.5]");
+  CHECK(csl::lesson_params_problem(*compare, json{{"budgets", {10, 20, 30, 40, 50, 60, 70}}}).rfind("budgets: 1 to 6 integers", 0) == 0);
+  CHECK(csl::lesson_params_problem(*compare, json{{"samples_a", 300}, {"goal_bias_a", 0.1}, {"mode", "experiment"}}).empty());
 
   const csl::CataloguedLesson* notation = csl::find_catalogued_lesson("notation");
   REQUIRE(notation);

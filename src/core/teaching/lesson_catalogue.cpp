@@ -6,7 +6,9 @@
 
 #include "core/base/text.hpp"
 #include "core/checking/edge_check.hpp"
+#include "core/planning/planner_choice.hpp"
 #include "core/planning/prm.hpp"
+#include "core/scene/narrow_passage.hpp"
 #include "core/teaching/notation.hpp"
 
 namespace csl {
@@ -42,6 +44,22 @@ const CataloguedLesson kLessons[] = {
      "Collision checking",
      {{"grid_n", K::Integer, &kTracedGridN}, {"p", K::Pair}, {"q", K::Pair}},
      {"point", "arm2"}},
+    {"compare",
+     "Compare planners",
+     {{"planner_a", K::Text, nullptr, {}, -kInf, kInf, LessonParamSyntax::Planner},
+      {"samples_a", K::Integer, &kLabPrmSamples},
+      {"goal_bias_a", K::Number, &kGoalBias},
+      {"step_a", K::Number, &kTreeStep},
+      {"planner_b", K::Text, nullptr, {}, -kInf, kInf, LessonParamSyntax::Planner},
+      {"samples_b", K::Integer, &kLabPrmSamples},
+      {"goal_bias_b", K::Number, &kGoalBias},
+      {"step_b", K::Number, &kTreeStep},
+      {"seed", K::Integer, &kSeed},
+      {"passage", K::Number, &kPassageWidth},
+      {"mode", K::Choice, nullptr, {"step", "experiment"}},
+      {"trials", K::Integer, nullptr, {}, 1, 100},
+      {"budgets", K::IntegerList, &kLabExperimentSamples, {}, -kInf, kInf, LessonParamSyntax::None, 6}},
+     {"point"}},
     {"distances",
      "Distances",
      {{"tool", K::Choice, nullptr, {"s1", "segment"}},
@@ -163,6 +181,8 @@ std::string lesson_param_problem(const LessonParam& p, const json& v) {
             break;
           }
           case LessonParamSyntax::RobotDescription: parse_robot_description(text); break;
+          // The planners of planner_choice's table, whichever it lists (the lesson's menu too).
+          case LessonParamSyntax::Planner: parse_planner_kind(text); break;
           case LessonParamSyntax::None: break;
         }
       } catch (const std::exception& e) {

@@ -38,6 +38,7 @@ const HideableAnswer kAnswers[] = {
       "/control_points/*/U_rep", "/control_points/*/tau", "/tau", "/F_att", "/F_rep", "/U_rep", "/tau_att", "/tau_rep",
       "/forces_table"}},
     {"path_length", "step-prm", {}, {"/path_length"}},
+    {"path_length", "compare", {}, {"/planners/*/path_length"}},
 };
 
 // "a,b" -> {"a", "b"}; "" -> {} (an empty piece between separators is kept: a bad word).
