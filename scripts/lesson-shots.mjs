@@ -57,6 +57,14 @@ const LESSONS = {
              'descent step by step, its local minima and random-walk escapes; for a polygon robot, a point ' +
              'in a cup, and the 2-link arm.',
   },
+  compare: {
+    link: 'steps=100000',
+    teaches: 'Two planners of those `cspacelab plan --planner` offers (PRM, RRT, RRT-Connect, …) on the same ' +
+             'scene and seed, side by side, stepped together or run to the end: each one\'s graph or tree, ' +
+             'its accepted and rejected samples and its path, with a table of samples, collision checks, ' +
+             'edges, path length and time; a narrow passage whose width is a slider; and an experiment ' +
+             'that plots each planner\'s success rate against its sample budget over many seeds.',
+  },
   analysis: {
     link: '',
     teaches: 'Why PRM works, in numbers: the failure bound of section 2.1 for the scene against n, with ' +
