@@ -1,7 +1,7 @@
 // The web budgets of issue 7, measured (a benchmark: it reports; only the size budgets, which
 // do not depend on the machine, fail it):
-//   wasm <= 1.8 MB (1.5 MB until the homework companion, 1.75 MB until an instructor's lock and
-//   hide: see docs/web.md, Budgets) and
+//   wasm <= 2.0 MB (1.5 MB until the homework companion, 1.75 MB until an instructor's lock and
+//   hide, 1.8 MB until the planners of issue 24: see docs/web.md, Budgets) and
 //   JS <= 250 KB uncompressed; first frame <= 1 s after navigation on localhost in headless
 //   Chromium.
 //   node tests/bench/web_budgets.mjs [--quick] [--runs N]
@@ -19,7 +19,7 @@ const args = process.argv.slice(2);
 const quick = args.includes('--quick');
 const runs = Number(args[args.indexOf('--runs') + 1]) || (quick ? 2 : 10);
 const KB = 1024;
-const budgets = { wasm: 1.8 * KB * KB, js: 250 * KB, firstFrameMs: 1000 };
+const budgets = { wasm: 2.0 * KB * KB, js: 250 * KB, firstFrameMs: 1000 };
 
 function size(file) {
   const bytes = fs.readFileSync(path.join(DIST, file));
