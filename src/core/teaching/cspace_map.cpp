@@ -133,6 +133,11 @@ struct ArmCSpaceMap::Scratch {
   explicit Scratch(std::size_t n) : v(n) {}
 };
 
+void cspace_pixel_span(double lo, double hi, int resolution, int& j0, int& j1) {
+  j0 = first_row(lo, resolution, false);
+  j1 = first_row(hi, resolution, true);
+}
+
 double cspace_pixel_angle(int index, int resolution) {
   return -kPi + (static_cast<double>(index) + 0.5) * (kTwoPi / static_cast<double>(resolution));
 }

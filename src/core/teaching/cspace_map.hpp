@@ -26,6 +26,9 @@ struct AngleInterval {
 /// The angle at the centre of pixel `index` of `resolution` across [-pi, pi):
 /// -pi + (index + 1/2) 2pi / resolution. Rasterisation, tests and the CLI all use this one.
 double cspace_pixel_angle(int index, int resolution);
+/// The pixels whose centre angles (cspace_pixel_angle) lie in the closed [lo, hi]: [j0, j1),
+/// empty when j1 <= j0. Decided by comparing with the centres themselves, not by rounding.
+void cspace_pixel_span(double lo, double hi, int resolution, int& j0, int& j1);
 
 class ArmCSpaceMap {
  public:
