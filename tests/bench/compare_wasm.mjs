@@ -1,13 +1,14 @@
-// Runs the PRM benchmark (or another: prm, rrt) natively and as wasm under node, and prints the
-// wasm/native ratio of our time per milestone (rrt: per solved query) for every row.
-//   node tests/bench/compare_wasm.mjs [build/native] [build/wasm] [prm|rrt]
+// Runs the PRM benchmark (or another: prm, rrt, volume) natively and as wasm under node, and prints
+// the wasm/native ratio of our time per milestone (rrt: per solved query; volume: per 3-D C-space
+// volume) for every row.
+//   node tests/bench/compare_wasm.mjs [build/native] [build/wasm] [prm|rrt|volume]
 import { execFileSync } from 'node:child_process';
 import path from 'node:path';
 
 const native = process.argv[2] || 'build/native';
 const wasm = process.argv[3] || 'build/wasm';
 const bench = process.argv[4] || 'prm';
-if (!['prm', 'rrt'].includes(bench)) throw new Error(`no benchmark '${bench}' (prm or rrt)`);
+if (!['prm', 'rrt', 'volume'].includes(bench)) throw new Error(`no benchmark '${bench}' (prm, rrt or volume)`);
 const unit = bench === 'rrt' ? 'us/query' : 'us/ms';
 const run = (cmd, args, env = {}) =>
   JSON.parse(execFileSync(cmd, args, { encoding: 'utf8', env: { ...process.env, ...env } }));
@@ -16,7 +17,8 @@ const run = (cmd, args, env = {}) =>
 // drifts over a minute, and one run of each compared two different machines. (Three rounds
 // still gave 1.16-1.34 in one run and 1.31-1.70 in the next, minutes apart: either side could
 // miss every quiet spell.)
-const fastest = (runs) => runs[0].map((row, i) => runs.reduce((best, r) => (r[i].ours_us < best.ours_us ? r[i] : best), row));
+const time = bench === 'volume' ? (row) => row.ms : (row) => row.ours_us;
+const fastest = (runs) => runs[0].map((row, i) => runs.reduce((best, r) => (time(r[i]) < time(best) ? r[i] : best), row));
 const nativeRuns = [], wasmRuns = [];
 for (let round = 0; round < 5; ++round) {
   nativeRuns.push(run(path.join(native, `tests/bench/cspacelab_bench_${bench}`), ['--json']));
@@ -24,6 +26,19 @@ for (let round = 0; round < 5; ++round) {
                     { NODE_OPTIONS: '--no-experimental-fetch' }));
 }
 const n = fastest(nativeRuns), w = fastest(wasmRuns);
+if (bench === 'volume') {
+  // Rows {scene, ms, brute_ms, free, differ}: the free fractions must be the same bits.
+  console.log(`${'volume'.padEnd(20)} ${'native ms'.padStart(10)} ${'wasm ms'.padStart(10)}  wasm/native`);
+  for (let i = 0; i < n.length; ++i) {
+    console.log(`${n[i].scene.padEnd(20)} ${n[i].ms.toFixed(2).padStart(10)} ${w[i].ms.toFixed(2).padStart(10)} ` +
+                `${(w[i].ms / n[i].ms).toFixed(2).padStart(11)}x`);
+    if (n[i].free !== w[i].free) {
+      console.log(`MISMATCH: free fraction ${n[i].free} natively, ${w[i].free} in wasm`);
+      process.exitCode = 1;
+    }
+  }
+  process.exit();
+}
 console.log(`${'scene'.padEnd(40)} samples ${('native ' + unit).padStart(15)} ${('wasm ' + unit).padStart(13)}  wasm/native`);
 for (let i = 0; i < n.length; ++i) {
   const ratio = w[i].ours_us / n[i].ours_us;
