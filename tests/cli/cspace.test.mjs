@@ -92,7 +92,7 @@ test('the lab scene at the default resolution, and resolution 1', () => {
 test('bad input: one line naming the problem, exit status 2', () => {
   const arm = tempScene(ARM);
   const file = outFile('x.pgm');
-  fails(/needs an arm2 robot, the scene's robot is 'point'/, 'cspace', scene('p12.json'), '--out', file);
+  fails(/needs an arm2 robot, a 3-link arm or a polygon robot, the scene's robot is 'point'/, 'cspace', scene('p12.json'), '--out', file);
   fails(/--resolution: '0' is not an integer in \[1, 8192\]/, 'cspace', arm, '--resolution', '0', '--out', file);
   fails(/--resolution: '8193' is not an integer in \[1, 8192\]/, 'cspace', arm, '--resolution', '8193', '--out', file);
   fails(/--resolution: 'many' is not an integer/, 'cspace', arm, '--resolution', 'many', '--out', file);
