@@ -16,7 +16,7 @@ namespace {
 const Command* const kCommands[] = {&kValidateCommand, &kCheckCommand,      &kDistanceCommand,   &kCspaceOfCommand,
                                     &kPlanCommand,     &kBoundCommand,      &kVisibilityCommand, &kExperimentCommand,
                                     &kCspaceCommand,   &kPotentialCommand,  &kDescendCommand,    &kHomeworkCommand,
-                                    &kExerciseCommand, &kLinkCommand};
+                                    &kExerciseCommand, &kLinkCommand,       &kAssignmentCommand};
 
 const Command* find_command(const std::string& name) {
   for (const Command* c : kCommands)

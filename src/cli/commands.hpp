@@ -36,6 +36,7 @@ extern const Command kDescendCommand;
 extern const Command kHomeworkCommand;
 extern const Command kExerciseCommand;
 extern const Command kLinkCommand;
+extern const Command kAssignmentCommand;
 
 /// Reads a whole file; UsageError naming the path if it cannot be read.
 std::string read_file(const std::string& path);
