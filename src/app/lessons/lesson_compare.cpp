@@ -546,7 +546,7 @@ class CompareLesson : public Lesson, private Stepper {
       param_slider(i ? kSamplesB : kSamplesA, "samples", c.samples, 0, 2000, ImGuiSliderFlags_AlwaysClamp);
     }
     if (planner_kind_info(c.kind).tree) {
-      {
+      if (c.kind == PlannerChoice::Kind::Rrt) {  // (RRT-Connect heads for the other tree, not the goal)
         const std::string param = "goal_bias_" + key;
         instructor::FixedParam fixed(param.c_str());
         param_slider(i ? kGoalBiasB : kGoalBiasA, "goal bias", c.goal_bias, 0.0, 1.0, "%.2f");
