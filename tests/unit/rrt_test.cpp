@@ -18,6 +18,7 @@
 #include "core/planning/planner_choice.hpp"
 #include "core/planning/rrt.hpp"
 #include "core/planning/rrt_connect.hpp"
+#include "core/teaching/work.hpp"
 
 using csl::config;
 
@@ -151,6 +152,27 @@ TEST_CASE("RRT with goal bias 1 on an empty square walks straight to the goal in
   CHECK(rrt.path().size() == 11);
   CHECK(rrt.path_length() == doctest::Approx(1.0));
   CHECK(rrt.samples_drawn() == 10);
+}
+
+TEST_CASE("a D shorter than a thousandth of the extent is taken as that; the work prices connects") {
+  const csl::CollisionWorld world(csl::PointRobot{}, {}, {0, 0}, {1, 1});
+  const double extent = csl::space_extent(world.space());
+  CHECK(extent == doctest::Approx(std::sqrt(2.0)));
+  CHECK(csl::tree_step(world.space(), 1e-9) == doctest::Approx(1e-3 * extent));
+  CHECK(csl::tree_step(world.space(), 0.05) == 0.05);
+  CHECK(csl::tree_step(world.space(), 0.0) == doctest::Approx(0.2 * extent));
+  // RRT-Connect with the shortest D: one connect across the empty square adds at most ~1000
+  // vertices, and the planner says D as used.
+  csl::RrtConnect planner(world, config({0.0, 0.0}), config({1.0, 1.0}), tree(1, 1, 1e-9));
+  planner.run();
+  CHECK(planner.step_size() == doctest::Approx(1e-3 * extent));
+  CHECK(planner.solved());
+  CHECK(planner.roadmap().vertices.size() <= 1010);
+  // What the CLI and the compare lesson price it at: 1 + extent / (2 D) edges per sample.
+  csl::TreeParams params;
+  params.step = 1e-9;
+  CHECK(csl::tree_edges_per_sample(world.space(), params, true) == doctest::Approx(501.0));
+  CHECK(csl::tree_edges_per_sample(world.space(), params, false) == 1.0);
 }
 
 TEST_CASE("RRT-Connect keeps two trees until they meet, and grows from both ends") {

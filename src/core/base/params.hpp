@@ -101,7 +101,7 @@ inline constexpr ParamSpec kGoalBias{"goal_bias", "goal-bias", false, 0, 1, 0.05
 /// (tree_step(), OMPL's default for its RRTs, so that both grow alike on the same scene).
 inline constexpr ParamSpec kTreeStep{"tree_step", "step", false, 0, kInf, 0, 0.01, "",
                                      "the longest extension of a tree, in the space's metric (0: a fifth of "
-                                     "the space's extent)"};
+                                     "the space's extent; at least a thousandth of it)"};
 
 // --- experiments (core/teaching/experiment.hpp, the PRM analysis lesson, cspacelab experiment) ---
 

@@ -19,7 +19,10 @@ double space_extent(const Space& space) {
   return std::sqrt(sum);
 }
 
-double tree_step(const Space& space, double requested) { return requested > 0.0 ? requested : 0.2 * space_extent(space); }
+double tree_step(const Space& space, double requested) {
+  const double extent = space_extent(space);
+  return requested > 0.0 ? std::max(requested, kMinTreeStepFraction * extent) : 0.2 * extent;
+}
 
 const char* phase_name(TreePhase p) {
   static const char* const kNames[] = {"endpoints", "growing", "query", "done"};
@@ -300,6 +303,12 @@ void TreePlanner::remove_edge(int edge) {
   const int was_join = join_edge_;
   join_edge_ = -1;
   if (edge == was_join) return;
+  // A tree edge of the path failed: the join it led to joins nothing now (one of its ends leaves
+  // its tree below), so it goes too; growing will find another.
+  if (was_join >= 0 && roadmap_.edges[static_cast<std::size_t>(was_join)].alive) {
+    roadmap_.edges[static_cast<std::size_t>(was_join)].alive = false;
+    --edges_alive_;
+  }
   // A tree edge: its child (created after its parent: the larger index) and every vertex below
   // it leave the tree. Parents come before children, so one pass in order finds them all.
   const int child = r.b, tree = tree_[static_cast<std::size_t>(child)];

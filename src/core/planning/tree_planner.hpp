@@ -38,7 +38,11 @@ struct TreeParams {
 /// The space's maximum extent as OMPL measures it: the length of the diagonal of its bounds,
 /// an angle's extent pi (half the way round, the farthest two angles are), weighted.
 double space_extent(const Space& space);
-/// D itself if > 0, else a fifth of space_extent() (OMPL's default for its RRTs).
+/// The shortest D a tree planner takes, as a fraction of space_extent(): one RRT-Connect connect
+/// then adds at most about a thousand vertices (a D of 1e-9 would add a billion, for ever).
+inline constexpr double kMinTreeStepFraction = 1e-3;
+/// D itself if > 0 (but at least kMinTreeStepFraction of space_extent()), else a fifth of
+/// space_extent() (OMPL's default for its RRTs).
 double tree_step(const Space& space, double requested);
 
 enum class TreePhase { Endpoints, Growing, Query, Done };

@@ -67,6 +67,10 @@ WorkEstimate expected_tree_work(const CollisionWorld& world, const TreeParams& p
   return w;
 }
 
+double tree_edges_per_sample(const Space& space, const TreeParams& params, bool connect) {
+  return connect ? 1.0 + space_extent(space) / (2.0 * tree_step(space, params.step)) : 1.0;
+}
+
 ExperimentWork expected_experiment_work(const CollisionWorld& world, const ExperimentParams& params) {
   PrmParams run;
   run.neighbors = params.neighbors;

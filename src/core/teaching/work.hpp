@@ -62,6 +62,9 @@ WorkEstimate expected_prm_work(const CollisionWorld& world, const PrmParams& par
 /// and `edges_per_sample` edge checks of length D (RRT: 1; RRT-Connect's connect adds more;
 /// the CLI counts 2), and a nearest-vertex search.
 WorkEstimate expected_tree_work(const CollisionWorld& world, const TreeParams& params, double edges_per_sample);
+/// The edge checks per sample to price a tree planner with: RRT 1 (and its new end); RRT-Connect
+/// 1 plus its connect's steps toward a vertex about half the space away, extent / (2 D).
+double tree_edges_per_sample(const Space& space, const TreeParams& params, bool connect);
 
 /// An experiment's expected work (experiment.hpp), in units.
 struct ExperimentWork {
