@@ -254,10 +254,7 @@ void PlannerSession::log_steps(EventLog& log, const std::string& ready) {
   }
   if (p.steps() > 0) {
     std::string line = p.describe(p.last_event(), shown_.scene);
-    // An instructor hid the path's length (instructor.hpp): PRM's "a path of 7 edges, length
-    // 1.2345" loses its length.
-    if (const std::size_t at = line.find(", length "); at != std::string::npos && instructor::hidden("path_length"))
-      line.erase(at, line.find_first_not_of("0123456789.e-+", at + 9) - at);
+    if (instructor::hidden("path_length")) line = without_lengths(line);
     log.add(p.steps(), line);
   }
   logged_steps_ = p.steps();
@@ -270,6 +267,17 @@ nlohmann::json running_json(const PlannerSession& session) {
   return {{"target", target == PlannerSession::kToEnd ? nlohmann::json(nullptr) : nlohmann::json(target)},
           {"progress", session.progress()},
           {"text", session.busy_text()}};
+}
+
+std::string without_lengths(std::string line) {
+  const std::string word = "length ";
+  for (std::size_t at = line.find(word); at != std::string::npos; at = line.find(word, at + 1)) {
+    const std::size_t from = at + word.size();
+    const std::size_t to = line.find_first_not_of("0123456789.e-+", from);
+    if (to == from) continue;  // "length" followed by words: no number to hide
+    line.replace(from, (to == std::string::npos ? line.size() : to) - from, "hidden");
+  }
+  return line;
 }
 
 std::string replaying_text(const PlannerSession& session) {

@@ -157,6 +157,11 @@ class PlannerSession final : public Stepper {
   long logged_steps_ = -1;
 };
 
+/// `line` (a planner's event in words) with every "length <number>" made "length hidden": what the
+/// log shows while an instructor hides the path's length (instructor.hpp); PRM's, the trees' and
+/// Lazy PRM's lines all name it so.
+std::string without_lengths(std::string line);
+
 /// The job for a lesson's state(): null, or {"target": steps|null (to the end), "progress"}.
 nlohmann::json running_json(const PlannerSession& session);
 /// The line over the faded planner while a replay catches up: "replaying to step 1200: 45%".

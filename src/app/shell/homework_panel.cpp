@@ -112,7 +112,11 @@ json HomeworkPanel::check(const std::string& answer) {
   Score& s = scores_[exercise_->id];
   if (checked_->readable) ++s.tried;
   if (checked_->correct && solved_.insert({exercise_->id, exercise_->seed}).second) ++s.right;
-  if (checked_->correct) instructor::solved(exercise_->id);  // reveal=after-answer
+  // reveal=after-answer: only an exercise answered right before a wrong answer showed its
+  // solution ("the answer is ..."), so that reading it off a wrong try reveals nothing.
+  const std::pair<std::string, std::uint64_t> key{exercise_->id, exercise_->seed};
+  if (checked_->readable && !checked_->correct) shown_.insert(key);
+  if (checked_->correct && !shown_.count(key)) instructor::solved(exercise_->id);
   return exercise_check_to_json(*checked_);
 }
 

@@ -52,6 +52,7 @@ class HomeworkPanel {
   std::function<void(const HomeworkProblem&, bool)> open_;
   std::function<void(const std::string&, const nlohmann::json&)> show_;
   std::set<std::pair<std::string, std::uint64_t>> solved_;  // (problem, seed) answered right
+  std::set<std::pair<std::string, std::uint64_t>> shown_;   // (problem, seed) whose solution a wrong answer showed
   std::string problem_;  // the open problem's id, "" for none
   std::optional<Exercise> exercise_;
   std::optional<ExerciseCheck> checked_;

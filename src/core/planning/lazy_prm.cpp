@@ -382,14 +382,17 @@ std::string LazyPrm::describe(const PlannerEvent& e, const Scene& scene) const {
                     e.path_length, e.candidates);
       break;
     case PlannerEvent::Kind::EdgeChecked:
-      std::snprintf(buf, sizeof buf, "path edge %d-%d checked exactly: free (%d evaluations)", e.vertex, e.other, e.evaluations);
+      std::snprintf(buf, sizeof buf, "path edge %d-%d checked (%s): free (%d evaluations)", e.vertex, e.other,
+                    params_.checker.name().c_str(), e.evaluations);
       break;
     case PlannerEvent::Kind::PathEdgeRemoved:
       std::snprintf(buf, sizeof buf, "path edge %d-%d collides at t = %.3f: removed, searching again", e.vertex, e.other,
                     e.collision_t);
       break;
     case PlannerEvent::Kind::PathFound:
-      std::snprintf(buf, sizeof buf, "every edge of the path proven free: %zu edges, length %.4f (%ld edges never checked)",
+      // (Proven only by the exact check: a grid or step checker's "free" may miss a collision.)
+      std::snprintf(buf, sizeof buf, "every edge of the path %s: %zu edges, length %.4f (%ld edges never checked)",
+                    params_.checker.kind == EdgeCheckerSpec::Kind::Bisection ? "proven free" : "passed the checker",
                     path_.size() - 1, e.path_length, edges_unchecked());
       break;
     case PlannerEvent::Kind::NoPath:
