@@ -120,6 +120,19 @@ test('Compare planners: step both, step back, run to the end, the passage, the e
   assert.match(await refusal(page, 'setParams', { passage: 0.9 }), /passage/);
   assert.ok(Math.abs(gap(await api(page, 'get_scene')) - 0.03) < 1e-12, 'a refused width changes nothing');
   assert.match(await api(page, 'describe'), /Planner A, prm: .*Planner B, rrt-connect: /);
+  // A scene of the student's, restored with its parameters (as a link or a snapshot does: the
+  // scene first), stays: the passage is then the slider's value alone.
+  const own = { version: 1, name: 'my maze', workspace: { min: [0, 0], max: [1, 1] }, robot: { type: 'point' },
+                obstacles: [{ type: 'disk', center: [0.5, 0.5], radius: 0.2 }], start: [0.1, 0.1], goal: [0.9, 0.9] };
+  const snap = await api(page, 'snapshot');
+  await api(page, 'restore', { ...snap, scene: own, params: { ...snap.params, passage: 0.05 } });
+  const kept = await api(page, 'get_scene');
+  assert.deepEqual(kept.obstacles, own.obstacles, 'the restored scene is not replaced by the passage');
+  assert.equal((await api(page, 'state')).params.passage, 0.05);
+  await api(page, 'set_params', { params: { passage: 0.03 } });
+  assert.deepEqual((await api(page, 'get_scene')).obstacles, own.obstacles, 'nor by a later passage from the API');
+  // The passage's own scene back (its width is the slider's, 0.03): the passage rebuilds it again.
+  await api(page, 'set_scene', { scene: narrow });
 
   // The experiment: the plot before, run, the plot after.
   await api(page, 'set_params', { params: { mode: 'experiment', passage: 0.12, trials: 6, budgets: [20, 60, 200] } });

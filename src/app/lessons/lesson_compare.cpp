@@ -41,6 +41,7 @@
 #include "core/planning/planner_text.hpp"
 #include "core/scene/narrow_passage.hpp"
 #include "core/teaching/experiment.hpp"
+#include "core/teaching/work.hpp"
 #include "imgui.h"
 
 namespace csl::app {
@@ -256,7 +257,11 @@ class CompareLesson : public Lesson, private Stepper {
     }
     if (run)
       if (const std::string problem = experiment_problem(budgets, trials); !problem.empty()) throw ApiError(problem);
-    const Scene scene = passage != passage_ ? narrow_passage_scene(passage) : scene_;
+    // The passage rebuilds the scene only while the scene is the passage's: a scene of the
+    // student's (edited, imported, or restored before its parameters: a link, a snapshot) stays,
+    // and the passage is then the slider's value alone. The slider itself replaces any scene.
+    const bool passage_scene = same_content(scene_, narrow_passage_scene(passage_));
+    const Scene scene = passage != passage_ && passage_scene ? narrow_passage_scene(passage) : scene_;
     for (PlannerChoice& c : choice) {
       c.seed = seed;
       try {
@@ -356,7 +361,22 @@ class CompareLesson : public Lesson, private Stepper {
   // What PRM's budgets say of `c` in `scene` (the tree planners check one edge a sample: their
   // samples' budget is the bound), or "".
   static std::string budget_problem(const PlannerChoice& c, const Scene& scene) {
-    if (planner_kind_info(c.kind).tree) return "";
+    if (planner_kind_info(c.kind).tree) {
+      // A short D makes each extension cheap but RRT-Connect's connects long: priced per sample.
+      const CollisionWorld world(scene);
+      const TreeParams t = tree_params(c);
+      const double work =
+          expected_tree_work(world, t, tree_edges_per_sample(world.space(), t, c.kind == PlannerChoice::Kind::RrtConnect))
+              .total();
+      if (work <= kLabMaxWork) return "";
+      char text[300];
+      std::snprintf(text, sizeof text,
+                    "%s with %d samples and step %g means about %s of work, more than the lab's %s: take fewer "
+                    "samples or a longer step",
+                    planner_kind_info(c.kind).name, c.samples, tree_step(world.space(), c.step),
+                    work_text(work).c_str(), work_text(kLabMaxWork).c_str());
+      return text;
+    }
     PrmParams p;
     p.samples = c.samples;
     p.neighbors = c.kind == PlannerChoice::Kind::PrmStar ? NeighborRule::parse("prm*") : c.neighbors;
@@ -515,8 +535,7 @@ class CompareLesson : public Lesson, private Stepper {
         if (s.session->version() == s.logged_version) continue;
         const Planner& p = s.session->shown();
         std::string line = std::string(kSideNames[i]) + ": " + p.describe(p.last_event(), s.session->planned_scene());
-        if (const std::size_t at = line.find(", length "); at != std::string::npos && instructor::hidden("path_length"))
-          line.erase(at, line.find_first_not_of("0123456789.e-+", at + 9) - at);
+        if (instructor::hidden("path_length")) line = without_lengths(line);
         log.add(p.steps(), line);
       }
     }
