@@ -18,12 +18,6 @@ namespace {
 // The largest 3-D volume written: 2^27 cells, 128 MiB (512^3; 1024 x 1024 x 128).
 constexpr long long kMaxVolumeCells = 1LL << 27;
 constexpr long long kMaxVolumeSide = 1024;
-// The most work a volume may take, in the units of check_volume_work: about 10 s natively at
-// worst (measured: 200 obstacles, a third of them concave, and an L-shaped robot, about 800
-// pieces a slice: 512 x 512 x 256, 1.05e8 units, took 2.3 s). The T^3 estimate ignores the
-// pruning by reach, which makes most columns far cheaper.
-constexpr double kMaxVolumeWork = 4e8;
-
 void write_bytes(const std::string& path, const std::string& header, const std::vector<std::uint8_t>& bytes) {
   std::ofstream file(path, std::ios::binary | std::ios::trunc);
   if (!file) throw UsageError(path + ": cannot write file");
@@ -85,29 +79,13 @@ nlohmann::ordered_json slice_json(const Scene& scene, double value, int resoluti
   return {{"robot", "arm"}, {"theta1", value}, {"link1_blocked", s.all_blocked()}, {"columns", columns}};
 }
 
-// The work of a volume, refused past kMaxVolumeWork (the units are in the help below): the
-// sizes alone do not bound it, a scene of 1000 concave 256-gons has 250000 pieces a slice.
-void check_volume_work(const Scene& scene, int resolution, int slices) {
-  double work;
-  std::string what;
-  if (const auto* polygon = std::get_if<PolygonRobot>(&scene.robot)) {
-    const double pieces = static_cast<double>(Se2CObstacles(*polygon, scene.obstacles).pieces_per_slice());
-    work = pieces * slices * resolution;
-    what = significant(pieces) + " C-obstacle pieces a slice x " + std::to_string(slices) + " slices x " +
-           std::to_string(resolution) + " rows";
-  } else {
-    double edges = 0.0;
-    for (const Obstacle& o : scene.obstacles) {
-      if (const auto* g = std::get_if<PolygonObstacle>(&o)) edges += static_cast<double>(g->vertices.size());
-      else edges += std::holds_alternative<Wall>(o) ? 6.0 : 1.0;  // a wall: 2 end disks, a 4-edge rectangle
-    }
-    work = edges * resolution * resolution * slices;
-    what = significant(edges) + " obstacle edges x " + std::to_string(resolution) + "^2 columns x " +
-           std::to_string(slices) + " slices";
-  }
-  if (work > kMaxVolumeWork)
-    throw UsageError("the volume's work is " + what + " = " + significant(work) + ", more than the limit of " +
-                     significant(kMaxVolumeWork) + ": lower --resolution or --slices");
+// Refused past kMaxVolumeWork with the figures (core/teaching/cspace_volume.hpp prices it).
+void check_cspace_work(const Scene& scene, int resolution, int slices) {
+  const VolumeWork w = cspace_volume_work(scene, resolution, slices);
+  if (w.units > kMaxVolumeWork)
+    throw UsageError(std::string(slices == 0 ? "the slice's" : "the volume's") + " work is " + w.text + " = " +
+                     significant(w.units) + ", more than the limit of " + significant(kMaxVolumeWork) + ": lower " +
+                     (slices == 0 ? "--resolution or simplify the scene" : "--resolution or --slices"));
 }
 
 int run_volume(const Scene& scene, int resolution, int slices, const std::string& out, std::ostream& os) {
@@ -182,6 +160,7 @@ int run_cspace(Args& args, std::ostream& os) {
       throw UsageError("--slice: expected " + axis + "=VALUE for the scene's " + (is_se2 ? "polygon robot" : "3-link arm") +
                        ", got '" + printable(*slice_text, 60) + "'");
     const double value = wrap_angle(parse_number(slice_text->substr(eq + 1), "--slice " + axis));
+    check_cspace_work(scene, resolution, 0);
     os << slice_json(scene, value, resolution).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     return 0;
   }
@@ -193,7 +172,7 @@ int run_cspace(Args& args, std::ostream& os) {
     throw UsageError("--resolution " + std::to_string(resolution) + " --slices " + std::to_string(slices) + ": " +
                      std::to_string(cells) + " cells, more than the limit of " + std::to_string(kMaxVolumeCells) +
                      " (128 MiB)");
-  check_volume_work(scene, resolution, slices);
+  check_cspace_work(scene, resolution, slices);
   return run_volume(scene, resolution, slices, *out, os);
 }
 
@@ -228,9 +207,10 @@ const Command kCspaceCommand{
     "    is a (theta2, theta3) slice: all blocked where link 1 collides, else the exact 2-link\n"
     "    map of links 2 and 3 from link 1's end (angles relative, as the arm defines them).\n"
     "    Defaults R = 96, K = R (a cube).\n"
-    "  The work is priced first and refused past 4e8 units: C-obstacle pieces a slice x K x R\n"
-    "  (SE(2); the pieces are the body's convex pieces x the obstacles') or obstacle edges x R^2\n"
-    "  x K (T^3; a disk is 1 edge, a wall 6, a polygon its vertices).\n"
+    "  The work is priced first and refused past 4e8 units: (4 x vertex sums + C-obstacle pieces\n"
+    "  x R) a slice x K (SE(2); the pieces are the body's convex pieces x the obstacles', and\n"
+    "  each piece's hull is taken of |body piece| x |obstacle piece| vertex sums) or obstacle edges x\n"
+    "  R^2 x K (T^3; a disk is 1 edge, a wall 6, a polygon its vertices).\n"
     "  FILE holds R*R*K bytes, 255 = free, 0 = C-obstacle, the first axis fastest: the cell\n"
     "  (i, j, k) is byte (k*R + j)*R + i, and its centre on an axis of N cells over [min, max]\n"
     "  is min + (index + 1/2)(max - min)/N. FILE.json is its header:\n"
@@ -249,7 +229,9 @@ const Command kCspaceCommand{
     "    drawing (corner arcs in steps of at most pi/16).\n"
     "  arm: {\"robot\": \"arm\", \"theta1\": V, \"link1_blocked\": b, \"columns\": [{\"theta2\": t,\n"
     "    \"blocked_theta3\": [[lo, hi], ...]}]}: for R columns theta2 = -pi + (i + 1/2) 2pi/R,\n"
-    "    the exact blocked theta3 as sorted closed intervals in [-pi, pi].\n\n"
+    "    the exact blocked theta3 as sorted closed intervals in [-pi, pi].\n"
+    "  A slice is priced as one slice of the volume (SE(2): 64 units a piece for its outline;\n"
+    "  T^3: obstacle edges x R columns) and refused past the same 4e8.\n\n"
     "A robot that is not arm2, a 3-link arm or a polygon, a bad R, K or slice, a volume over a\n"
     "limit (cells or work) or an unwritable FILE is a one-line error with exit status 2.\n",
     run_cspace};

@@ -230,7 +230,7 @@ test('the work of a volume is priced first: many concave obstacles at a large si
   const file = outFile('big.raw');
   const L = [[-0.05, -0.05], [0.1, -0.05], [0.1, 0], [0, 0], [0, 0.08], [-0.05, 0.08]];
   const se2 = tempScene({ ...SQUARE, robot: { type: 'polygon', vertices: L }, obstacles: stars });
-  fails(/the volume's work is \d+ C-obstacle pieces a slice x 512 slices x 512 rows = [0-9.e+]+, more than the limit of 4e\+08/,
+  fails(/the volume's work is 4 x [0-9.e+]+ vertex sums \+ \d+ C-obstacle pieces x 512 rows a slice x 512 slices = [0-9.e+]+, more than the limit of 4e\+08/,
         'cspace', se2, '--resolution', '512', '--slices', '512', '--out', file);
   const arm = tempScene({ ...ARM3, obstacles: stars });
   fails(/the volume's work is 2400 obstacle edges x 256\^2 columns x 256 slices = [0-9.e+]+, more than the limit of 4e\+08/,
@@ -239,4 +239,34 @@ test('the work of a volume is priced first: many concave obstacles at a large si
   // A size within the limit runs.
   const ok = json('cspace', se2, '--resolution', '32', '--slices', '8', '--out', file);
   assert.deepEqual(ok.dims, [32, 32, 8]);
+});
+
+const ngon = (cx, cy, r, n, inner = r) => Array.from({ length: n }, (_, v) => {
+  const t = (2 * Math.PI * v) / n, rr = v % 2 ? inner : r;
+  return [cx + rr * Math.cos(t), cy + rr * Math.sin(t)];
+});
+
+test('the work is priced by vertex sums too: one convex piece against another can be the whole cost', () => {
+  // A convex 32-gon robot among 1000 convex 256-gons: only 1000 pieces a slice, but each is
+  // the hull of 32 x 256 vertex sums (8.2e6 a slice, about 37 s natively at the default size, by the 3.7 s measured with 100).
+  const obstacles = Array.from({ length: 1000 }, (_, k) =>
+    ({ type: 'polygon', vertices: ngon(0.02 + 0.032 * (k % 30), 0.02 + 0.032 * (Math.floor(k / 30) % 30), 0.01, 256) }));
+  const scene = tempScene({ ...SQUARE, robot: { type: 'polygon', vertices: ngon(0, 0, 0.03, 32) }, obstacles });
+  const file = outFile('convex.raw');
+  fails(/the volume's work is 4 x 8\.192e\+06 vertex sums \+ 1000 C-obstacle pieces x 128 rows a slice x 64 slices = 2\.105e\+09, more than the limit of 4e\+08/,
+        'cspace', scene, '--out', file);
+  assert.equal(fs.existsSync(file), false);
+  // One slice of it is within the limit: 4 x 8.2e6 + 1000 x 64.
+  const slice = json('cspace', scene, '--slice', 'theta=0');
+  assert.equal(slice.pieces.length, 1000);
+});
+
+test('one --slice is priced before it runs: a concave robot among 1000 concave 256-gons is refused', () => {
+  // The robot's convex pieces x each star's x 1000 stars = 4.6e6 pieces, each an outline of
+  // 64 units: 4.9e8 with the sums, where the output alone would be gigabytes.
+  const obstacles = Array.from({ length: 1000 }, (_, k) =>
+    ({ type: 'polygon', vertices: ngon(0.02 + 0.032 * (k % 30), 0.02 + 0.032 * (Math.floor(k / 30) % 30), 0.01, 256, 0.006) }));
+  const scene = tempScene({ ...SQUARE, robot: { type: 'polygon', vertices: ngon(0, 0, 0.03, 32, 0.02) }, obstacles });
+  fails(/the slice's work is 4 x [0-9.e+]+ vertex sums \+ 4\.572e\+06 C-obstacle pieces x 64 a slice = [0-9.e+]+, more than the limit of 4e\+08: lower --resolution or simplify the scene/,
+        'cspace', scene, '--slice', 'theta=0.5');
 });

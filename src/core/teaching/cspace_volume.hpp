@@ -5,8 +5,10 @@
 // cell's centre, not the sampled collision checker: a slice's pieces or intervals are computed
 // once and filled in runs along x (SE(2)) or theta3 (T^3).
 #include <cstdint>
+#include <string>
 #include <vector>
 
+#include "core/scene/scene.hpp"
 #include "core/teaching/arm3_slice.hpp"
 #include "core/teaching/se2_slice.hpp"
 
@@ -33,5 +35,24 @@ CSpaceVolume se2_volume(const Se2CObstacles& cobstacles, const Vec2& lo, const V
 /// cspace_pixel_angle(k, slices): each k is the (theta2, theta3) slice at that theta1, laid out
 /// like the 2-link arm's map (columns the first angle, rows the second). n, slices >= 1.
 CSpaceVolume arm3_volume(const Arm3Slices& arm, int n, int slices);
+
+/// The expected work of a volume or of one exact slice, priced before it runs: the sizes alone
+/// do not bound it (1000 concave 256-gons make 250000 pieces a slice; one convex 256-gon
+/// against another is a single piece of 65536 vertex sums). Units: one row of one piece
+/// (about 22 ns natively); `text` says how the figure was made, for a refusal's message.
+struct VolumeWork {
+  double units = 0.0;
+  std::string text;
+};
+/// The most work a volume or slice may take: about 10 s natively at worst (measured: 200
+/// obstacles, a third of them concave, and an L-shaped robot, about 800 pieces a slice: 512 x
+/// 512 x 256, 1.05e8 units, took 2.3 s). The T^3 estimate ignores the pruning by reach, which
+/// makes most columns far cheaper.
+inline constexpr double kMaxVolumeWork = 4e8;
+/// SE(2) (a polygon robot): (4 x vertex sums + pieces x R) a slice x K; T^3 (a 3-link arm):
+/// obstacle edges x R^2 x K (a disk 1 edge, a wall 6, a polygon its vertices). slices == 0
+/// prices one slice as `cspacelab cspace --slice` makes it (SE(2): 64 units a piece for its
+/// outline; T^3: edges x R columns of intervals). Other robots: 0.
+VolumeWork cspace_volume_work(const Scene& scene, int resolution, int slices);
 
 }  // namespace csl

@@ -219,6 +219,13 @@ Se2CObstacles::Se2CObstacles(const PolygonRobot& robot, const std::vector<Obstac
   }
 }
 
+double Se2CObstacles::sums_per_slice() const {
+  double body = 0.0, obstacles = 0.0;
+  for (const Polygon& piece : body_) body += static_cast<double>(piece.size());
+  for (const ObstaclePiece& o : obstacles_) obstacles += static_cast<double>(o.points.size());
+  return body * obstacles;  // the sum over pairs of |b| |o| factors
+}
+
 void Se2CObstacles::slice(double theta, std::vector<RoundedPolygon>& out) const {
   out.clear();
   double s, c;

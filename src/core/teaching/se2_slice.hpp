@@ -74,6 +74,10 @@ class Se2CObstacles {
 
   /// How many pieces every slice has (body pieces x obstacle pieces).
   std::size_t pieces_per_slice() const { return body_.size() * obstacles_.size(); }
+  /// How many vertex sums every slice forms (each piece is the hull of |body piece| x
+  /// |obstacle piece| sums): what prices a slice beside its pieces, since one convex 256-gon
+  /// against another is one piece but 65536 sums.
+  double sums_per_slice() const;
 
  private:
   struct ObstaclePiece {
