@@ -5,7 +5,7 @@
 // undo brings the original back.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { withBrowser, withPage, collectErrors, openLab, click, waitFrames, api, pageButton, screenshot,
+import { withBrowser, withPage, collectErrors, openLab, click, waitFrames, api, pixelDifference, pageButton, screenshot,
          drawDisk, chord, worldToPage, inspectPng, LOOKS } from './lib/harness.mjs';
 
 const VIEWPORT = { width: 1280, height: 800 };
@@ -68,30 +68,10 @@ async function viewPicture(page, name) {
   return page.screenshot({ clip: await viewRect(page, name) });
 }
 
-/** How two pictures of the same size differ: the share of pixels off by more than `levels` in a channel. */
+/** How two pictures of the same size differ: {size, share} with share the part of the pixels off by more than `levels` in a channel. */
 async function difference(browser, a, b, levels = 40) {
-  const page = await browser.newPage();
-  try {
-    return await page.evaluate(async ({ a, b, levels }) => {
-      const pixels = async (b64) => {
-        const img = new Image();
-        img.src = 'data:image/png;base64,' + b64;
-        await img.decode();
-        const c = new OffscreenCanvas(img.width, img.height).getContext('2d');
-        c.drawImage(img, 0, 0);
-        return { w: img.width, h: img.height, data: c.getImageData(0, 0, img.width, img.height).data };
-      };
-      const [p, q] = [await pixels(a), await pixels(b)];
-      if (p.w !== q.w || p.h !== q.h) return { size: false, share: 1 };
-      let off = 0;
-      for (let i = 0; i < p.data.length; i += 4)
-        if (Math.max(Math.abs(p.data[i] - q.data[i]), Math.abs(p.data[i + 1] - q.data[i + 1]),
-                     Math.abs(p.data[i + 2] - q.data[i + 2])) > levels) ++off;
-      return { size: true, share: off / (p.w * p.h) };
-    }, { a: a.toString('base64'), b: b.toString('base64'), levels });
-  } finally {
-    await page.close();
-  }
+  const d = await pixelDifference(browser, a, b, levels);
+  return { size: !d.size, share: d.size ? 1 : d.differ };
 }
 
 /** The Share button's link (a real click), the dialog closed again. */

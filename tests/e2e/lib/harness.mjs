@@ -429,9 +429,21 @@ export async function expectGolden(page, browser, name, control, { share = 0.01,
     return;
   }
   assert.ok(fs.existsSync(reference), `no reference ${reference} (CSPACELAB_UPDATE_GOLDEN=1 writes one)`);
+  const result = await pixelDifference(browser, png, fs.readFileSync(reference), levels);
+  assert.ok(!result.size, `${name}: ${result.size}`);
+  assert.ok(result.differ <= share, `${name}: ${(100 * result.differ).toFixed(2)} % of the pixels differ by more than ${levels} ` +
+            `(at most ${100 * share} %); see ${path.join(ARTIFACTS, name + '.png')} against ${reference}`);
+}
+
+/**
+ * How two PNG pictures differ, decoded in a page of `browser`: {differ, worst} with differ the
+ * share of pixels off by more than `levels` in a channel and worst the largest channel
+ * difference, or {size: "W x H against W x H"} when their sizes differ.
+ */
+export async function pixelDifference(browser, a, b, levels = 48) {
   const compare = await browser.newPage();
   try {
-    const result = await compare.evaluate(async ({ a, b, levels }) => {
+    return await compare.evaluate(async ({ a, b, levels }) => {
       const pixels = async (b64) => {
         const img = new Image();
         img.src = 'data:image/png;base64,' + b64;
@@ -449,10 +461,7 @@ export async function expectGolden(page, browser, name, control, { share = 0.01,
         if (d > levels) ++differ;
       }
       return { differ: differ / (x.w * x.h), worst };
-    }, { a: png.toString('base64'), b: fs.readFileSync(reference).toString('base64'), levels });
-    assert.ok(!result.size, `${name}: ${result.size}`);
-    assert.ok(result.differ <= share, `${name}: ${(100 * result.differ).toFixed(2)} % of the pixels differ by more than ${levels} ` +
-              `(at most ${100 * share} %); see ${path.join(ARTIFACTS, name + '.png')} against ${reference}`);
+    }, { a: a.toString('base64'), b: b.toString('base64'), levels });
   } finally {
     await compare.close();
   }
