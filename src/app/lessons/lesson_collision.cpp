@@ -477,7 +477,10 @@ class CollisionLesson : public Lesson, private Stepper {
     // Only once the piece is small enough for the zoom to show more than the row above (x2 at least).
     if (!now || now->t0 == now->t1 || now->t1 - now->t0 > 0.125) {
       dl->AddText(ImVec2(o.x + 4, row3 - 8), theme::kGridMajor, "zoom");
-      dl->AddText(ImVec2(x0, row3 - 8), theme::kGridMajor, "(the piece under test, magnified, once it is small)");
+      // A phone's strip is too narrow for the long caption (it ran off the right edge).
+      const char* caption = "(the piece under test, magnified, once it is small)";
+      if (ImGui::CalcTextSize(caption).x > x1 + 30.0f - x0) caption = "(magnified once small)";
+      dl->AddText(ImVec2(x0, row3 - 8), theme::kGridMajor, caption);
       return;
     }
     const double width = now->t1 - now->t0, mid = 0.5 * (now->t0 + now->t1);
