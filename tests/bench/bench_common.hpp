@@ -1,8 +1,11 @@
 #pragma once
-// Shared pieces of the benchmarks: the disk worlds they run in, a timer, and the report.
+// Shared pieces of the benchmarks: the disk worlds they run in, the scenes the planner benches
+// race OMPL on, a timer, medians, and the report.
 // Benchmarks print figures and ratios against a peer measured in the same run; they assert
 // nothing about time (ctest runs them only in a quick mode, to keep them working).
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <chrono>
 #include <functional>
 #include <cstdio>
@@ -12,6 +15,7 @@
 
 #include "core/base/rng.hpp"
 #include "core/checking/collision.hpp"
+#include "core/planning/tree_planner.hpp"
 
 namespace bench {
 
@@ -24,6 +28,51 @@ inline std::vector<csl::Obstacle> random_disks(std::uint64_t seed, int count, do
     out.push_back(csl::Disk{{x, y}, rng.uniform(r_lo, r_hi)});
   }
   return out;
+}
+
+/// A scene of the planner benchmarks (prm, rrt, lazy): a name for the table and our world.
+struct PlannerScene {
+  std::string name;
+  csl::CollisionWorld world;
+  /// The edge checks' resolution both sides use: 1% of the extent (space_extent(): OMPL's own
+  /// default fraction of its extent), an absolute D (bench_ompl.hpp says how OMPL takes it).
+  double resolution() const { return 0.01 * csl::space_extent(world.space()); }
+};
+
+/// The scenes, one per kind of C-space the lab has: the point among 20 disks (R^2), the 2-link
+/// arm among 6 (T^2), and with `all` a polygon robot among 12 disks (SE(2)) and a 4-link arm
+/// among the 2-link arm's 6 disks (T^4). All in the unit square.
+inline std::vector<PlannerScene> planner_scenes(bool all) {
+  std::vector<PlannerScene> out;
+  out.push_back({"point, 20 disks, R^2", csl::CollisionWorld(csl::PointRobot{}, random_disks(7, 20), {0, 0}, {1, 1})});
+  out.push_back({"2-link arm, 6 disks, T^2",
+                 csl::CollisionWorld(csl::ArmRobot{{0.5, 0.5}, 0.3, 0.2}, random_disks(11, 6, 0.03, 0.06), {0, 0}, {1, 1})});
+  if (!all) return out;
+  // An arrow 0.14 long and 0.06 wide: it must turn to pass between some disks.
+  const csl::Polygon arrow = {{-0.07, -0.03}, {0.03, -0.03}, {0.07, 0.0}, {0.03, 0.03}, {-0.07, 0.03}};
+  out.push_back({"polygon, 12 disks, SE(2)",
+                 csl::CollisionWorld(csl::make_polygon_robot(arrow), random_disks(13, 12, 0.03, 0.07), {0, 0}, {1, 1})});
+  out.push_back({"4-link arm, 6 disks, T^4",
+                 csl::CollisionWorld(csl::ArmRobot{{0.5, 0.5}, {0.15, 0.12, 0.1, 0.08}}, random_disks(11, 6, 0.03, 0.06),
+                                     {0, 0}, {1, 1})});
+  return out;
+}
+
+/// The first free configuration a sampler seeded with `seed` draws.
+inline csl::Config first_free(const csl::CollisionWorld& world, std::uint64_t seed) {
+  csl::Rng rng(seed);
+  for (;;) {
+    const csl::Config q = world.space().sample(rng);
+    if (world.is_free(q)) return q;
+  }
+}
+
+/// The median of v (NaN when empty): the benches report medians of repeated runs, as the machine
+/// is shared and one disturbed run moves a mean (or a sum) by several times.
+inline double median(std::vector<double> v) {
+  if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
+  std::sort(v.begin(), v.end());
+  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
 }
 
 class Timer {

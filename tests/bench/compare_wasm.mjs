@@ -1,24 +1,30 @@
-// Runs the PRM benchmark (or another: prm, rrt, volume) natively and as wasm under node, and prints
-// the wasm/native ratio of our time per milestone (rrt: per solved query; volume: per 3-D C-space
-// volume) for every row.
-//   node tests/bench/compare_wasm.mjs [build/native] [build/wasm] [prm|rrt|volume]
+// Runs the PRM benchmark (or another: prm, rrt, lazy, volume) natively and as wasm under node, and
+// prints the wasm/native ratio of our time per milestone (rrt, lazy: per solved query; volume: per
+// 3-D C-space volume) for every row: the ratio of the medians over the rounds, and of the fastest.
+//   node tests/bench/compare_wasm.mjs [build/native] [build/wasm] [prm|rrt|lazy|volume]
 import { execFileSync } from 'node:child_process';
 import path from 'node:path';
 
 const native = process.argv[2] || 'build/native';
 const wasm = process.argv[3] || 'build/wasm';
 const bench = process.argv[4] || 'prm';
-if (!['prm', 'rrt', 'volume'].includes(bench)) throw new Error(`no benchmark '${bench}' (prm, rrt or volume)`);
-const unit = bench === 'rrt' ? 'us/query' : 'us/ms';
+if (!['prm', 'rrt', 'lazy', 'volume'].includes(bench)) throw new Error(`no benchmark '${bench}' (prm, rrt, lazy or volume)`);
+const unit = bench === 'rrt' || bench === 'lazy' ? 'us/query' : 'us/ms';
 const run = (cmd, args, env = {}) =>
   JSON.parse(execFileSync(cmd, args, { encoding: 'utf8', env: { ...process.env, ...env } }));
 
-// Native and wasm take turns, five rounds, each row keeping its fastest: this machine's speed
-// drifts over a minute, and one run of each compared two different machines. (Three rounds
-// still gave 1.16-1.34 in one run and 1.31-1.70 in the next, minutes apart: either side could
-// miss every quiet spell.)
+// Native and wasm take turns, five rounds: this machine's speed drifts over a minute, and one run
+// of each compared two different machines. (Three rounds still gave 1.16-1.34 in one run and
+// 1.31-1.70 in the next, minutes apart: either side could miss every quiet spell.) Each row keeps
+// its fastest round, and its median round's time: the machine is shared, and the median is what
+// a load that comes and goes leaves of each side.
 const time = bench === 'volume' ? (row) => row.ms : (row) => row.ours_us;
 const fastest = (runs) => runs[0].map((row, i) => runs.reduce((best, r) => (time(r[i]) < time(best) ? r[i] : best), row));
+const median = (runs) => runs[0].map((row, i) => {
+  const times = runs.map((r) => time(r[i])).sort((a, b) => a - b);
+  const m = times.length >> 1;
+  return times.length % 2 ? times[m] : 0.5 * (times[m - 1] + times[m]);
+});
 const nativeRuns = [], wasmRuns = [];
 for (let round = 0; round < 5; ++round) {
   nativeRuns.push(run(path.join(native, `tests/bench/cspacelab_bench_${bench}`), ['--json']));
@@ -26,6 +32,7 @@ for (let round = 0; round < 5; ++round) {
                     { NODE_OPTIONS: '--no-experimental-fetch' }));
 }
 const n = fastest(nativeRuns), w = fastest(wasmRuns);
+const nMedian = median(nativeRuns), wMedian = median(wasmRuns);
 if (bench === 'volume') {
   // Rows {scene, ms, brute_ms, free, differ}: the free fractions must be the same bits.
   console.log(`${'volume'.padEnd(20)} ${'native ms'.padStart(10)} ${'wasm ms'.padStart(10)}  wasm/native`);
@@ -39,11 +46,13 @@ if (bench === 'volume') {
   }
   process.exit();
 }
-console.log(`${'scene'.padEnd(40)} samples ${('native ' + unit).padStart(15)} ${('wasm ' + unit).padStart(13)}  wasm/native`);
+console.log(`${'scene'.padEnd(40)} samples ${('native ' + unit).padStart(15)} ${('wasm ' + unit).padStart(13)}  wasm/native` +
+            '  (fastest: native, wasm, wasm/native)');
 for (let i = 0; i < n.length; ++i) {
-  const ratio = w[i].ours_us / n[i].ours_us;
-  console.log(`${n[i].scene.padEnd(40)} ${String(n[i].samples).padStart(7)} ${n[i].ours_us.toFixed(3).padStart(15)} ` +
-              `${w[i].ours_us.toFixed(3).padStart(13)} ${ratio.toFixed(2).padStart(11)}x`);
+  const ratio = wMedian[i] / nMedian[i];
+  console.log(`${n[i].scene.padEnd(40)} ${String(n[i].samples).padStart(7)} ${nMedian[i].toFixed(3).padStart(15)} ` +
+              `${wMedian[i].toFixed(3).padStart(13)} ${ratio.toFixed(2).padStart(11)}x` +
+              `  (${n[i].ours_us.toFixed(3)}, ${w[i].ours_us.toFixed(3)}, ${(w[i].ours_us / n[i].ours_us).toFixed(2)}x)`);
   if (n[i].milestones !== w[i].milestones || n[i].checks !== w[i].checks) {
     console.log(`MISMATCH: ${n[i].milestones} milestones (solved), ${n[i].checks} checks natively; ` +
                 `${w[i].milestones}, ${w[i].checks} in wasm`);

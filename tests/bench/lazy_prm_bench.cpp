@@ -1,26 +1,27 @@
 // Lazy PRM: our LazyPrm and OMPL's LazyPRM in the same run, per solved query and per collision
 // check.
 //
-//   cspacelab_bench_lazy [--quick]
+//   cspacelab_bench_lazy [--quick] [--json]
 //
-// Scenes: those of prm_bench.cpp (the point robot among 20 disks in [0,1]^2, the 2-link arm on
-// T^2 among 6 disks), one query each (the first free configurations of seeds 1 and 2). Both
-// planners use k = 10 nearest neighbours, the same validity function (our CollisionWorld::is_free,
-// counted) and the same edge-check resolution: OMPL's DiscreteMotionValidator at its default 1%
-// of the space's extent, our step:D checker with that D. The sample budget is n for both: ours
+// Scenes: bench_common.hpp's planner_scenes() (R^2, T^2, SE(2), T^4), one query each (the first
+// free configurations of seeds 1 and 2). Both planners use k = 10 nearest neighbours, the same
+// validity function (our CollisionWorld::is_free, counted) and the same edge-check resolution D
+// (1% of the extent): OMPL's DiscreteMotionValidator with D (bench_ompl.hpp), our step:D
+// checker. The sample budget is n for both: ours
 // draws n samples, then searches and checks; OMPL's LazyPRM adds milestones one at a time and
 // stops at its first proven path, or at n milestones (a termination condition on its milestone
 // count, never on time). Reported: microseconds per solved query (the median over the runs that
 // solved), per collision check (the median of a run's time over the configurations it tested: a
 // sample, a point along an edge, or for ours a clearance), the checks per query, and the ratio
-// OMPL / ours. It fails (exit 1) when
-// a planner solves fewer than half of its queries (the figures would compare failures).
+// OMPL / ours. It fails (exit 1) when a planner solves fewer than half of its queries (the
+// figures would compare failures). With --json it runs ours alone and prints its rows for
+// compare_wasm.mjs (built for wasm, without OMPL, it always runs ours alone).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <functional>
-#include <limits>
+#include <cstring>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -28,12 +29,13 @@
 #include "core/planning/lazy_prm.hpp"
 
 #ifdef CSPACELAB_WITH_OMPL
-#include <ompl/base/SpaceInformation.h>
-#include <ompl/base/spaces/RealVectorStateSpace.h>
-#include <ompl/base/spaces/SO2StateSpace.h>
+#include <ompl/base/ProblemDefinition.h>
+#include <ompl/base/ScopedState.h>
 #include <ompl/geometric/planners/prm/LazyPRM.h>
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
+
+#include "bench_ompl.hpp"
 #endif
 
 namespace {
@@ -47,13 +49,8 @@ struct Result {
   long milestones = 0;  ///< all runs
   std::vector<double> query_us, check_us;  ///< per run: its time if solved; its time per check
 
-  static double median(std::vector<double> v) {
-    if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
-    std::sort(v.begin(), v.end());
-    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-  }
-  double us_per_query() const { return median(query_us); }
-  double us_per_check() const { return median(check_us); }
+  double us_per_query() const { return bench::median(query_us); }
+  double us_per_check() const { return bench::median(check_us); }
   void add(const Result& r) {
     runs += r.runs;
     solved += r.solved;
@@ -63,14 +60,6 @@ struct Result {
     if (r.checks) check_us.push_back(1e6 * r.seconds / static_cast<double>(r.checks));
   }
 };
-
-csl::Config first_free(const csl::CollisionWorld& world, std::uint64_t seed) {
-  csl::Rng rng(seed);
-  for (;;) {
-    const csl::Config q = world.space().sample(rng);
-    if (world.is_free(q)) return q;
-  }
-}
 
 Result ours(const csl::CollisionWorld& world, const csl::Config& start, const csl::Config& goal, int samples, double step,
             std::uint64_t seed) {
@@ -98,22 +87,16 @@ Result ours(const csl::CollisionWorld& world, const csl::Config& start, const cs
 namespace ob = ompl::base;
 namespace og = ompl::geometric;
 
-struct OmplScene {
-  ob::SpaceInformationPtr si;
-  std::function<void(const csl::Config&, ob::State*)> to_state;
-  long* counter = nullptr;
-};
-
-Result ompl_lazy(const OmplScene& s, const csl::Config& start, const csl::Config& goal, int samples) {
+Result ompl_lazy(const bench::OmplScene& s, const csl::Config& start, const csl::Config& goal, int samples) {
   Result r;
-  *s.counter = 0;
+  const long before = s.checks();
   bench::Timer timer;
-  auto pdef = std::make_shared<ob::ProblemDefinition>(s.si);
-  ob::ScopedState<> a(s.si->getStateSpace()), b(s.si->getStateSpace());
+  auto pdef = std::make_shared<ob::ProblemDefinition>(s.si());
+  ob::ScopedState<> a(s.si()->getStateSpace()), b(s.si()->getStateSpace());
   s.to_state(start, a.get());
   s.to_state(goal, b.get());
   pdef->setStartAndGoalStates(a, b);
-  og::LazyPRM planner(s.si);
+  og::LazyPRM planner(s.si());
   planner.setProblemDefinition(pdef);
   planner.setup();
   // After setup(): OMPL 1.5.2 bounds the k nearest by the planner's range (KBoundedStrategy),
@@ -125,7 +108,7 @@ Result ompl_lazy(const OmplScene& s, const csl::Config& start, const csl::Config
   r.seconds = timer.seconds();
   r.runs = 1;
   r.solved = status == ob::PlannerStatus::EXACT_SOLUTION ? 1 : 0;
-  r.checks = *s.counter;
+  r.checks = s.checks() - before;
   r.milestones = static_cast<long>(planner.milestoneCount());
   return r;
 }
@@ -135,87 +118,58 @@ Result ompl_lazy(const OmplScene& s, const csl::Config& start, const csl::Config
 
 int main(int argc, char** argv) {
   const bool quick = bench::quick(argc, argv);
+  bool as_json = false;
+  for (int i = 1; i < argc; ++i) as_json = as_json || std::strcmp(argv[i], "--json") == 0;
   const std::vector<int> sizes = quick ? std::vector<int>{300} : std::vector<int>{300, 1000, 5000};
   const int repeats = quick ? 2 : 20;
 #ifdef CSPACELAB_WITH_OMPL
   ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
   ompl::RNG::setSeed(1);
 #endif
-  const csl::CollisionWorld disks(csl::PointRobot{}, bench::random_disks(7, 20), {0, 0}, {1, 1});
-  const csl::CollisionWorld arm(csl::ArmRobot{{0.5, 0.5}, 0.3, 0.2}, bench::random_disks(11, 6, 0.03, 0.06), {0, 0},
-                                {1, 1});
-  struct Scene {
-    std::string name;
-    const csl::CollisionWorld* world = nullptr;
-    double step = 0.0;
+  const std::vector<bench::PlannerScene> scenes = bench::planner_scenes(true);
 #ifdef CSPACELAB_WITH_OMPL
-    OmplScene ompl;
-#endif
-  };
-  std::vector<Scene> scenes(2);
-  scenes[0].name = "point, 20 disks, R^2";
-  scenes[0].world = &disks;
-  scenes[0].step = 0.01 * std::sqrt(2.0);
-  scenes[1].name = "2-link arm, 6 disks, T^2";
-  scenes[1].world = &arm;
-  scenes[1].step = 0.01 * std::sqrt(2.0) * csl::kPi;
-#ifdef CSPACELAB_WITH_OMPL
-  static long counters[2];
-  {
-    auto plane = std::make_shared<ob::RealVectorStateSpace>(2);
-    plane->setBounds(0.0, 1.0);
-    auto& s = scenes[0].ompl;
-    s.si = std::make_shared<ob::SpaceInformation>(plane);
-    s.counter = &counters[0];
-    s.si->setStateValidityChecker([&disks](const ob::State* st) {
-      ++counters[0];
-      const auto* v = st->as<ob::RealVectorStateSpace::StateType>();
-      return disks.is_free(csl::config({v->values[0], v->values[1]}));
-    });
-    s.si->setup();
-    scenes[0].step = s.si->getStateValidityCheckingResolution() * plane->getMaximumExtent();
-    s.to_state = [](const csl::Config& q, ob::State* st) {
-      auto* v = st->as<ob::RealVectorStateSpace::StateType>();
-      v->values[0] = q[0];
-      v->values[1] = q[1];
-    };
-  }
-  {
-    auto torus = std::make_shared<ob::CompoundStateSpace>();
-    torus->addSubspace(std::make_shared<ob::SO2StateSpace>(), 1.0);
-    torus->addSubspace(std::make_shared<ob::SO2StateSpace>(), 1.0);
-    auto& s = scenes[1].ompl;
-    s.si = std::make_shared<ob::SpaceInformation>(torus);
-    s.counter = &counters[1];
-    s.si->setStateValidityChecker([&arm](const ob::State* st) {
-      ++counters[1];
-      const auto* c = st->as<ob::CompoundStateSpace::StateType>();
-      return arm.is_free(csl::config({c->as<ob::SO2StateSpace::StateType>(0)->value,
-                                      c->as<ob::SO2StateSpace::StateType>(1)->value}));
-    });
-    s.si->setup();
-    scenes[1].step = s.si->getStateValidityCheckingResolution() * torus->getMaximumExtent();
-    s.to_state = [](const csl::Config& q, ob::State* st) {
-      auto* c = st->as<ob::CompoundStateSpace::StateType>();
-      c->as<ob::SO2StateSpace::StateType>(0)->value = q[0];
-      c->as<ob::SO2StateSpace::StateType>(1)->value = q[1];
-    };
-  }
+  std::vector<std::unique_ptr<bench::OmplScene>> ompl;
+  for (const bench::PlannerScene& s : scenes)
+    ompl.push_back(std::make_unique<bench::OmplScene>(s.world, s.resolution()));
 #endif
 
-  std::printf("Lazy PRM, one query per scene, k = 10, matching edge-check resolution, medians of %d runs each, in turns\n", repeats);
-  std::printf("%-26s %6s %-6s %6s %9s %11s %11s %9s %9s\n", "scene", "n", "who", "solved", "miles/run", "us/query",
-              "us/check", "checks/q", "ratio");
+  // Untimed runs first (wasm tiers its code up while it runs, see prm_bench.cpp; natively the caches).
+  if (!quick)
+    for (const bench::PlannerScene& s : scenes)
+      ours(s.world, bench::first_free(s.world, 1), bench::first_free(s.world, 2), 1000, s.resolution(), 1000);
+
+  if (!as_json) {
+    std::printf("Lazy PRM, one query per scene, k = 10, edge checks every 1%% of the extent, medians of %d runs each, "
+                "in turns\n", repeats);
+    std::printf("%-26s %6s %-6s %6s %9s %11s %11s %9s %9s\n", "scene", "n", "who", "solved", "miles/run", "us/query",
+                "us/check", "checks/q", "ratio");
+  }
   int bad = 0;
-  for (const Scene& s : scenes) {
-    const csl::Config start = first_free(*s.world, 1), goal = first_free(*s.world, 2);
+  std::string json;
+  for (std::size_t si = 0; si < scenes.size(); ++si) {
+    const bench::PlannerScene& s = scenes[si];
+    const csl::Config start = bench::first_free(s.world, 1), goal = bench::first_free(s.world, 2);
+    const double step = s.resolution();
     for (int n : sizes) {
       Result mine, theirs;
       for (int r = 0; r < repeats; ++r) {
-        mine.add(ours(*s.world, start, goal, n, s.step, 1 + static_cast<std::uint64_t>(r)));
+        mine.add(ours(s.world, start, goal, n, step, 1 + static_cast<std::uint64_t>(r)));
 #ifdef CSPACELAB_WITH_OMPL
-        theirs.add(ompl_lazy(s.ompl, start, goal, n));
+        if (!as_json) theirs.add(ompl_lazy(*ompl[si], start, goal, n));
 #endif
+      }
+      bad += 2 * mine.solved < mine.runs;
+      if (as_json) {
+        // compare_wasm.mjs's fields: ours_us (per solved query); milestones and checks over all runs,
+        // which a deterministic build repeats to the unit.
+        char row[400];
+        std::snprintf(row, sizeof row,
+                      "%s{\"scene\": \"%s\", \"samples\": %d, \"milestones\": %ld, \"checks\": %ld, \"ours_us\": %.3f, "
+                      "\"ours_ns_check\": %.3f}",
+                      json.empty() ? "" : ", ", s.name.c_str(), n, mine.milestones, mine.checks, mine.us_per_query(),
+                      1e3 * mine.us_per_check());
+        json += row;
+        continue;
       }
       const auto row = [&](const char* who, const Result& x, const char* ratio) {
         std::printf("%-26s %6d %-6s %3d/%-2d %9.1f %11.1f %11.4f %9.0f %9s\n", s.name.c_str(), n, who, x.solved, x.runs,
@@ -223,7 +177,6 @@ int main(int argc, char** argv) {
                     x.solved ? static_cast<double>(x.checks) / x.runs : 0.0, ratio);
       };
       row("ours", mine, "");
-      bad += 2 * mine.solved < mine.runs;
       if (theirs.runs) {
         char ratio[48];
         std::snprintf(ratio, sizeof ratio, "%.1fx/%.1fx", theirs.us_per_query() / mine.us_per_query(),
@@ -234,7 +187,7 @@ int main(int argc, char** argv) {
         // the samples OMPL took on average (its milestones less start and goal), the same budget.
         const int m = std::max(1, static_cast<int>(std::lround(static_cast<double>(theirs.milestones) / theirs.runs)) - 2);
         Result same;
-        for (int r = 0; r < repeats; ++r) same.add(ours(*s.world, start, goal, m, s.step, 1 + static_cast<std::uint64_t>(r)));
+        for (int r = 0; r < repeats; ++r) same.add(ours(s.world, start, goal, m, step, 1 + static_cast<std::uint64_t>(r)));
         std::snprintf(ratio, sizeof ratio, "%.1fx/%.1fx", theirs.us_per_query() / same.us_per_query(),
                       theirs.us_per_check() / same.us_per_check());
         std::printf("%-26s %6d %-6s %3d/%-2d %9.1f %11.1f %11.4f %9.0f %9s\n", s.name.c_str(), m, "ours@m", same.solved,
@@ -242,6 +195,10 @@ int main(int argc, char** argv) {
                     static_cast<double>(same.checks) / same.runs, ratio);
       }
     }
+  }
+  if (as_json) {
+    std::printf("[%s]\n", json.c_str());
+    return bad ? 1 : 0;
   }
   std::printf("(miles/run: milestones per run; us/query: median time of a solved query; us/check: median time per\n"
               " configuration tested; checks/q: configurations tested per run; ratio: OMPL / ours per query, per check;\n"

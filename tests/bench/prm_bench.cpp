@@ -2,11 +2,11 @@
 //
 //   cspacelab_bench_prm [--quick] [--json]
 //
-// Scenes: the point robot among 20 disks in [0,1]^2, and the 2-link arm on T^2 among 6 disks.
-// Both planners use k = 10 nearest neighbours, the same validity function (our
-// CollisionWorld::is_free) and the same edge-check resolution: OMPL's DiscreteMotionValidator
-// at its default 1% of the space's extent, our step:D checker with that very D (it tests the
-// same configurations along an edge). OMPL's PRM is driven by a milestone-count termination
+// Scenes: bench_common.hpp's planner_scenes(false): the point robot among 20 disks in [0,1]^2,
+// and the 2-link arm on T^2 among 6 disks. Both planners use k = 10 nearest neighbours, the same
+// validity function (our CollisionWorld::is_free) and the same edge-check resolution D (1% of the
+// extent): OMPL's DiscreteMotionValidator with D (bench_ompl.hpp), our step:D checker with that
+// very D (on R^2 it tests the same configurations along an edge). OMPL's PRM is driven by a milestone-count termination
 // condition, never by time. Reported: microseconds per milestone and the ratio OMPL / ours.
 // It fails (exit 1) when the runs disagree (see disagreements()): ctest's quick run checks that.
 // Built for wasm (without OMPL) it reports our figures alone, for the wasm/native ratio
@@ -24,12 +24,12 @@
 #include "core/planning/prm.hpp"
 
 #ifdef CSPACELAB_WITH_OMPL
-#include <ompl/base/DiscreteMotionValidator.h>
-#include <ompl/base/SpaceInformation.h>
-#include <ompl/base/spaces/RealVectorStateSpace.h>
-#include <ompl/base/spaces/SO2StateSpace.h>
+#include <ompl/base/ProblemDefinition.h>
+#include <ompl/base/ScopedState.h>
 #include <ompl/geometric/planners/prm/PRM.h>
 #include <ompl/util/Console.h>
+
+#include "bench_ompl.hpp"
 #endif
 
 namespace {
@@ -105,15 +105,6 @@ Result ompl_prm(const ob::SpaceInformationPtr& si, long milestones) {
 // run. Fresh samples for both: the bench times unseen roadmaps.
 std::uint64_t seed_of(int r) { return 1 + static_cast<std::uint64_t>(r); }
 
-// The first free configuration a seeded sampler finds.
-csl::Config first_free(const csl::CollisionWorld& world, std::uint64_t seed) {
-  csl::Rng rng(seed);
-  for (;;) {
-    const csl::Config q = world.space().sample(rng);
-    if (world.is_free(q)) return q;
-  }
-}
-
 struct Row {
   std::string scene;
   int samples;
@@ -127,31 +118,22 @@ struct Scene {
   std::string name;
   const csl::CollisionWorld* world = nullptr;
   csl::Config start, goal;
-  double step = 0.0;  ///< OMPL's default resolution: 1% of the space's extent
+  double step = 0.0;  ///< the edge checks' resolution (bench::PlannerScene::resolution())
 #ifdef CSPACELAB_WITH_OMPL
-  ob::SpaceInformationPtr si;
-
-  // OMPL's space information over `space`, valid where our world is free (`config` reads a
-  // state as our configuration); the step is then what OMPL computes, not our formula for it.
-  // A template, not a std::function: OMPL's validity check calls no more than it did inline.
-  template <typename ToConfig>
-  void with_ompl(const ob::StateSpacePtr& space, ToConfig config) {
-    si = std::make_shared<ob::SpaceInformation>(space);
-    const csl::CollisionWorld* w = world;
-    si->setStateValidityChecker([w, config](const ob::State* s) { return w->is_free(config(s)); });
-    si->setup();
-    step = si->getStateValidityCheckingResolution() * space->getMaximumExtent();
-  }
+  std::shared_ptr<bench::OmplScene> ompl;
 #endif
 };
 
-Scene scene(std::string name, const csl::CollisionWorld& world, double step) {
+Scene scene(const bench::PlannerScene& p) {
   Scene s;
-  s.name = std::move(name);
-  s.world = &world;
-  s.start = first_free(world, 1);
-  s.goal = first_free(world, 2);
-  s.step = step;
+  s.name = p.name;
+  s.world = &p.world;
+  s.start = bench::first_free(p.world, 1);
+  s.goal = bench::first_free(p.world, 2);
+  s.step = p.resolution();
+#ifdef CSPACELAB_WITH_OMPL
+  s.ompl = std::make_shared<bench::OmplScene>(p.world, s.step);
+#endif
   return s;
 }
 
@@ -192,7 +174,7 @@ Row measure(const Scene& s, int n, int repeats) {
       [&](int r) { return ours(*s.world, s.start, s.goal, n, s.step, seed_of(r)); },
       [&](int r) { return ours(*s.world, s.start, s.goal, n, s.step, seed_of(r), true); }};
 #ifdef CSPACELAB_WITH_OMPL
-  contenders.push_back([&](int) { return ompl_prm(s.si, row.reference.milestones); });
+  contenders.push_back([&](int) { return ompl_prm(s.ompl->si(), row.reference.milestones); });
 #endif
   const std::vector<Result> best = bench::best_in_turns(repeats, contenders, faster_per_milestone);
   row.ours = best[0];
@@ -213,26 +195,9 @@ int main(int argc, char** argv) {
   ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
 #endif
 
-  const csl::CollisionWorld disks(csl::PointRobot{}, bench::random_disks(7, 20), {0, 0}, {1, 1});
-  const csl::CollisionWorld arm(csl::ArmRobot{{0.5, 0.5}, 0.3, 0.2}, bench::random_disks(11, 6, 0.03, 0.06), {0, 0},
-                                {1, 1});
-  std::vector<Scene> scenes = {scene("point, 20 disks, R^2", disks, 0.01 * std::sqrt(2.0)),
-                               scene("2-link arm, 6 disks, T^2", arm, 0.01 * std::sqrt(2.0) * csl::kPi)};
-#ifdef CSPACELAB_WITH_OMPL
-  auto plane = std::make_shared<ob::RealVectorStateSpace>(2);
-  plane->setBounds(0.0, 1.0);
-  scenes[0].with_ompl(plane, [](const ob::State* s) {
-    const auto* v = s->as<ob::RealVectorStateSpace::StateType>();
-    return csl::config({v->values[0], v->values[1]});
-  });
-  auto torus = std::make_shared<ob::CompoundStateSpace>();  // SO(2) x SO(2)
-  torus->addSubspace(std::make_shared<ob::SO2StateSpace>(), 1.0);
-  torus->addSubspace(std::make_shared<ob::SO2StateSpace>(), 1.0);
-  scenes[1].with_ompl(torus, [](const ob::State* s) {
-    const auto* c = s->as<ob::CompoundStateSpace::StateType>();
-    return csl::config({c->as<ob::SO2StateSpace::StateType>(0)->value, c->as<ob::SO2StateSpace::StateType>(1)->value});
-  });
-#endif
+  const std::vector<bench::PlannerScene> worlds = bench::planner_scenes(false);
+  std::vector<Scene> scenes;
+  for (const bench::PlannerScene& w : worlds) scenes.push_back(scene(w));
 
   // Untimed runs first, both ways, for a second: under node, V8 compiles wasm with its
   // baseline compiler and tiers a function up only after it has run a while, compiling in the
