@@ -136,9 +136,7 @@ int run_experiment(Args& args, std::ostream& os) {
     double total = expected_experiment_work(world, reference_only).total;
     for (int n : params.sample_counts) {
       run.samples = n;
-      const TreeParams tree = tree_params(run);
-      const bool connect = run.kind == PlannerChoice::Kind::RrtConnect;
-      total += params.trials * expected_tree_work(world, tree, tree_edges_per_sample(world.space(), tree, connect)).total();
+      total += params.trials * expected_tree_work(world, run).total();
     }
     if (total > max_total_work)
       throw UsageError("the experiment's runs mean about " + work_text(total) + " of work in all, more than the " +

@@ -182,8 +182,7 @@ std::string planner_choice_help() {
 void require_tree_work_budget(const CollisionWorld& world, const PlannerOptions& options, const PlannerChoice& choice,
                               const std::string& run) {
   const TreeParams params = tree_params(choice);
-  const bool connect = choice.kind == PlannerChoice::Kind::RrtConnect;
-  const WorkEstimate w = expected_tree_work(world, params, tree_edges_per_sample(world.space(), params, connect));
+  const WorkEstimate w = expected_tree_work(world, choice);
   if (w.total() <= options.max_work) return;
   char text[600];
   std::snprintf(text, sizeof text,

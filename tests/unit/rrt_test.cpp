@@ -173,6 +173,21 @@ TEST_CASE("a D shorter than a thousandth of the extent is taken as that; the wor
   params.step = 1e-9;
   CHECK(csl::tree_edges_per_sample(world.space(), params, true) == doctest::Approx(501.0));
   CHECK(csl::tree_edges_per_sample(world.space(), params, false) == 1.0);
+  // The one price of a choice (work.hpp) that the CLI and the lesson hold against budgets: the
+  // connects' 501 edges a sample for RRT-Connect, 1 for RRT, on the same per-edge cost.
+  csl::PlannerChoice choice;
+  choice.kind = csl::PlannerChoice::Kind::RrtConnect;
+  choice.step = 1e-9;
+  choice.samples = 1000;
+  const csl::WorkEstimate connect = csl::expected_tree_work(world, choice);
+  CHECK(connect.pairs == doctest::Approx(501.0 * 1002.0));
+  choice.kind = csl::PlannerChoice::Kind::Rrt;
+  const csl::WorkEstimate rrt = csl::expected_tree_work(world, choice);
+  CHECK(rrt.pairs == doctest::Approx(1002.0));
+  CHECK(rrt.per_edge == connect.per_edge);
+  CHECK(connect.total() > 400.0 * rrt.connecting);
+  choice.kind = csl::PlannerChoice::Kind::Prm;
+  CHECK_THROWS_AS(csl::expected_tree_work(world, choice), std::invalid_argument);
 }
 
 TEST_CASE("RRT-Connect keeps two trees until they meet, and grows from both ends") {

@@ -364,10 +364,7 @@ class CompareLesson : public Lesson, private Stepper {
     if (planner_kind_info(c.kind).tree) {
       // A short D makes each extension cheap but RRT-Connect's connects long: priced per sample.
       const CollisionWorld world(scene);
-      const TreeParams t = tree_params(c);
-      const double work =
-          expected_tree_work(world, t, tree_edges_per_sample(world.space(), t, c.kind == PlannerChoice::Kind::RrtConnect))
-              .total();
+      const double work = expected_tree_work(world, c).total();
       if (work <= kLabMaxWork) return "";
       char text[300];
       std::snprintf(text, sizeof text,

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 #include <cstdio>
 
 #include "core/teaching/analysis.hpp"
@@ -69,6 +71,14 @@ WorkEstimate expected_tree_work(const CollisionWorld& world, const TreeParams& p
 
 double tree_edges_per_sample(const Space& space, const TreeParams& params, bool connect) {
   return connect ? 1.0 + space_extent(space) / (2.0 * tree_step(space, params.step)) : 1.0;
+}
+
+WorkEstimate expected_tree_work(const CollisionWorld& world, const PlannerChoice& choice) {
+  if (!planner_kind_info(choice.kind).tree)
+    throw std::invalid_argument(std::string(planner_kind_info(choice.kind).name) + " is not a tree planner");
+  const TreeParams params = tree_params(choice);
+  const bool connect = choice.kind == PlannerChoice::Kind::RrtConnect;
+  return expected_tree_work(world, params, tree_edges_per_sample(world.space(), params, connect));
 }
 
 ExperimentWork expected_experiment_work(const CollisionWorld& world, const ExperimentParams& params) {

@@ -9,6 +9,7 @@
 // from the parameters alone, deterministic (no clocks), and on the high side for the edges
 // (the ends' clearances settle most roadmap edges without a configuration: measured on the
 // bundled scenes at n = 2000, bisection evaluates 0.1 to 1.5 configurations per edge).
+#include "core/planning/planner_choice.hpp"
 #include "core/planning/prm.hpp"
 #include "core/planning/tree_planner.hpp"
 #include "core/teaching/experiment.hpp"
@@ -65,6 +66,12 @@ WorkEstimate expected_tree_work(const CollisionWorld& world, const TreeParams& p
 /// The edge checks per sample to price a tree planner with: RRT 1 (and its new end); RRT-Connect
 /// 1 plus its connect's steps toward a vertex about half the space away, extent / (2 D).
 double tree_edges_per_sample(const Space& space, const TreeParams& params, bool connect);
+/// What the tree planner `choice` names (RRT or RRT-Connect: planner_kind_info(kind).tree) is
+/// expected to cost on `world`: expected_tree_work() of tree_params(choice), with
+/// tree_edges_per_sample()'s edges for its kind. The one price of a tree run that the CLI's plan
+/// and experiment and the compare lesson hold against their budgets. std::invalid_argument for
+/// a roadmap planner (expected_prm_work prices those).
+WorkEstimate expected_tree_work(const CollisionWorld& world, const PlannerChoice& choice);
 
 /// An experiment's expected work (experiment.hpp), in units.
 struct ExperimentWork {
