@@ -43,6 +43,12 @@ void NeighborIndex::build(const std::vector<Config>& points) {
   build_tree(0);
 }
 
+void NeighborIndex::reserve(int n) {
+  const auto count = static_cast<std::size_t>(std::max(n, 0));
+  pts_.reserve(count * dim_);
+  ids_.reserve(count);
+}
+
 int NeighborIndex::insert(const Config& q) {
   const int index = static_cast<int>(count_);
   for (std::size_t a = 0; a < dim_; ++a) pts_.push_back(q[static_cast<Eigen::Index>(a)]);

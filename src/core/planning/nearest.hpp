@@ -31,6 +31,10 @@ class NeighborIndex {
   /// Adds q (the space's dim() coordinates, angles in the chart) as the next index, size() before
   /// the call, and returns that index.
   int insert(const Config& q);
+  /// Room for `n` points in all without reallocating (a planner that inserts one at a time and
+  /// knows about how many: most RRT-Connect queries end within a few dozen vertices, where
+  /// growing the arrays by doubling was a tenth of the work). Changes no answer.
+  void reserve(int n);
   /// All points, built and inserted.
   int size() const { return static_cast<int>(count_); }
   /// Every index once, so that neighbouring entries are close in space and querying in this
