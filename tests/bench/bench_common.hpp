@@ -9,6 +9,7 @@
 #include <chrono>
 #include <functional>
 #include <cstdio>
+#include <ctime>
 #include <string>
 #include <utility>
 #include <vector>
@@ -75,15 +76,28 @@ inline double median(std::vector<double> v) {
   return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
 }
 
+/// Seconds since construction. Natively the process's CPU time, not the wall clock: the machine
+/// is shared (two cores, several builds at once), and a bench that got a tenth of a core took ten
+/// times as long by the clock (15 s of wall time for 1.3 s of CPU) while its CPU time hardly
+/// moved. Every contender here runs on one thread, OMPL's too, so CPU time is its time alone.
+/// In the wasm build (node) the wall clock: Emscripten has no CPU clock of its own;
+/// compare_wasm.mjs's fastest rounds are then the least disturbed.
 class Timer {
  public:
-  Timer() : start_(std::chrono::steady_clock::now()) {}
-  double seconds() const {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  }
+  Timer() : start_(now()) {}
+  double seconds() const { return now() - start_; }
 
  private:
-  std::chrono::steady_clock::time_point start_;
+  static double now() {
+#if defined(__EMSCRIPTEN__) || !defined(CLOCK_PROCESS_CPUTIME_ID)
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+#else
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+#endif
+  }
+  double start_;
 };
 
 /// Runs f() `repeats` times and returns the fastest time in seconds (least disturbed by noise).

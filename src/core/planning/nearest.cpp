@@ -247,6 +247,8 @@ void NeighborIndex::search(const double* q, Visit& visit) const {
       search<1, 0>(tree.root, q, visit);
     else if (torus_ && dim_ == 2)
       search<2, 2>(tree.root, q, visit);
+    else if (torus_)  // T^N, N > 2 (an N-link arm): the torus's distances, N known at run time
+      search<2, 0>(tree.root, q, visit);
     else
       search<0, 0>(tree.root, q, visit);
   }
