@@ -14,6 +14,10 @@
 #include <utility>
 #include <vector>
 
+#ifdef __EMSCRIPTEN__
+#include <emscripten.h>
+#endif
+
 #include "core/base/rng.hpp"
 #include "core/checking/collision.hpp"
 #include "core/planning/tree_planner.hpp"
@@ -76,12 +80,20 @@ inline double median(std::vector<double> v) {
   return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
 }
 
+#ifdef __EMSCRIPTEN__
+// The process's CPU seconds (user and system) as node counts them.
+EM_JS(double, node_cpu_seconds, (), {
+  const u = process.cpuUsage();
+  return (u.user + u.system) / 1e6;
+});
+#endif
+
 /// Seconds since construction. Natively the process's CPU time, not the wall clock: the machine
 /// is shared (two cores, several builds at once), and a bench that got a tenth of a core took ten
 /// times as long by the clock (15 s of wall time for 1.3 s of CPU) while its CPU time hardly
 /// moved. Every contender here runs on one thread, OMPL's too, so CPU time is its time alone.
-/// In the wasm build (node) the wall clock: Emscripten has no CPU clock of its own;
-/// compare_wasm.mjs's fastest rounds are then the least disturbed.
+/// In the wasm build node's process.cpuUsage() (Emscripten's clock_gettime knows no CPU clock):
+/// it also counts V8's compiler threads, which the benches' warm-up runs leave idle.
 class Timer {
  public:
   Timer() : start_(now()) {}
@@ -89,7 +101,9 @@ class Timer {
 
  private:
   static double now() {
-#if defined(__EMSCRIPTEN__) || !defined(CLOCK_PROCESS_CPUTIME_ID)
+#if defined(__EMSCRIPTEN__)
+    return node_cpu_seconds();
+#elif !defined(CLOCK_PROCESS_CPUTIME_ID)
     return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 #else
     timespec t{};

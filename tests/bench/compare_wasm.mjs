@@ -2,8 +2,8 @@
 // prints the wasm/native ratio of our time per milestone (rrt, lazy: per solved query; volume: per
 // 3-D C-space volume) for every row: the ratio of the medians over the rounds, and of the fastest.
 //   node tests/bench/compare_wasm.mjs [build/native] [build/wasm] [prm|rrt|lazy|volume]
-// The native figures are CPU time, the wasm ones node's wall clock (bench_common.hpp's Timer):
-// on a loaded machine the wasm medians carry the waits, and the fastest rounds compare better.
+// Both builds time CPU seconds (bench_common.hpp's Timer: natively the process's CPU clock, in
+// wasm node's process.cpuUsage()), so that other work on a shared machine stays out of the ratio.
 import { execFileSync } from 'node:child_process';
 import path from 'node:path';
 
