@@ -11,6 +11,12 @@
 //
 // data-lab-task="…" is the task text shown above the canvas (plain text; a task= in data-lab wins).
 //
+// assignment=URL (a relative URL of this site) puts the lab in assignment mode: lab-assignment.js,
+// loaded only then, opens the file and reports to an LMS (SCORM) in a parent frame;
+// data-lab-scorm="1.2|2004" says which LMS object to look for first (a package's launch page).
+// element.cspacelabAssignment is then a promise of its CSpaceLabAssignment (.state null if the
+// file was refused; null if the mode could not start at all).
+//
 // This script loads the rest (cspacelab.js, lab-api.js, lab-url.js, lab-shell.js, lab-access.js,
 // lab-task.js, lab-print.js) from its own folder unless the page already has them. From a course
 // page of another origin that works when the lab's server sends Access-Control-Allow-Origin (the
@@ -271,8 +277,28 @@
     if (index === 0) window.cspacelab = api;  // the first lab in the page's order
     status.hidden = true;
     if (fromUrl && ui === 'full' && window.top === window) canvas.focus({ preventScroll: true });
+    if (values.has('assignment')) root.cspacelabAssignment = startAssignment(root, api, values.get('assignment'), single);
     root.dispatchEvent(new CustomEvent('cspacelab-ready', { detail: api, bubbles: true }));
     return api;
+  }
+
+  /** Assignment mode: lab-assignment.js, loaded now (no other lab pays for it), opens the file. */
+  async function startAssignment(root, api, raw, single) {
+    try {
+      if (single) throw new Error('the single-file lab cannot load files: use the lab\'s site or its SCORM package');
+      const url = window.CSpaceLabUrl.assignmentUrl(raw, location.href);
+      if (typeof window.CSpaceLabAssignment === 'undefined') await load('lab-assignment.js');
+      const assignment = new window.CSpaceLabAssignment(root, api, url);
+      await assignment.start();
+      return assignment;
+    } catch (err) {
+      try {
+        api.notify('No assignment: ' + (err && err.message ? err.message : err));
+      } catch {
+        // the lab has stopped; its crash panel says so
+      }
+      return null;
+    }
   }
 
   /** Starts every [data-lab] element not started yet; resolves to their APIs. */
