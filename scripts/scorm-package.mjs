@@ -1,0 +1,200 @@
+// Turns an assignment file into SCORM packages an LMS imports (Moodle, Canvas, Blackboard,
+// Brightspace): the built site, the assignment, a launch page and imsmanifest.xml, zipped.
+//   node scripts/scorm-package.mjs ASSIGNMENT.json --dist DIST --out DIR [--version 1.2|2004|both]
+// writes DIR/NAME-scorm12.zip and/or DIR/NAME-scorm2004.zip (NAME: the file's name without
+// .json) and prints {"packages": [{version, file, bytes, files}]}.
+//
+// The assignment is checked first with `cspacelab assignment validate` (the CLI at
+// $CSPACELAB_CLI, else build/native/src/cli/cspacelab; a .js CLI, the wasm build's, runs under
+// node): an invalid one is refused with the CLI's message, which names each item and field.
+// DIST is the built site (build/wasm/dist); its single-file page is left out (it repeats the wasm).
+// The launch page is the site's index.html with the lab configured as
+// data-lab="assignment=assignment.json" (web/lab-assignment.js then finds the LMS's API object,
+// web/lab-url.js, docs/web.md, Assignments): same scripts, same Content-Security-Policy.
+// The 1.2 manifest sets adlcp:masteryscore (the assignment's pass as a percentage; the lab reports
+// 1.2's raw score as a percentage); 2004 (4th edition) a primary objective satisfied by measure
+// with minNormalizedMeasure = pass, which the LMS gives the lab as cmi.scaled_passing_score.
+import fs from 'node:fs';
+import path from 'node:path';
+import { spawnSync } from 'node:child_process';
+import { fileURLToPath } from 'node:url';
+import { writeZip } from './zip.mjs';
+
+const HERE = path.dirname(fileURLToPath(import.meta.url));
+const LAUNCH = 'launch.html';
+const ASSIGNMENT = 'assignment.json';
+const LEFT_OUT = new Set(['cspacelab-single.html']);
+
+const USAGE = 'usage: node scripts/scorm-package.mjs ASSIGNMENT.json --dist DIST --out DIR [--version 1.2|2004|both]';
+
+function fail(message, code = 2) {
+  process.stderr.write(`scorm-package: ${message}\n`);
+  process.exit(code);
+}
+
+function parseArgs(argv) {
+  const opts = { version: 'both' };
+  const rest = [];
+  for (let i = 0; i < argv.length; ++i) {
+    const a = argv[i];
+    if (a === '--help' || a === '-h') {
+      process.stdout.write(USAGE + '\n');
+      process.exit(0);
+    }
+    if (a === '--dist' || a === '--out' || a === '--version') {
+      if (i + 1 >= argv.length) fail(`${a} needs a value\n${USAGE}`);
+      opts[a.slice(2)] = argv[++i];
+    } else if (a.startsWith('--')) {
+      fail(`unknown option ${a}\n${USAGE}`);
+    } else {
+      rest.push(a);
+    }
+  }
+  if (rest.length !== 1 || !opts.dist || !opts.out) fail(USAGE);
+  if (!['1.2', '2004', 'both'].includes(opts.version)) fail(`--version: 1.2, 2004 or both, not '${opts.version}'`);
+  opts.assignment = rest[0];
+  return opts;
+}
+
+/** `cspacelab assignment validate FILE`'s JSON, or exits with the CLI's own message. */
+function validate(file) {
+  const cli = process.env.CSPACELAB_CLI || path.resolve(HERE, '../build/native/src/cli/cspacelab');
+  if (!fs.existsSync(cli)) fail(`no cspacelab CLI at ${cli}: build it or set CSPACELAB_CLI`);
+  const [cmd, args] = cli.endsWith('.js') ? [process.execPath, [cli]] : [cli, []];
+  const run = spawnSync(cmd, [...args, 'assignment', 'validate', file], {
+    encoding: 'utf8', env: { ...process.env, NODE_OPTIONS: '--no-experimental-fetch' } });
+  if (run.error) fail(`could not run ${cli}: ${run.error.message}`);
+  if (run.status !== 0) fail(`the assignment is not valid: ${(run.stderr || run.stdout).trim().replace(/^cspacelab: /, '')}`);
+  return JSON.parse(run.stdout);
+}
+
+/** Every file under `dir`, as paths relative to it with '/', sorted. */
+function listFiles(dir, prefix = '') {
+  const out = [];
+  for (const e of fs.readdirSync(path.join(dir, prefix), { withFileTypes: true })) {
+    const rel = prefix ? prefix + '/' + e.name : e.name;
+    if (e.isDirectory()) out.push(...listFiles(dir, rel));
+    else if (e.isFile()) out.push(rel);
+  }
+  return out.sort();
+}
+
+const xml = (s) => String(s).replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;').replace(/"/g, '&quot;');
+
+/** The launch page: the site's index.html with its lab in assignment mode for SCORM `version`. */
+function launchPage(indexHtml, title, version) {
+  const main = /<main class="lab"[^>]*>/;
+  if (!main.test(indexHtml)) throw new Error('the site\'s index.html has no <main class="lab"> to configure');
+  return indexHtml
+    .replace(main, `<main class="lab" id="assignment" data-lab="assignment=${ASSIGNMENT}" data-lab-scorm="${version}">`)
+    .replace(/<title>[^<]*<\/title>/, `<title>${xml(title)} - C-Space Lab</title>`)
+    .replace(/\n\s*<meta name="description"[^>]*>/, '');
+}
+
+function fileList(files) {
+  return files.map((f) => `      <file href="${xml(f)}"/>`).join('\n');
+}
+
+function manifest12(id, title, pass, files) {
+  const mastery = typeof pass === 'number' ? `\n        <adlcp:masteryscore>${Math.round(pass * 10000) / 100}</adlcp:masteryscore>` : '';
+  return `<?xml version="1.0" encoding="UTF-8"?>
+<manifest identifier="${id}" version="1"
+    xmlns="http://www.imsproject.org/xsd/imscp_rootv1p1p2"
+    xmlns:adlcp="http://www.adlnet.org/xsd/adlcp_rootv1p2"
+    xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance"
+    xsi:schemaLocation="http://www.imsproject.org/xsd/imscp_rootv1p1p2 imscp_rootv1p1p2.xsd http://www.imsglobal.org/xsd/imsmd_rootv1p2p1 imsmd_rootv1p2p1.xsd http://www.adlnet.org/xsd/adlcp_rootv1p2 adlcp_rootv1p2.xsd">
+  <metadata>
+    <schema>ADL SCORM</schema>
+    <schemaversion>1.2</schemaversion>
+  </metadata>
+  <organizations default="org">
+    <organization identifier="org">
+      <title>${xml(title)}</title>
+      <item identifier="item" identifierref="sco" isvisible="true">
+        <title>${xml(title)}</title>${mastery}
+      </item>
+    </organization>
+  </organizations>
+  <resources>
+    <resource identifier="sco" type="webcontent" adlcp:scormtype="sco" href="${LAUNCH}">
+${fileList(files)}
+    </resource>
+  </resources>
+</manifest>
+`;
+}
+
+function manifest2004(id, title, pass, files) {
+  const sequencing = typeof pass === 'number' ? `
+        <imsss:sequencing>
+          <imsss:objectives>
+            <imsss:primaryObjective objectiveID="pass" satisfiedByMeasure="true">
+              <imsss:minNormalizedMeasure>${pass}</imsss:minNormalizedMeasure>
+            </imsss:primaryObjective>
+          </imsss:objectives>
+        </imsss:sequencing>` : '';
+  return `<?xml version="1.0" encoding="UTF-8"?>
+<manifest identifier="${id}" version="1"
+    xmlns="http://www.imsglobal.org/xsd/imscp_v1p1"
+    xmlns:adlcp="http://www.adlnet.org/xsd/adlcp_v1p3"
+    xmlns:adlseq="http://www.adlnet.org/xsd/adlseq_v1p3"
+    xmlns:adlnav="http://www.adlnet.org/xsd/adlnav_v1p3"
+    xmlns:imsss="http://www.imsglobal.org/xsd/imsss"
+    xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance"
+    xsi:schemaLocation="http://www.imsglobal.org/xsd/imscp_v1p1 imscp_v1p1.xsd http://www.adlnet.org/xsd/adlcp_v1p3 adlcp_v1p3.xsd http://www.adlnet.org/xsd/adlseq_v1p3 adlseq_v1p3.xsd http://www.adlnet.org/xsd/adlnav_v1p3 adlnav_v1p3.xsd http://www.imsglobal.org/xsd/imsss imsss_v1p0.xsd">
+  <metadata>
+    <schema>ADL SCORM</schema>
+    <schemaversion>2004 4th Edition</schemaversion>
+  </metadata>
+  <organizations default="org">
+    <organization identifier="org">
+      <title>${xml(title)}</title>
+      <item identifier="item" identifierref="sco" isvisible="true">
+        <title>${xml(title)}</title>${sequencing}
+      </item>
+    </organization>
+  </organizations>
+  <resources>
+    <resource identifier="sco" type="webcontent" adlcp:scormType="sco" href="${LAUNCH}">
+${fileList(files)}
+    </resource>
+  </resources>
+</manifest>
+`;
+}
+
+function main() {
+  const opts = parseArgs(process.argv.slice(2));
+  if (!fs.existsSync(opts.assignment)) fail(`${opts.assignment}: no such file`);
+  if (!fs.existsSync(path.join(opts.dist, 'cspacelab.wasm')) || !fs.existsSync(path.join(opts.dist, 'index.html')))
+    fail(`${opts.dist} is not the built site (no cspacelab.wasm or index.html): build cspacelab_app and cspacelab_web for wasm`);
+  const checked = validate(opts.assignment);
+  const title = checked.title || 'C-Space Lab assignment';
+  const pass = typeof checked.pass === 'number' ? checked.pass : undefined;
+  const name = path.basename(opts.assignment).replace(/\.json$/i, '') || 'assignment';
+  // An XML ID: starts with a letter, then letters, digits, '-', '_', '.'.
+  const id = 'cspacelab-' + name.replace(/[^A-Za-z0-9_.-]/g, '-');
+
+  const site = listFiles(opts.dist).filter((f) => !LEFT_OUT.has(f) && f !== LAUNCH && f !== ASSIGNMENT && f !== 'imsmanifest.xml');
+  const index = fs.readFileSync(path.join(opts.dist, 'index.html'), 'utf8');
+  const assignmentBytes = fs.readFileSync(opts.assignment);
+  fs.mkdirSync(opts.out, { recursive: true });
+  const packages = [];
+  for (const version of opts.version === 'both' ? ['1.2', '2004'] : [opts.version]) {
+    const entries = [
+      { name: LAUNCH, data: Buffer.from(launchPage(index, title, version)) },
+      { name: ASSIGNMENT, data: assignmentBytes },
+      ...site.map((f) => ({ name: f, data: fs.readFileSync(path.join(opts.dist, f)) })),
+    ];
+    const files = entries.map((e) => e.name);
+    const text = version === '1.2' ? manifest12(id, title, pass, files) : manifest2004(id, title, pass, files);
+    entries.unshift({ name: 'imsmanifest.xml', data: Buffer.from(text) });
+    const file = path.join(opts.out, `${name}-scorm${version === '1.2' ? '12' : '2004'}.zip`);
+    const zip = writeZip(entries);
+    fs.writeFileSync(file, zip);
+    packages.push({ version, file, bytes: zip.length, files: entries.length });
+  }
+  process.stdout.write(JSON.stringify({ packages }, null, 2) + '\n');
+}
+
+main();
