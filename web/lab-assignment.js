@@ -67,6 +67,33 @@
     return null;
   }
 
+  /**
+   * The URL of a configuration's assignment file: `raw` resolved against the page's address
+   * `pageHref`. Only a relative URL of the page's own origin is taken (the file decides what a
+   * student is graded on, so a link must not point it at another site). Throws an Error saying why.
+   */
+  function assignmentUrl(raw, pageHref) {
+    const text = String(raw);
+    if (text === '' || /[\u0000-\u001f\\]/.test(text)) throw new Error(`${quote(text)} is not a relative URL of this site`);
+    if (/^[a-z][a-z0-9+.-]*:/i.test(text) || text.startsWith('//'))
+      throw new Error(`${quote(text)} is not on this site: an assignment is a relative URL such as assignment.json`);
+    let url;
+    try {
+      url = new URL(text, pageHref);
+    } catch {
+      throw new Error(`${quote(text)} is not a relative URL of this site`);
+    }
+    if (url.origin !== new URL(pageHref).origin)
+      throw new Error(`${quote(text)} is not on this site: an assignment is a relative URL such as assignment.json`);
+    return url.href;
+  }
+
+  /** A short printable excerpt of untrusted text for a message. */
+  function quote(text) {
+    const s = String(text);
+    return JSON.stringify(s.length > 40 ? s.slice(0, 40) + '…' : s);
+  }
+
   /** A number as a decimal the LMS takes (no exponent, at most 4 decimals). */
   function decimal(x) {
     return String(Math.round(Number(x) * 10000) / 10000);
@@ -127,8 +154,8 @@
 
   class LabAssignment {
     /**
-     * root: the lab's element; api: its CSpaceLabApi; url: the assignment's (lab-url.js's
-     * assignmentUrl); win: the window it runs in (the unit tests pass a fake).
+     * root: the lab's element; api: its CSpaceLabApi; url: the assignment's (assignmentUrl);
+     * win: the window it runs in (the unit tests pass a fake).
      */
     constructor(root, api, url, win = global) {
       this.win = win;
@@ -302,6 +329,7 @@
     }
   }
 
+  LabAssignment.assignmentUrl = assignmentUrl;
   LabAssignment.findLms = findLms;
   LabAssignment.valuesOf = valuesOf;
   LabAssignment.elapsed = elapsed;

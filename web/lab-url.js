@@ -18,9 +18,9 @@
 //            (radians); only views the user zoomed, panned or turned are written; the app
 //            checks names and ranges. Part of the state, as a snapshot holds it.
 //   assignment  an assignment file to work through (docs/web.md, Assignments): a relative URL of
-//            this site ("assignment.json", "week3/a.json"); another origin, a scheme or "//host"
-//            is refused. The lab then loads lab-assignment.js, which also reports to an LMS
-//            (SCORM) found in a parent frame. Not part of the state.
+//            this site ("assignment.json", "week3/a.json"; another origin, a scheme or "//host"
+//            is refused). lab.js then loads lab-assignment.js, which checks the URL, opens the
+//            file and reports to an LMS (SCORM) in a parent frame. Not part of the state.
 //   and the lesson's own parameters (whatever its params() reports: samples, neighbors,
 //   checker, seed for Step PRM; grid_n, p, q for Collision checking; …).
 //   lock     scene, params, lesson or a parameter's name: what the student cannot change
@@ -393,27 +393,6 @@
     return { restrictions, problems };
   }
 
-  /**
-   * The URL of a configuration's assignment file: `raw` resolved against the page's address
-   * `pageHref`. Only a relative URL of the page's own origin is taken (the file decides what a
-   * student is graded on, so a link must not point it at another site). Throws an Error saying why.
-   */
-  function assignmentUrl(raw, pageHref) {
-    const text = String(raw);
-    if (text === '' || /[\u0000-\u001f\\]/.test(text)) throw new Error(`${excerpt(text)} is not a relative URL of this site`);
-    if (/^[a-z][a-z0-9+.-]*:/i.test(text) || text.startsWith('//'))
-      throw new Error(`${excerpt(text)} is not on this site: an assignment is a relative URL such as assignment.json`);
-    let url;
-    try {
-      url = new URL(text, pageHref);
-    } catch {
-      throw new Error(`${excerpt(text)} is not a relative URL of this site`);
-    }
-    if (url.origin !== new URL(pageHref).origin)
-      throw new Error(`${excerpt(text)} is not on this site: an assignment is a relative URL such as assignment.json`);
-    return url.href;
-  }
-
   /** A short stable hash (FNV-1a, 32 bits, hex) of a string: storage ids of configured embeds. */
   function hash(text) {
     let h = 0x811c9dc5;
@@ -426,7 +405,7 @@
 
   const api = Object.freeze({
     LIMITS, RESERVED, PRESENTATION, RESTRICTION_KEYS, NAME, STEPS, ID,
-    excerpt, sizeText, parseConfig, hasState, stateKey, parseValue, formatValue, encodeValue, restrictionsOf, assignmentUrl,
+    excerpt, sizeText, parseConfig, hasState, stateKey, parseValue, formatValue, encodeValue, restrictionsOf,
     parseCamera, formatCamera,
     encodeScene, decodeScene, tooDeep, buildQuery, hash, toBase64Url, fromBase64Url,
   });

@@ -286,9 +286,9 @@
   async function startAssignment(root, api, raw, single) {
     try {
       if (single) throw new Error('the single-file lab cannot load files: use the lab\'s site or its SCORM package');
-      const url = window.CSpaceLabUrl.assignmentUrl(raw, location.href);
       if (typeof window.CSpaceLabAssignment === 'undefined') await load('lab-assignment.js');
-      const assignment = new window.CSpaceLabAssignment(root, api, url);
+      const A = window.CSpaceLabAssignment;
+      const assignment = new A(root, api, A.assignmentUrl(raw, location.href));
       await assignment.start();
       return assignment;
     } catch (err) {

@@ -256,3 +256,15 @@ test('elapsed time in each version\'s syntax', () => {
   assert.equal(Assignment.elapsed(3723450, Assignment.V12), '0001:02:03.45');
   assert.equal(Assignment.elapsed(3723450, Assignment.V2004), 'PT1H2M3.45S');
 });
+
+test('assignment=: a relative URL of the page\'s own site only', () => {
+  const page = 'https://lab.example.edu/course/launch.html?x=1';
+  assert.equal(Assignment.assignmentUrl('assignment.json', page), 'https://lab.example.edu/course/assignment.json');
+  assert.equal(Assignment.assignmentUrl('week3/a%20b.json', page), 'https://lab.example.edu/course/week3/a%20b.json');
+  assert.equal(Assignment.assignmentUrl('../a.json', page), 'https://lab.example.edu/a.json');
+  for (const raw of ['https://evil.example/a.json', '//evil.example/a.json', 'javascript:alert(1)', 'data:,{}',
+                     'HTTPS://lab.example.edu/a.json'])
+    assert.throws(() => Assignment.assignmentUrl(raw, page), /is not on this site: an assignment is a relative URL such as assignment\.json/, raw);
+  for (const raw of ['', 'a\\b', 'a\nb'])
+    assert.throws(() => Assignment.assignmentUrl(raw, page), /is not a relative URL of this site/, JSON.stringify(raw));
+});

@@ -1,0 +1,250 @@
+// The SCORM packages in a stand-in LMS: each version's zip (scripts/scorm-package.mjs) unpacked
+// and served, its launch page in an iframe of a parent page that provides the LMS's API object
+// with a real SCORM runtime (npm scorm-again) under a strict Content-Security-Policy. The example
+// assignment is worked through with the app's assignment commands, answers computed here
+// independently (as tests/cli/assignment.test.mjs does); then what the lab reported is read back
+// from the runtime: score, completion and success, each interaction. A reload of the iframe is
+// a new launch (the stand-in LMS hands the suspend data back): the same answers and item come
+// back, and each launch initialised and terminated exactly once.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { spawnSync } from 'node:child_process';
+import { fileURLToPath } from 'node:url';
+import { DIST, CLI, launchBrowser, collectErrors, cli, screenshot } from './lib/harness.mjs';
+import { serve } from '../../scripts/static-server.mjs';
+import { readZip } from '../../scripts/zip.mjs';
+
+const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
+const EXAMPLE = path.join(ROOT, 'docs/assignment-example.json');
+const LEARNER = 'ann@example.edu';
+const SCORM_AGAIN = path.join(ROOT, 'node_modules/scorm-again/dist/scorm-again.min.js');
+
+// S^1 distance and P12's smallest N, written again here (tests/cli/assignment.test.mjs).
+function s1(q1, q2) {
+  let best = Infinity;
+  for (let k = -4; k <= 4; ++k) best = Math.min(best, Math.abs(q2 - q1 + 2 * Math.PI * k));
+  return best;
+}
+function minGrid(c, r) {
+  for (let n = 2; n < 100000; ++n)
+    for (let i = 0; i < n; ++i) if (Math.hypot(i / (n - 1) - c[0], c[1]) <= r) return n;
+  return null;
+}
+
+// The stand-in LMS: a page with scorm-again and an iframe. Every launch gets a fresh API object
+// holding the learner and the last session's suspend data (entry=resume after exit=suspend), as
+// an LMS does; each counts its Initialize/Terminate/Commit.
+const LMS_HTML = `<!doctype html>
+<html lang="en"><head><meta charset="utf-8">
+<meta http-equiv="Content-Security-Policy" content="default-src 'self'; script-src 'self'; frame-src 'self'; style-src 'self'; img-src data:">
+<link rel="icon" href="data:,">
+<title>Stand-in LMS</title>
+<script src="scorm-again.min.js"></script>
+<script src="lms.js"></script>
+</head><body><iframe id="sco" title="course" width="1280" height="760"></iframe></body></html>
+`;
+const LMS_JS = `'use strict';
+(function () {
+  const version = new URLSearchParams(location.search).get('v');
+  const names = version === '1.2' ? ['LMSInitialize', 'LMSFinish', 'LMSCommit'] : ['Initialize', 'Terminate', 'Commit'];
+  window.lms = { version, launches: [] };
+  function launch(previous) {
+    const api = version === '1.2' ? new Scorm12API({ logLevel: 5 }) : new Scorm2004API({ logLevel: 5 });
+    const cmi = version === '1.2' ? { core: { student_id: ${JSON.stringify(LEARNER)}, student_name: 'Ann' } }
+                                  : { learner_id: ${JSON.stringify(LEARNER)}, learner_name: 'Ann' };
+    if (previous) {
+      cmi.suspend_data = previous.suspend_data;
+      const resume = (version === '1.2' ? previous.core.exit : previous.exit) === 'suspend' ? 'resume' : '';
+      if (version === '1.2') cmi.core.entry = resume; else cmi.entry = resume;
+    }
+    api.loadFromJSON(cmi);
+    const record = { calls: { [names[0]]: 0, [names[1]]: 0, [names[2]]: 0 }, cmi: null };
+    for (const m of names) {
+      const f = api[m].bind(api);
+      api[m] = (...args) => {
+        record.calls[m] += 1;
+        const result = f(...args);
+        if (m === names[1]) {
+          record.cmi = api.renderCMIToJSONObject().cmi;
+          launch(record.cmi);
+        }
+        return result;
+      };
+    }
+    window.lms.launches.push(record);
+    window.lms.api = api;
+    window[version === '1.2' ? 'API' : 'API_1484_11'] = api;
+  }
+  launch(null);
+  document.addEventListener('DOMContentLoaded', () => { document.getElementById('sco').src = 'course/launch.html'; });
+})();
+`;
+
+/** The packages, built once from the site under test. */
+function buildPackages() {
+  const out = fs.mkdtempSync(path.join(os.tmpdir(), 'csl-scorm-e2e-'));
+  const r = spawnSync(process.execPath, [path.join(ROOT, 'scripts/scorm-package.mjs'), EXAMPLE, '--dist', DIST, '--out', out],
+                      { encoding: 'utf8', env: { ...process.env, CSPACELAB_CLI: CLI } });
+  assert.equal(r.status, 0, r.stderr);
+  return Object.fromEntries(JSON.parse(r.stdout).packages.map((p) => [p.version, p.file]));
+}
+
+/** A site with the stand-in LMS at / and the package unzipped (in node) under /course/. */
+function lmsSite(zipFile) {
+  const site = fs.mkdtempSync(path.join(os.tmpdir(), 'csl-lms-'));
+  for (const { name, data } of readZip(fs.readFileSync(zipFile))) {
+    const file = path.join(site, 'course', name);
+    fs.mkdirSync(path.dirname(file), { recursive: true });
+    fs.writeFileSync(file, data);
+  }
+  fs.writeFileSync(path.join(site, 'lms.html'), LMS_HTML);
+  fs.writeFileSync(path.join(site, 'lms.js'), LMS_JS);
+  fs.copyFileSync(SCORM_AGAIN, path.join(site, 'scorm-again.min.js'));
+  return site;
+}
+
+/** The lab's frame once its assignment is open; resolves to [frame, its assignment state]. */
+async function openedFrame(page) {
+  const handle = await page.waitForSelector('#sco');
+  let frame = null;
+  await page.waitForFunction(() => true);  // the iframe's document may be replaced: ask again below
+  for (let i = 0; i < 600 && !frame; ++i) {
+    const f = await handle.contentFrame();
+    if (f && /launch\.html$/.test(f.url())) {
+      try {
+        const ready = await f.evaluate(async () => {
+          const p = document.getElementById('assignment') && document.getElementById('assignment').cspacelabAssignment;
+          if (!p) return false;
+          const a = await p;
+          return !!(a && a.state);
+        });
+        if (ready) frame = f;
+      } catch {
+        // navigating: try again
+      }
+    }
+    if (!frame) await page.waitForTimeout(100);
+  }
+  assert.ok(frame, 'the launch page opened its assignment');
+  return [frame, await call(frame, 'assignment_state')];
+}
+
+const call = (frame, cmd, args = {}) =>
+  frame.evaluate(([c, a]) => document.getElementById('assignment').cspacelab.call(c, a), [cmd, args]);
+const lmsGet = (page, element) =>
+  page.evaluate((el) => (window.lms.version === '1.2' ? window.lms.api.LMSGetValue(el) : window.lms.api.GetValue(el)), element);
+const lmsRecord = (page) => page.evaluate(() => window.lms.api.renderCMIToJSONObject().cmi);
+const launches = (page) => page.evaluate(() => window.lms.launches.map((l) => l.calls));
+
+const packages = buildPackages();
+const view = cli('assignment', 'exercises', EXAMPLE, '--learner', LEARNER);
+const p10 = view.items[1].given;
+const p12 = view.items[2].given;
+const ANSWERS = { 0: 'R^3', 1: s1(p10.q1, p10.q2).toFixed(4), 2: String(minGrid(p12.center, p12.radius)) };
+
+for (const version of ['1.2', '2004']) {
+  const v12 = version === '1.2';
+  test(`SCORM ${version}: the package in an LMS frame reports score, status and interactions, and resumes`, { timeout: 240000 }, async () => {
+    const site = lmsSite(packages[version]);
+    const { server, url } = await serve(site, 0);
+    const browser = await launchBrowser();
+    try {
+      const page = await browser.newPage({ viewport: { width: 1300, height: 800 } });
+      await page.addInitScript(() => localStorage.setItem('cspacelab:v1:welcomed', '1'));
+      const errors = collectErrors(page);
+      const csp = [];
+      page.on('console', (m) => { if (/Content Security Policy|Refused to/i.test(m.text())) csp.push(m.text()); });
+      await page.goto(url + 'lms.html?v=' + version);
+      let [frame, state] = await openedFrame(page);
+
+      // The LMS's learner id reached the app; the session started once; nothing reported as done.
+      assert.equal(state.learner, LEARNER);
+      assert.equal(state.items.length, 5);
+      const first = (await launches(page))[0];
+      assert.deepEqual(Object.values(first).slice(0, 2), [1, 0], 'initialised once, not terminated');
+      if (v12) assert.equal(await lmsGet(page, 'cmi.core.lesson_status'), 'incomplete');
+      else assert.deepEqual([await lmsGet(page, 'cmi.completion_status'), await lmsGet(page, 'cmi.success_status')], ['incomplete', 'unknown']);
+
+      // The exercises, answered through the app's commands (P3 wrong on purpose); the explore item visited.
+      for (const [index, answer] of Object.entries(ANSWERS)) {
+        await call(frame, 'assignment_go', { index: Number(index) });
+        await call(frame, 'assignment_answer', { index: Number(index), answer });
+      }
+      await call(frame, 'assignment_go', { index: 3 });
+      await call(frame, 'assignment_go', { index: 2 });
+      const before = await call(frame, 'assignment_state');
+      const rec = await lmsRecord(page);
+      const responses = Object.values(rec.interactions).map((i) => i[v12 ? 'student_response' : 'learner_response']);
+      assert.deepEqual(responses.slice(0, 3), [ANSWERS[0], ANSWERS[1], ANSWERS[2]].map((a) => a.slice(0, 255)));
+      assert.ok(rec.suspend_data.length > 2 && rec.suspend_data.length < 4096, `suspend data: ${rec.suspend_data.length} characters`);
+
+      // A reload is a new launch: the first terminated once, the second resumes where it was.
+      await frame.evaluate(() => location.reload());
+      [frame, state] = await openedFrame(page);
+      assert.equal(state.current, 2, 'the same item');
+      assert.deepEqual(state.interactions.map((i) => i.learner_response), before.interactions.map((i) => i.learner_response), 'the same answers');
+      assert.deepEqual(state.items.map((i) => i.status), before.items.map((i) => i.status));
+      const [init, term, commit] = v12 ? ['LMSInitialize', 'LMSFinish', 'LMSCommit'] : ['Initialize', 'Terminate', 'Commit'];
+      const two = await launches(page);
+      assert.deepEqual(two.map((c) => [c[init], c[term]]), [[1, 1], [1, 0]], 'one Initialize and one Terminate per launch');
+      assert.ok(two[0][commit] >= 1, 'the first launch committed before it terminated');
+
+      // The task: at most 50 samples and a path. The seed that solves it is searched here.
+      await call(frame, 'assignment_go', { index: 4 });
+      let solved = false;
+      for (let seed = 1; seed <= 40 && !solved; ++seed) {
+        await frame.evaluate((s) => { const api = document.getElementById('assignment').cspacelab; api.setParams({ samples: 45, seed: s }); api.run(); }, seed);
+        await frame.waitForFunction(() => { const s = document.getElementById('assignment').cspacelab.status(); return !s.busy && s.stepping.finished; });
+        solved = (await frame.evaluate(() => document.getElementById('assignment').cspacelab.state())).solved;
+      }
+      assert.ok(solved, 'a seed with 45 samples joins start and goal');
+      await call(frame, 'assignment_answer', { index: 4 });
+      state = await call(frame, 'assignment_submit', {});
+      assert.equal(state.submitted, true);
+      await page.waitForTimeout(1500);  // the lab commits at most once a second
+
+      // What the runtime holds: 7 of 8 points (P3 wrong), passed (pass 0.6).
+      if (v12) {
+        assert.deepEqual(await Promise.all(['raw', 'min', 'max'].map((k) => lmsGet(page, 'cmi.core.score.' + k).then(Number))), [87.5, 0, 100]);
+        assert.equal(await lmsGet(page, 'cmi.core.lesson_status'), 'passed');
+      } else {
+        assert.deepEqual(await Promise.all(['raw', 'min', 'max', 'scaled'].map((k) => lmsGet(page, 'cmi.score.' + k).then(Number))), [7, 0, 8, 0.875]);
+        assert.equal(await lmsGet(page, 'cmi.completion_status'), 'completed');
+        assert.equal(await lmsGet(page, 'cmi.success_status'), 'passed');
+      }
+      const done = Object.values((await lmsRecord(page)).interactions);
+      assert.equal(done.length, 5);
+      const wrong = v12 ? 'wrong' : 'incorrect';
+      assert.deepEqual([0, 1, 2, 4].map((i) => done[i].result), [wrong, 'correct', 'correct', 'correct']);
+      assert.deepEqual(done.slice(0, 3).map((i) => i[v12 ? 'student_response' : 'learner_response']), [ANSWERS[0], ANSWERS[1], ANSWERS[2]]);
+      assert.deepEqual(done.slice(1, 3).map((i) => i.type), ['numeric', 'numeric'], 'P10 and P12 ask for a number');
+      assert.deepEqual(done.slice(3).map((i) => i.type), v12 ? ['performance', 'performance'] : ['other', 'other']);
+      assert.deepEqual(done.map((i) => Number(i.weighting)), [1, 2, 2, 0, 3]);
+      for (const [n, it] of done.entries()) {
+        assert.equal(it.id, state.interactions[n].id.replace(/[^A-Za-z0-9_.:-]/g, '_'), 'the app\'s interaction id');
+        assert.equal(it.result, { correct: 'correct', incorrect: wrong, neutral: 'neutral' }[state.interactions[n].result]);
+      }
+      await screenshot(page, `scorm-${version}-submitted.png`);
+
+      // A last launch: the submitted assignment comes back for review; then the LMS closes it.
+      await frame.evaluate(() => location.reload());
+      [frame, state] = await openedFrame(page);
+      assert.equal(state.submitted, true);
+      assert.equal(state.current, 4);
+      assert.equal(state.grade.raw, 7);
+      await page.evaluate(() => { document.getElementById('sco').src = 'about:blank'; });
+      await page.waitForFunction(() => window.lms.launches.length === 4);
+      const counts = await launches(page);
+      for (const c of counts.slice(0, 3)) assert.deepEqual([c[init], c[term]], [1, 1], 'each launch: one Initialize, one Terminate');
+      assert.deepEqual([counts[3][init], counts[3][term]], [0, 0], 'the LMS\'s next launch object, unused');
+      assert.deepEqual(csp, [], 'no Content-Security-Policy refusals (scorm-again in the parent, lab-assignment.js in the frame)');
+      assert.deepEqual(errors, []);
+    } finally {
+      await browser.close();
+      server.close();
+    }
+  });
+}
