@@ -312,12 +312,8 @@
 
     /** Ends the LMS session, once: the time spent, suspend (so the next launch resumes), commit, finish. */
     finish() {
-      if (this.finished) return;
+      if (this.finished || !this.lms) return;  // a plain page keeps saving (it may come back from the back-forward cache)
       this.root.removeEventListener('cspacelab:assignment', this.onState);
-      if (!this.lms) {
-        this.finished = true;
-        return;
-      }
       const { v } = this.lms;
       // A finished assignment is kept for review: the next launch shows the answers again.
       this.lmsCall(v.set, v.exit, 'suspend');
