@@ -109,11 +109,12 @@ fi
 
 # ---------------------------------------------------------------- npm (browser tests)
 if [ "$mode" = all ]; then
-  # (axe-core: the accessibility test's checker, tests/e2e/accessibility.test.mjs)
+  # (axe-core: the accessibility test's checker, tests/e2e/accessibility.test.mjs; scorm-again:
+  # the SCORM runtime of tests/web/assignment.test.mjs and tests/e2e/scorm.test.mjs)
   if [ ! -d "$ROOT/node_modules/playwright-core" ] || [ ! -d "$ROOT/node_modules/axe-core" ] \
-     || [ "$ROOT/package-lock.json" -nt "$ROOT/node_modules/.package-lock.json" ]; then
+     || [ ! -d "$ROOT/node_modules/scorm-again" ] || [ "$ROOT/package-lock.json" -nt "$ROOT/node_modules/.package-lock.json" ]; then
     step "installing npm packages from package-lock.json"
-    (cd "$ROOT" && npm ci --no-audit --no-fund --loglevel=error) || fail "npm ci (playwright-core, axe-core)"
+    (cd "$ROOT" && npm ci --no-audit --no-fund --loglevel=error) || fail "npm ci (playwright-core, axe-core, scorm-again)"
   else
     step "npm packages: present"
   fi
