@@ -248,3 +248,38 @@ for (const version of ['1.2', '2004']) {
     }
   });
 }
+
+test('assignment= only loads lab-assignment.js where it is used, and refuses another site', { timeout: 120000 }, async () => {
+  const { server, url } = await serve(DIST, 0);
+  const browser = await launchBrowser();
+  try {
+    const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
+    await page.addInitScript(() => localStorage.setItem('cspacelab:v1:welcomed', '1'));
+    const errors = collectErrors(page);
+    const scripts = [];
+    page.on('request', (r) => { if (r.resourceType() === 'script') scripts.push(new URL(r.url()).pathname); });
+    await page.goto(url + 'index.html?lesson=collision');
+    await page.waitForFunction(() => window.cspacelab && window.cspacelab.status().frames >= 2, null, { timeout: 30000 });
+    assert.ok(scripts.includes('/lab.js') && !scripts.includes('/lab-assignment.js'), scripts.join(' '));
+    assert.equal(await page.evaluate(() => typeof window.CSpaceLabAssignment), 'undefined');
+
+    for (const [raw, why] of [['https://evil.example/a.json', 'is not on this site'], ['//evil.example/a.json', 'is not on this site'],
+                              ['missing.json', 'could not be loaded \\(HTTP 404\\)']]) {
+      await page.goto(url + 'index.html?assignment=' + encodeURIComponent(raw));
+      await page.waitForFunction(() => window.cspacelab && window.cspacelab.status().frames >= 2, null, { timeout: 30000 });
+      const made = await page.evaluate(async () => {
+        const a = await document.querySelector('[data-lab]').cspacelabAssignment;
+        return a ? a.state : 'no assignment';
+      });
+      assert.ok(made === null || made === 'no assignment', 'nothing opened');
+      const notice = (await page.evaluate(() => window.cspacelab.status().notice)) || '';
+      const text = typeof notice === 'string' ? notice : JSON.stringify(notice);
+      assert.match(text, new RegExp(why), raw);
+    }
+    // (the 404 of missing.json is the browser's console line for the failed fetch, nothing else)
+    assert.deepEqual(errors.filter((e) => !/404/.test(e)), []);
+  } finally {
+    await browser.close();
+    server.close();
+  }
+});
