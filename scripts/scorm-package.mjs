@@ -26,6 +26,20 @@ const ASSIGNMENT = 'assignment.json';
 const LEFT_OUT = new Set(['cspacelab-single.html']);
 
 const USAGE = 'usage: node scripts/scorm-package.mjs ASSIGNMENT.json --dist DIST --out DIR [--version 1.2|2004|both]';
+const HELP = `${USAGE}
+
+Writes DIR/NAME-scorm12.zip and/or DIR/NAME-scorm2004.zip (NAME: the assignment file's name
+without .json), SCORM packages an LMS imports, and prints {"packages": [{version, file, bytes,
+files}]}. Each holds the built site DIST (build/wasm/dist, without cspacelab-single.html), the
+assignment as assignment.json, launch.html (the lab in assignment mode) and imsmanifest.xml.
+
+  --dist DIST      the built site (cspacelab.wasm, index.html, the scripts)
+  --out DIR        where the zips go (made if missing)
+  --version V      1.2, 2004 (4th edition) or both (default)
+
+The assignment is checked with 'cspacelab assignment validate' first: $CSPACELAB_CLI, else
+build/native/src/cli/cspacelab. An invalid one is refused (exit status 2) with the CLI's
+message naming each item and field. docs/web.md, "Assignments in an LMS (SCORM)", has the rest.`;
 
 function fail(message, code = 2) {
   process.stderr.write(`scorm-package: ${message}\n`);
@@ -38,7 +52,7 @@ function parseArgs(argv) {
   for (let i = 0; i < argv.length; ++i) {
     const a = argv[i];
     if (a === '--help' || a === '-h') {
-      process.stdout.write(USAGE + '\n');
+      process.stdout.write(HELP + '\n');
       process.exit(0);
     }
     if (a === '--dist' || a === '--out' || a === '--version') {

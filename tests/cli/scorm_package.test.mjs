@@ -203,3 +203,10 @@ test('bad options and a missing site are one-line errors', () => {
   const only = pack(EXAMPLE, dist, tempDir(), '--version', '2004');
   assert.equal(JSON.parse(only.stdout).packages.length, 1);
 });
+
+test('--help states the contract', () => {
+  const r = spawnSync(process.execPath, [PACKAGER, '--help'], { encoding: 'utf8' });
+  assert.equal(r.status, 0);
+  for (const word of ['--dist', '--out', '--version', 'NAME-scorm12.zip', 'NAME-scorm2004.zip', 'CSPACELAB_CLI', '"packages"'])
+    assert.ok(r.stdout.includes(word), word);
+});
