@@ -99,6 +99,13 @@
     return String(Math.round(Number(x) * 10000) / 10000);
   }
 
+  const DECIMAL = /^-?\d{1,10}(\.\d{1,18})?$/;  // what both versions take as a number
+
+  /** A value as the LMS's text: strings as they are, anything else as JSON, none as ''. */
+  function text(x) {
+    return x === undefined || x === null ? '' : typeof x === 'string' ? x : JSON.stringify(x);
+  }
+
   /** An identifier both versions take: letters, digits and - _ . : only, at most 250 characters. */
   function identifier(text, index) {
     const s = String(text || '').replace(/[^A-Za-z0-9_.:-]/g, '_').slice(0, 250);
@@ -137,14 +144,20 @@
     }
     (state.interactions || []).forEach((it, n) => {
       const p = `cmi.interactions.${n}.`;
-      const type = v.types[it.type] || v.types.other;
+      const response = text(it.learner_response);
+      const correct = text(it.correct_response);
+      // A numeric item answered with text ("pi/2") is reported as fill-in: the runtime refuses
+      // text as a numeric response.
+      const numeric = it.type === 'numeric' && [response, correct].every((x) => x === '' || DECIMAL.test(x));
+      const type = numeric ? v.types.numeric : it.type === 'numeric' ? v.types['fill-in'] : v.types[it.type] || v.types.other;
       out.push([p + 'id', identifier(it.id, n)], [p + 'type', type]);
       if (v === V2004 && it.description) out.push([p + 'description', String(it.description).slice(0, 250)]);
-      const response = it.learner_response === undefined || it.learner_response === null ? '' : String(it.learner_response);
       // An unanswered item has no response (an empty one is not a number); 1.2 holds 255 characters.
       if (response !== '') out.push([p + v.response, response.slice(0, v === V12 ? 255 : 4000)]);
-      if (it.correct_response !== undefined && it.correct_response !== null)
-        out.push([p + 'correct_responses.0.pattern', String(it.correct_response).slice(0, v === V12 ? 255 : 4000)]);
+      // The right answer where its pattern is plain: a number, or text without 2004's {…} and [,]
+      // syntax. (A task's condition is not a pattern: runtimes refuse some as type mismatches.)
+      if (correct !== '' && (type === 'numeric' || (type === 'fill-in' && !/[{}[\]]/.test(correct))))
+        out.push([p + 'correct_responses.0.pattern', correct.slice(0, 250)]);
       if (v.results[it.result]) out.push([p + 'result', v.results[it.result]]);
       if (typeof it.weighting === 'number') out.push([p + 'weighting', decimal(it.weighting)]);
     });

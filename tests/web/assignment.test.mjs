@@ -268,3 +268,33 @@ test('assignment=: a relative URL of the page\'s own site only', () => {
   for (const raw of ['', 'a\\b', 'a\nb'])
     assert.throws(() => Assignment.assignmentUrl(raw, page), /is not a relative URL of this site/, JSON.stringify(raw));
 });
+
+test('a numeric item answered with text is reported as fill-in; plain right answers only; every value is one the runtimes take', () => {
+  const state = {
+    grade: { raw: 3, min: 0, max: 8, scaled: 0.375, completed: true, passed: false },
+    interactions: [
+      { id: 'item-1', type: 'numeric', description: 'P10', learner_response: 'pi/2', result: 'incorrect', weighting: 2, correct_response: '1.5708' },
+      { id: 'item-2', type: 'numeric', description: 'P12', learner_response: '7', result: 'correct', weighting: 2, correct_response: '7' },
+      { id: 'item-3', type: 'fill-in', description: 'P3', learner_response: 'T^2', result: 'correct', weighting: 1, correct_response: 'T^2' },
+      { id: 'item 4', type: 'other', description: '', learner_response: '', result: 'neutral', weighting: 0 },
+      { id: 'item-5', type: 'other', description: 'task', learner_response: 'solved: true', result: 'incorrect', weighting: 3,
+        correct_response: { solved: true, samples: { max: 50 } } },
+    ],
+    suspend: { v: 1 },
+  };
+  for (const [V, Api] of [[Assignment.V12, Scorm12API], [Assignment.V2004, Scorm2004API]]) {
+    const values = new Map(Assignment.valuesOf(state, V));
+    const fillIn = 'fill-in';
+    assert.equal(values.get('cmi.interactions.0.type'), fillIn, 'text in a numeric item');
+    assert.equal(values.get('cmi.interactions.1.type'), 'numeric');
+    assert.equal(values.get('cmi.interactions.3.id'), 'item_4');
+    assert.ok(!values.has(`cmi.interactions.3.${V.response}`), 'no response for an unanswered item');
+    assert.equal(values.get('cmi.interactions.1.correct_responses.0.pattern'), '7');
+    assert.equal(values.get('cmi.interactions.2.correct_responses.0.pattern'), 'T^2');
+    assert.ok(!values.has('cmi.interactions.4.correct_responses.0.pattern'), 'a task\'s condition is no pattern');
+    const lms = new Api({ logLevel: 5 });
+    assert.equal(lms[V.init](''), 'true');
+    for (const [element, value] of values)
+      assert.equal(lms[V.set](element, value), 'true', `SCORM ${V.version} takes ${element} = ${value} (${lms[V.error]()})`);
+  }
+});
