@@ -1,0 +1,187 @@
+// One student's work on an assignment (core/teaching/assignment_session.hpp): answers recorded
+// and graded by the grade's code, statuses, the task's state cut to what its check reads, the
+// suspend object small and resumed exactly, answers frozen by submission, and the review only
+// after it. Right answers are computed here from the exercise's given numbers.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "core/teaching/assignment_session.hpp"
+
+namespace {
+
+using json = nlohmann::json;
+using namespace csl;
+
+Assignment example() {
+  const json j = json::parse(R"({"format": "cspacelab-assignment", "version": 1, "title": "Week 3", "pass": 0.5,
+    "items": [
+      {"kind": "exercise", "problem": "P10", "points": 2},
+      {"kind": "explore", "title": "Look", "prompt": "Step it.", "lesson": "step-prm"},
+      {"kind": "task", "title": "Find a path", "prompt": "At most 50 samples.", "lesson": "step-prm", "points": 3,
+       "check": {"all": [{"pointer": "/solved", "equals": true}, {"pointer": "/params/samples", "max": 50}]}}]})");
+  AssignmentParse p = parse_assignment(j);
+  REQUIRE(p.assignment);
+  return *p.assignment;
+}
+
+// The S^1 distance written again: the least |q2 - q1 + 2 pi k|.
+std::string s1_answer(const Exercise& e) {
+  const double q1 = e.given["q1"].get<double>(), q2 = e.given["q2"].get<double>();
+  double best = 1e300;
+  for (int k = -4; k <= 4; ++k) best = std::min(best, std::fabs(q2 - q1 + 2 * 3.14159265358979323846 * k));
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6f", best);
+  return buf;
+}
+
+// A state as the step-prm lesson answers it, with much the check does not read.
+json big_state(bool solved, int samples) {
+  json vertices = json::array();
+  for (int i = 0; i < 500; ++i) vertices.push_back({i * 0.001, 0.5});
+  return {{"solved", solved}, {"params", {{"samples", samples}, {"k", 8}, {"seed", 3}}}, {"roadmap", {{"vertices", vertices}}},
+          {"scene_name", "A wall with a gap"}};
+}
+
+}  // namespace
+
+TEST_CASE("assignment session: answers graded by the grade's code, statuses and totals") {
+  AssignmentSession s = start_assignment_session(example(), "student-7");
+  json st = assignment_session_json(s);
+  CHECK(st["items"][0]["status"] == "open");
+  CHECK(st["items"][0]["id"] == "item-1");
+  CHECK(st["grade"]["max"] == 5);  // 2 + 0 (explore) + 3
+  CHECK(st["grade"]["raw"] == 0);
+  CHECK(st["interactions"][0]["result"] == "neutral");
+  CHECK(st["interactions"][0]["type"] == "numeric");
+  CHECK(st["interactions"][1]["type"] == "other");
+
+  const Exercise e = assignment_exercise(s.assignment, 0, "student-7");
+  CHECK(st["items"][0]["seed"] == e.seed);
+  record_exercise_answer(s, 0, "abc");
+  CHECK(assignment_session_json(s)["items"][0]["status"] == "answered");  // unreadable: no attempt
+  record_exercise_answer(s, 0, "0.0");
+  st = assignment_session_json(s);
+  CHECK(st["items"][0]["status"] == (s1_answer(e) == "0.000000" ? "correct" : "incorrect"));
+  record_exercise_answer(s, 0, s1_answer(e));
+  record_visit(s, 1);
+  st = assignment_session_json(s);
+  CHECK(st["items"][0]["status"] == "correct");
+  CHECK(st["items"][0]["feedback"] == "Right.");
+  CHECK(st["items"][1]["status"] == "viewed");
+  CHECK(st["grade"]["raw"] == 2);
+  CHECK(st["grade"]["completed"] == false);
+
+  // The task: a state with too many samples, then one that meets the check.
+  record_task_state(s, 2, big_state(true, 80));
+  CHECK(assignment_session_json(s)["items"][2]["status"] == "incorrect");
+  record_task_state(s, 2, big_state(true, 50));
+  st = assignment_session_json(s);
+  CHECK(st["items"][2]["status"] == "correct");
+  CHECK(st["grade"]["raw"] == 5);
+  CHECK(st["grade"]["scaled"] == 1.0);
+  CHECK(st["grade"]["completed"] == true);
+  CHECK(st["grade"]["passed"] == true);
+  // Kept of the state: what the check reads, nothing else.
+  CHECK(st["items"][2]["answer"] == json({{"solved", true}, {"params", {{"samples", 50}}}}));
+  CHECK(st["interactions"][2]["learner_response"].get<std::string>().find("50") != std::string::npos);
+
+  // The answers it reports grade to the same totals through the grade's reader (the CLI's).
+  AnswerSheetParse sheet = parse_answer_sheet(st["answers"], s.assignment);
+  REQUIRE(sheet.sheet);
+  const AssignmentGrade g = grade_assignment(s.assignment, *sheet.sheet, "student-7");
+  CHECK(g.raw == st["grade"]["raw"].get<double>());
+  CHECK(g.completed);
+}
+
+TEST_CASE("assignment session: wrong kinds and out-of-range items change nothing") {
+  AssignmentSession s = start_assignment_session(example(), "");
+  CHECK_THROWS_WITH_AS(record_visit(s, 0), doctest::Contains("is an exercise item"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(record_exercise_answer(s, 3, "1"), doctest::Contains("0 to 2"), std::invalid_argument);
+  CHECK_THROWS_AS(record_task_state(s, 1, json::object()), std::invalid_argument);
+  CHECK_THROWS_AS(record_exercise_answer(s, 0, std::string(kMaxAnswerText + 1, '1')), std::invalid_argument);
+  CHECK_THROWS_AS(start_assignment_session(example(), std::string(kMaxLearnerId + 1, 'x')), std::invalid_argument);
+  for (const auto& a : s.answers) CHECK(!a);
+}
+
+TEST_CASE("assignment session: the excerpt of a state judges as the state does") {
+  std::vector<std::string> errors;
+  const auto cond = parse_state_condition(
+      json::parse(R"({"any": [{"pointer": "/roadmap", "equals": 3}, {"all": [{"pointer": "/a/b", "min": 1},
+                  {"pointer": "/a", "equals": null}, {"pointer": "/list/1", "max": 2}, {"pointer": "/missing", "equals": 1}]}]})"),
+      "check", errors);
+  REQUIRE(cond);
+  const json state = {{"roadmap", {{"vertices", json::array({1, 2, 3})}}}, {"a", {{"b", 4}, {"c", "x"}}}, {"list", {5, 1, 7}}};
+  const json ex = task_state_excerpt(*cond, state);
+  CHECK(ex["roadmap"] == json::object());  // in place of the roadmap: no comparison takes either
+  CHECK(ex["a"] == json({{"b", 4}}));        // /a's stand-in did not overwrite /a/b
+  CHECK(ex.at(json::json_pointer("/list/1")) == 1);
+  CHECK(!ex.contains("missing"));
+  CHECK(evaluate_state_condition(*cond, ex).met == evaluate_state_condition(*cond, state).met);
+  CHECK(evaluate_state_condition(*cond, ex).lines.size() == evaluate_state_condition(*cond, state).lines.size());
+}
+
+TEST_CASE("assignment session: the suspend object is small and resumes exactly") {
+  AssignmentSession s = start_assignment_session(example(), "student-7");
+  record_exercise_answer(s, 0, "pi/2");
+  record_task_state(s, 2, big_state(true, 50));
+  s.current = 2;
+  const json suspend = session_suspend(s);
+  CHECK(suspend.dump().size() < 200);  // the roadmap of the state is not in it
+  CHECK(suspend == json::parse(R"({"v": 1, "c": 2, "s": 0, "a": [[0, "pi/2"], [2, {"params": {"samples": 50}, "solved": true}]]})"));
+
+  AssignmentSession r = start_assignment_session(example(), "student-7");
+  // Through its text, as an LMS keeps it.
+  CHECK(resume_session(r, json::parse(suspend.dump())).empty());
+  CHECK(assignment_session_json(r) == assignment_session_json(s));
+
+  // Submitted: the answers are final, the review shows what was expected.
+  s.submitted = true;
+  CHECK_THROWS_WITH_AS(record_visit(s, 1), doctest::Contains("submitted"), std::invalid_argument);
+  const json st = assignment_session_json(s);
+  CHECK(st["items"][0].contains("expected"));
+  CHECK(!st["items"][0]["explanation"].get<std::string>().empty());
+  CHECK(st["interactions"][0].contains("correct_response"));
+  CHECK(!assignment_session_json(r)["items"][0].contains("expected"));
+  CHECK(!assignment_session_json(r)["interactions"][0].contains("correct_response"));
+  AssignmentSession r2 = start_assignment_session(example(), "student-7");
+  CHECK(resume_session(r2, session_suspend(s)).empty());
+  CHECK(r2.submitted);
+}
+
+TEST_CASE("assignment session: a bad suspend object is refused whole, naming each problem") {
+  AssignmentSession s = start_assignment_session(example(), "");
+  record_exercise_answer(s, 0, "1");
+  const json before = assignment_session_json(s);
+  const std::vector<std::string> errors =
+      resume_session(s, json::parse(R"({"v": 2, "c": 9, "s": 3, "a": [[0, 5], [1, 1], [1, 1], [7, "x"]], "x": 1})"));
+  REQUIRE(errors.size() >= 6);
+  const auto has = [&](const std::string& part) {
+    for (const std::string& e : errors)
+      if (e.find(part) != std::string::npos) return true;
+    return false;
+  };
+  CHECK(has("\"x\": unknown field"));
+  CHECK(has("v: 1"));
+  CHECK(has("c: the current item, 0 to 2"));
+  CHECK(has("s: 0 or 1"));
+  CHECK(has("a[3]: [item, answer]"));
+  CHECK(has("answer: what the student typed"));
+  CHECK(has("answered twice"));
+  for (const std::string& e : errors) CHECK(e.rfind("resume: ", 0) == 0);
+  CHECK(assignment_session_json(s) == before);
+}
+
+TEST_CASE("assignment session: an answer that would overflow the suspend data is refused") {
+  json j = json::parse(R"({"format": "cspacelab-assignment", "version": 1, "title": "Many", "items": []})");
+  for (int i = 0; i < 10; ++i) j["items"].push_back({{"kind", "exercise"}, {"problem", "P10"}});
+  AssignmentParse p = parse_assignment(j);
+  REQUIRE(p.assignment);
+  AssignmentSession s = start_assignment_session(*p.assignment, "");
+  for (int i = 0; i < 4; ++i) record_exercise_answer(s, i, std::string(900, '1'));
+  CHECK_THROWS_WITH_AS(record_exercise_answer(s, 4, std::string(900, '2')), doctest::Contains("too long"), std::invalid_argument);
+  CHECK(!s.answers[4]);
+  CHECK(session_suspend(s).dump().size() < kMaxSuspendChars);
+}
