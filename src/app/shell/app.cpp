@@ -116,6 +116,50 @@ json App::lesson_state(const json& args) const {
   return out;
 }
 
+json App::lesson_state_of(const std::string& id) const {
+  const auto it = instances_.find(id);
+  const LessonInfo* info = find_lesson(id);
+  const std::string name = info ? info->name : id;
+  if (it == instances_.end() || !it->second) throw ApiError(name + " is not open yet: open the item in the lab first");
+  Lesson& l = *it->second;  // (scene() is not const)
+  if (l.stepper() && l.stepper()->busy()) throw ApiError(name + " is still working: check again when it has finished");
+  json out = l.state(json::object());
+  strip_answer_fields(out, instructor::hidden_answers(id));
+  if (out.is_object() && l.scene()) out["scene_name"] = l.scene()->name;
+  return out;
+}
+
+std::string App::show_item(const std::string& id, const json& setup, bool preset, bool view) {
+  if (!find_lesson(id)) return "the lab has no lesson \"" + id + "\"";
+  // Locks hold in an assignment too: the item is shown as far as they allow, and the card says
+  // what they kept (the item can still be answered).
+  if (!instructor::lesson_allowed(id)) return instructor::lesson_refusal();
+  std::string note;
+  if (preset) {
+    json s = setup;
+    if (s.contains("scene") && instructor::scene_locked()) {
+      s.erase("scene");
+      note = instructor::scene_refusal();
+    }
+    try {
+      show_in_lesson(id, s);
+    } catch (const std::exception& e) {
+      // A parameter the instructor fixed: the scene without the parameters, else as it is.
+      if (note.empty()) note = e.what();
+      if (s.contains("scene")) {
+        s.erase("params");
+        try {
+          show_in_lesson(id, s);
+        } catch (const std::exception&) {
+        }
+      }
+    }
+  }
+  select_lesson(id);
+  if (view && ctx_.compact) tab_ = Tab::View;
+  return note;
+}
+
 void App::open_problem(const HomeworkProblem& p, bool preset) {
   if (!find_lesson(p.lesson)) throw ApiError("the lab has no lesson \"" + p.lesson + "\" for " + p.id);
   if (!instructor::lesson_allowed(p.lesson)) throw ApiError(instructor::lesson_refusal());
@@ -410,6 +454,7 @@ void App::register_api() {
             return json{{"lesson", lesson_id_}, {"steps", stepping(*lesson_).steps()}};
           });
   homework_.register_api(api);
+  assignment_.register_api(api);
   web::register_api(api, ctx_);  // notify, page_state, bundled_scenes: the page around the app
   theme::register_api(api);      // the colours that carry meaning (accessibility tests)
   api.add("log", "the event log's lines, first its note if it has one ({step: 0, text, note: true}: where a restored lesson came from)", [this](const json&) {

@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 
+#include "app/shell/assignment_panel.hpp"
 #include "app/shell/context.hpp"
 #include "app/shell/homework_panel.hpp"
 #include "app/shell/lesson.hpp"
@@ -54,6 +55,12 @@ class App {
   void open_problem(const HomeworkProblem& problem, bool preset);
   // Shows `lesson` with {scene?, params} (an exercise's numbers) applied to it.
   void show_in_lesson(const std::string& lesson, const nlohmann::json& setup);
+  // An assignment's item in the lab (AssignmentPanel::Show): the lesson, with the setup if
+  // `preset` as far as the instructor's locks allow; "" or why not all of it.
+  std::string show_item(const std::string& lesson, const nlohmann::json& setup, bool preset, bool view);
+  // Lesson `id`'s state() as the API answers it (hidden answers out, scene_name in); throws
+  // ApiError if it is not open or still working.
+  nlohmann::json lesson_state_of(const std::string& id) const;
   // What the instructor fixed (app_instructor.cpp): the API's restrict, the
   // scene and parameters each lesson is held to, the checks before an edit.
   void register_instructor_api();
@@ -104,6 +111,11 @@ class App {
   std::map<std::string, LessonExtras> extras_;
   HomeworkPanel homework_{[this](const HomeworkProblem& p, bool preset) { open_problem(p, preset); },
                           [this](const std::string& lesson, const nlohmann::json& setup) { show_in_lesson(lesson, setup); }};
+  AssignmentPanel assignment_{
+      [this](const std::string& lesson, const nlohmann::json& setup, bool preset, bool view) {
+        return show_item(lesson, setup, preset, view);
+      },
+      [this](const std::string& lesson) { return lesson_state_of(lesson); }};
 };
 
 }  // namespace csl::app

@@ -93,6 +93,7 @@ void App::wide_frame() {
   ImGui::Separator();
   const float panel_w = std::clamp(vp->WorkSize.x * 0.3f, 280.0f, 380.0f);
   panel::begin(panel_w);
+  assignment_.card();
   homework_.card(lesson_id_);
   instructor_note();
   playback_controls();
@@ -116,6 +117,7 @@ void App::compact_frame() {
   if (tab_ == Tab::Controls) {
     // The side panel as a page of its own, the whole width.
     panel::begin(ImGui::GetContentRegionAvail().x);
+    assignment_.card();
     homework_.card(lesson_id_);
     instructor_note();
     playback_controls();

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "app/shell/card.hpp"
 #include "app/shell/instructor.hpp"
 #include "app/shell/theme.hpp"
 #include "app/shell/ui.hpp"
@@ -14,42 +15,6 @@ namespace csl::app {
 using json = nlohmann::json;
 
 namespace {
-
-// Text with line breaks, each line wrapped at spaces only (numbers stay whole).
-void paragraphs(const std::string& text) {
-  std::size_t i = 0;
-  while (i <= text.size()) {
-    std::size_t j = text.find('\n', i);
-    if (j == std::string::npos) j = text.size();
-    ui::text_flow(text.substr(i, j - i));
-    i = j + 1;
-  }
-}
-
-// A tinted box behind what `body` draws, as wide as the panel (ImGui 1.86 has no child window
-// that fits its content's height).
-template <class Body>
-void boxed(ImU32 colour, Body body) {
-  ImDrawList* dl = ImGui::GetWindowDrawList();
-  dl->ChannelsSplit(2);
-  dl->ChannelsSetCurrent(1);
-  const float pad = ImGui::GetStyle().FramePadding.x;
-  ImGui::Dummy(ImVec2(0, pad * 0.5f));
-  ImGui::Indent(pad);
-  ImGui::BeginGroup();
-  body();
-  ImGui::EndGroup();
-  ImGui::Unindent(pad);
-  const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
-  ImGui::Dummy(ImVec2(0, pad * 0.5f));
-  dl->ChannelsSetCurrent(0);
-  const float left = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMin().x;
-  const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
-  dl->AddRectFilled(ImVec2(left, lo.y - pad), ImVec2(right, hi.y + pad), colour, 4.0f);
-  // High contrast: the tint is gone (white or black), an edge marks the card instead.
-  if (theme::look().high_contrast) dl->AddRect(ImVec2(left, lo.y - pad), ImVec2(right, hi.y + pad), theme::kInk, 4.0f);
-  dl->ChannelsMerge();
-}
 
 std::uint64_t seed_arg(const json& args) {
   const json& v = args["seed"];
@@ -209,7 +174,7 @@ void HomeworkPanel::menu_button() {
 
 void HomeworkPanel::card(const std::string& lesson_id) {
   if (web::page().welcome && problem_.empty()) {
-    boxed(theme::kCardWelcome, [&] {
+    card::boxed(theme::kCardWelcome, [&] {
     // Short: a first visit's panel must still fit 1280 x 800 with it (tests/e2e/panel-layout).
     ImGui::TextWrapped("Welcome! Homework P1 to P13: each has a tool here, and an exercise the lab checks.");
     if (ImGui::Button("Open the homework map")) {
@@ -233,7 +198,7 @@ void HomeworkPanel::card(const std::string& lesson_id) {
   if (!p || p->lesson != lesson_id) return;
 
   ImGui::PushID("homework");  // its Check and answer field apart from a lesson's own
-  boxed(theme::kCardProblem, [&] { problem_body(*p); });
+  card::boxed(theme::kCardProblem, [&] { problem_body(*p); });
   ImGui::PopID();
   ImGui::Spacing();
 }
@@ -247,7 +212,7 @@ void HomeworkPanel::problem_body(const HomeworkProblem& problem) {
   ImGui::Separator();
   const Exercise& e = *exercise_;
   ImGui::TextDisabled("Exercise %s, numbers no. %llu", e.id.c_str(), static_cast<unsigned long long>(e.seed));
-  paragraphs(e.prompt);
+  card::paragraphs(e.prompt);
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
   ImGui::TextWrapped("Answer: %s", e.format_hint.c_str());
   ImGui::PopStyleColor();
@@ -271,7 +236,7 @@ void HomeworkPanel::problem_body(const HomeworkProblem& problem) {
     ImGui::PushStyleColor(ImGuiCol_Text, checked_->correct ? theme::vec4(theme::kTextGood) : theme::vec4(theme::kTextBad));
     ImGui::TextWrapped("%s", checked_->correct ? "Right." : "Not right yet.");
     ImGui::PopStyleColor();
-    paragraphs(checked_->explanation);
+    card::paragraphs(checked_->explanation);
   }
   // Predict, then reveal: the exercise's numbers go into the tool once the student has answered.
   if (checked_) {

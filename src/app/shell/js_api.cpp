@@ -24,8 +24,9 @@ void JsApi::add(const std::string& name, const std::string& help, ApiHandler han
 }
 
 std::string JsApi::call(const std::string& request) const {
-  // A message is one printable line whatever it quotes (a key, a scene's name, a command).
-  auto error = [](const std::string& message) { return text(json{{"ok", false}, {"error", printable(message, 600)}}); };
+  // A message is one printable line whatever it quotes (a key, a scene's name, a command). Long
+  // enough for every problem of an assignment file at once (assignment_open), each ~100 bytes.
+  auto error = [](const std::string& message) { return text(json{{"ok", false}, {"error", printable(message, 8000)}}); };
   json req;
   try {
     // Strict and at most 64 levels deep: handlers copy their arguments, and copying a value

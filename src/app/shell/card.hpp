@@ -1,0 +1,48 @@
+#pragma once
+// The tinted cards at the top of the side panel (the homework's problem, the assignment) and
+// the text in them.
+#include <string>
+
+#include "app/shell/theme.hpp"
+#include "app/shell/ui.hpp"
+#include "imgui.h"
+
+namespace csl::app::card {
+
+/// Text with line breaks, each line wrapped at spaces only (numbers stay whole).
+inline void paragraphs(const std::string& text) {
+  std::size_t i = 0;
+  while (i <= text.size()) {
+    std::size_t j = text.find('\n', i);
+    if (j == std::string::npos) j = text.size();
+    ui::text_flow(text.substr(i, j - i));
+    i = j + 1;
+  }
+}
+
+/// A tinted box behind what `body` draws, as wide as the panel (ImGui 1.86 has no child window
+/// that fits its content's height).
+template <class Body>
+void boxed(ImU32 colour, Body body) {
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  dl->ChannelsSplit(2);
+  dl->ChannelsSetCurrent(1);
+  const float pad = ImGui::GetStyle().FramePadding.x;
+  ImGui::Dummy(ImVec2(0, pad * 0.5f));
+  ImGui::Indent(pad);
+  ImGui::BeginGroup();
+  body();
+  ImGui::EndGroup();
+  ImGui::Unindent(pad);
+  const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+  ImGui::Dummy(ImVec2(0, pad * 0.5f));
+  dl->ChannelsSetCurrent(0);
+  const float left = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMin().x;
+  const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+  dl->AddRectFilled(ImVec2(left, lo.y - pad), ImVec2(right, hi.y + pad), colour, 4.0f);
+  // High contrast: the tint is gone (white or black), an edge marks the card instead.
+  if (theme::look().high_contrast) dl->AddRect(ImVec2(left, lo.y - pad), ImVec2(right, hi.y + pad), theme::kInk, 4.0f);
+  dl->ChannelsMerge();
+}
+
+}  // namespace csl::app::card
