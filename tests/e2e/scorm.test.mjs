@@ -1,7 +1,8 @@
 // The SCORM packages in a stand-in LMS: each version's zip (scripts/scorm-package.mjs) unpacked
 // and served, its launch page in an iframe of a parent page that provides the LMS's API object
 // with a real SCORM runtime (npm scorm-again) under a strict Content-Security-Policy. The example
-// assignment is worked through with the app's assignment commands, answers computed here
+// assignment is worked through with the mouse on the app's assignment card (an answer typed,
+// an item opened, Submit) and the app's assignment commands, answers computed here
 // independently (as tests/cli/assignment.test.mjs does); then what the lab reported is read back
 // from the runtime: score, completion and success, each interaction. A reload of the iframe is
 // a new launch (the stand-in LMS hands the suspend data back): the same answers and item come
@@ -132,6 +133,35 @@ async function openedFrame(page) {
   return [frame, await call(frame, 'assignment_state')];
 }
 
+/** Waits until the lab in `frame` has drawn `count` more frames (ImGui reads input once a frame). */
+async function labFrames(frame, count = 2) {
+  const start = await frame.evaluate(() => window.cspacelab.status().frames);
+  await frame.waitForFunction((n) => window.cspacelab.status().frames >= n, start + count);
+}
+
+/** A real click on one of the assignment card's controls (page_state().buttons) in the LMS's frame. */
+async function clickControl(page, frame, name) {
+  await labFrames(frame, 2);
+  const inner = await frame.evaluate((n) => {
+    const a = window.cspacelab;
+    const r = a.pageState().buttons[n];
+    const box = a.module.canvas.getBoundingClientRect();
+    return r ? { x: box.left + (r[0] + r[2]) / 2, y: box.top + (r[1] + r[3]) / 2 } : null;
+  }, name);
+  assert.ok(inner, `the card shows ${name}`);
+  const offset = await page.evaluate(() => {
+    const f = document.getElementById('sco');
+    const r = f.getBoundingClientRect();
+    return { x: r.left + f.clientLeft, y: r.top + f.clientTop };
+  });
+  await page.mouse.move(offset.x + inner.x, offset.y + inner.y);
+  await labFrames(frame, 2);
+  await page.mouse.down();
+  await labFrames(frame, 1);
+  await page.mouse.up();
+  await labFrames(frame, 2);
+}
+
 const call = (frame, cmd, args = {}) =>
   frame.evaluate(([c, a]) => document.getElementById('assignment').cspacelab.call(c, a), [cmd, args]);
 const lmsGet = (page, element) =>
@@ -168,13 +198,26 @@ for (const version of ['1.2', '2004']) {
       if (v12) assert.equal(await lmsGet(page, 'cmi.core.lesson_status'), 'incomplete');
       else assert.deepEqual([await lmsGet(page, 'cmi.completion_status'), await lmsGet(page, 'cmi.success_status')], ['incomplete', 'unknown']);
 
-      // The exercises, answered through the app's commands (P3 wrong on purpose); the explore item visited.
-      for (const [index, answer] of Object.entries(ANSWERS)) {
-        await call(frame, 'assignment_go', { index: Number(index) });
-        await call(frame, 'assignment_answer', { index: Number(index), answer });
+      // P3 and P10 answered through the app's commands (P3 wrong on purpose), P12 typed into the
+      // card's answer field with the mouse and keys, the explore item opened from the card.
+      for (const index of [0, 1]) {
+        await call(frame, 'assignment_go', { index });
+        await call(frame, 'assignment_answer', { index, answer: ANSWERS[index] });
       }
-      await call(frame, 'assignment_go', { index: 3 });
-      await call(frame, 'assignment_go', { index: 2 });
+      await clickControl(page, frame, 'assignment-item-2');
+      assert.equal((await call(frame, 'assignment_state')).current, 2, 'the list\'s item opened');
+      await clickControl(page, frame, 'assignment-answer');
+      for (const key of [...ANSWERS[2], 'Enter']) {
+        await page.keyboard.press(key);
+        await labFrames(frame, 1);
+      }
+      await frame.waitForFunction(() => window.cspacelab.call('assignment_state').items[2].status !== 'open');
+      await clickControl(page, frame, 'assignment-item-3');
+      await clickControl(page, frame, 'assignment-open-item');
+      state = await call(frame, 'assignment_state');
+      assert.deepEqual(state.items.map((i) => i.status), ['incorrect', 'correct', 'correct', 'viewed', 'open']);
+      assert.equal(state.current, 3);
+      await page.waitForFunction(() => Object.keys(window.lms.api.renderCMIToJSONObject().cmi.interactions).length === 5);
       const before = await call(frame, 'assignment_state');
       const rec = await lmsRecord(page);
       const responses = Object.values(rec.interactions).map((i) => i[v12 ? 'student_response' : 'learner_response']);
@@ -184,7 +227,7 @@ for (const version of ['1.2', '2004']) {
       // A reload is a new launch: the first terminated once, the second resumes where it was.
       await frame.evaluate(() => location.reload());
       [frame, state] = await openedFrame(page);
-      assert.equal(state.current, 2, 'the same item');
+      assert.equal(state.current, 3, 'the same item');
       assert.deepEqual(state.interactions.map((i) => i.learner_response), before.interactions.map((i) => i.learner_response), 'the same answers');
       assert.deepEqual(state.items.map((i) => i.status), before.items.map((i) => i.status));
       const [init, term, commit] = v12 ? ['LMSInitialize', 'LMSFinish', 'LMSCommit'] : ['Initialize', 'Terminate', 'Commit'];
@@ -202,8 +245,13 @@ for (const version of ['1.2', '2004']) {
       }
       assert.ok(solved, 'a seed with 45 samples joins start and goal');
       await call(frame, 'assignment_answer', { index: 4 });
-      state = await call(frame, 'assignment_submit', {});
+      // Submit with the mouse, through the card's confirmation.
+      await clickControl(page, frame, 'assignment-submit');
+      await clickControl(page, frame, 'assignment-submit-confirm');
+      state = await call(frame, 'assignment_state');
       assert.equal(state.submitted, true);
+      const notice = JSON.stringify(await frame.evaluate(() => window.cspacelab.status().notice) || '');
+      assert.doesNotMatch(notice, /LMS.*refused/, 'the LMS took every value');
       await page.waitForTimeout(1500);  // the lab commits at most once a second
 
       // What the runtime holds: 7 of 8 points (P3 wrong), passed (pass 0.6).
