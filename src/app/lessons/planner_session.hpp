@@ -22,6 +22,7 @@
 #include <optional>
 #include <string>
 
+#include "app/lessons/recording_planner.hpp"
 #include "app/shell/context.hpp"
 #include "app/shell/event_log.hpp"
 #include "app/shell/stepper.hpp"
@@ -48,11 +49,16 @@ class PlannerSession final : public Stepper {
   /// replay catches up).
   const Planner& shown() const { return *shown_.planner; }
   /// The same, as the planner type the lesson made (what only that type draws: PRM's candidate
-  /// pairs); throws std::bad_cast if it made another.
+  /// pairs), looking through a RecordingPlanner to the planner it watches; throws std::bad_cast
+  /// if the lesson made another.
   template <class P>
   const P& shown_as() const {
-    return dynamic_cast<const P&>(*shown_.planner);
+    const Planner* p = shown_.planner.get();
+    if (const auto* r = dynamic_cast<const RecordingPlanner*>(p)) p = &r->inner();
+    return dynamic_cast<const P&>(*p);
   }
+  /// The recording around the shown planner (a lesson that made it with recorded()), or null.
+  const RecordingPlanner* recording() const { return dynamic_cast<const RecordingPlanner*>(shown_.planner.get()); }
   /// The current scene's world (follows a drag; the planner's may be an older scene's). A request
   /// or an edit replaces it: hold no reference to it across one.
   const CollisionWorld& world() const { return *world_; }

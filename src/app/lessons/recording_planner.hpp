@@ -1,5 +1,5 @@
 #pragma once
-// A planner that watches another one step by step (the Compare planners lesson): it keeps the
+// A planner that watches another one step by step (the Compare planners and Step PRM lessons): it keeps the
 // samples the planner rejected, which no planner stores (its roadmap holds only the free ones),
 // and the wall-clock time its steps took, for the lesson's table only (never a test's figure).
 // Everything else is the wrapped planner's: the state after k steps is the same, since
@@ -58,6 +58,12 @@ class RecordingPlanner final : public Planner {
   long edge_checks() const override { return inner_->edge_checks(); }
   long evaluations() const override { return inner_->evaluations(); }
   int samples_drawn() const override { return inner_->samples_drawn(); }
+  const std::vector<unsigned char>* checked_edge_flags() const override { return inner_->checked_edge_flags(); }
+  long edges_unchecked() const override { return inner_->edges_unchecked(); }
+
+  /// The planner it watches: what only its type draws (PRM's candidate pairs) reaches it here,
+  /// through PlannerSession::shown_as().
+  const Planner& inner() const { return *inner_; }
 
  private:
   std::unique_ptr<Planner> inner_;

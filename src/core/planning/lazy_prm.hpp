@@ -70,8 +70,9 @@ class LazyPrm final : public Planner {
   /// Per edge of roadmap(): 1 once the exact check has examined it (a removed edge was checked
   /// and found in collision), 0 for an edge no search has needed yet.
   const std::vector<unsigned char>& edge_checked() const { return checked_; }
+  const std::vector<unsigned char>* checked_edge_flags() const override { return &checked_; }
   /// Live edges never checked: what Lazy PRM did not have to check.
-  long edges_unchecked() const { return edges_alive_ - checked_alive_; }
+  long edges_unchecked() const override { return edges_alive_ - checked_alive_; }
   /// The last search's path (vertex indices, q_init first) while its edges are being checked;
   /// path() once proven.
   const std::vector<int>& candidate_path() const { return candidate_; }

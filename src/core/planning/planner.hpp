@@ -124,6 +124,14 @@ class Planner {
   /// Configurations the collision checker evaluated.
   virtual long evaluations() const = 0;
   virtual int samples_drawn() const = 0;
+  /// For a planner that puts edges into its roadmap on trust (Lazy PRM checks one only when a
+  /// shortest path uses it): per entry of roadmap().edges, 1 once the exact check examined it.
+  /// Null for the planners that prove every edge before adding it. A virtual, not a cast to the
+  /// type, so that a wrapper (the app's RecordingPlanner) passes it on and the JSON and the
+  /// drawing need not know which planner they have.
+  virtual const std::vector<unsigned char>* checked_edge_flags() const { return nullptr; }
+  /// Live edges never checked (0 where checked_edge_flags() is null).
+  virtual long edges_unchecked() const { return 0; }
   /// What replaying to the current step costs, in samples drawn plus edges checked: the app
   /// replays on every frame of a drag only while this is small (app/views/drag_replay.hpp).
   long replay_work() const { return static_cast<long>(samples_drawn()) + edge_checks(); }

@@ -2,8 +2,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/planning/lazy_prm.hpp"
-
 namespace csl {
 
 using json = nlohmann::json;
@@ -26,9 +24,10 @@ json planner_state_json(const Planner& planner, bool roadmap) {
            {"path_length", planner.solved() ? json(planner.path_length()) : json(nullptr)},
            {"roadmap_hash", roadmap_hash_text(r)},
            {"last_event", planner.steps() > 0 ? json(event_kind_name(planner.last_event().kind)) : json(nullptr)}};
-  // Lazy PRM adds what it never had to check: a count, and with the roadmap a flag per edge.
-  const auto* lazy = dynamic_cast<const LazyPrm*>(&planner);
-  if (lazy) out["edges_unchecked"] = lazy->edges_unchecked();
+  // A planner that adds edges on trust (Lazy PRM) adds what it never had to check: a count, and
+  // with the roadmap a flag per edge.
+  const std::vector<unsigned char>* flags = planner.checked_edge_flags();
+  if (flags) out["edges_unchecked"] = planner.edges_unchecked();
   if (roadmap) {
     json vertices = json::array(), edges = json::array(), checked = json::array();
     for (const Config& q : r.vertices) vertices.push_back(config_to_json(q));
@@ -36,11 +35,11 @@ json planner_state_json(const Planner& planner, bool roadmap) {
       const RoadmapEdge& e = r.edges[i];
       if (!e.alive) continue;
       edges.push_back(json::array({e.a, e.b}));
-      if (lazy) checked.push_back(lazy->edge_checked()[i] != 0);
+      if (flags) checked.push_back((*flags)[i] != 0);
     }
     out["vertices"] = vertices;
     out["edge_list"] = edges;
-    if (lazy) out["edge_checked"] = checked;
+    if (flags) out["edge_checked"] = checked;
   }
   return out;
 }

@@ -13,7 +13,8 @@ namespace csl {
 ///  "path_length" (null unless solved), "roadmap_hash" (16 hex digits), "last_event" (its kind,
 ///  null before step 1)}; with `roadmap`, also "vertices" ([Q, ...]) and "edge_list" ([[a, b],
 ///  ...] of the live edges, indices into vertices: 0 is the start, 1 the goal).
-/// Lazy PRM (core/planning/lazy_prm.hpp) adds "edges_unchecked" (live edges never checked) and,
+/// A planner with checked_edge_flags() (Lazy PRM, also through a wrapper) adds "edges_unchecked"
+/// (live edges never checked) and,
 /// with `roadmap`, "edge_checked" ([bool, ...], one per entry of edge_list: whether the exact check
 /// examined it; false: in the roadmap on trust).
 nlohmann::json planner_state_json(const Planner& planner, bool roadmap);
