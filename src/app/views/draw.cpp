@@ -108,7 +108,7 @@ class Batch {
 }  // namespace
 
 void draw_roadmap(const WorkspaceView& view, const Space& space, const Roadmap& roadmap,
-                  const std::vector<int>& labels) {
+                  const std::vector<int>& labels, const std::vector<unsigned char>* checked) {
   const auto& v = roadmap.vertices;
   ImDrawList* dl = view.draw_list();
   Batch batch(dl);
@@ -124,15 +124,34 @@ void draw_roadmap(const WorkspaceView& view, const Space& space, const Roadmap& 
   const std::size_t every = (alive + kMaxDrawnEdges - 1) / kMaxDrawnEdges;
   std::size_t seen = 0;
   const ImVec2 lo = view.canvas_min(), hi = view.canvas_max();
-  for (const RoadmapEdge& e : roadmap.edges) {
+  for (std::size_t i = 0; i < roadmap.edges.size(); ++i) {
+    const RoadmapEdge& e = roadmap.edges[i];
     if (!e.alive) continue;
     if (every > 1 && seen++ % every != 0) continue;
     const Config& a = v[static_cast<std::size_t>(e.a)];
     const int c = labels.empty() ? 0 : labels[static_cast<std::size_t>(e.a)];
+    const bool trusted = checked && i < checked->size() && (*checked)[i] == 0;
     if (wraps) {
-      // Seam-crossing edges are cut into pieces; the general path handles them.
+      // Seam-crossing edges are cut into pieces; the general path handles them (an unchecked
+      // edge fainter: dashes would need the pieces' lengths).
       draw_chart_segment(view, space, a, space.difference(a, v[static_cast<std::size_t>(e.b)]),
-                         theme::component_color(c, alpha), 1.0f);
+                         theme::component_color(c, trusted ? alpha / 3 : alpha), 1.0f);
+    } else if (trusted) {
+      const Config& b = v[static_cast<std::size_t>(e.b)];
+      const ImVec2 sa = view.to_screen(Vec2(a[0], a[1])), sb = view.to_screen(Vec2(b[0], b[1]));
+      if ((sa.x < lo.x && sb.x < lo.x) || (sa.x > hi.x && sb.x > hi.x) || (sa.y < lo.y && sb.y < lo.y) ||
+          (sa.y > hi.y && sb.y > hi.y))
+        continue;
+      // Never checked: dashed, 5 px on and 4 off, so that it reads as "not known to be free".
+      const float dx = sb.x - sa.x, dy = sb.y - sa.y, len = std::sqrt(dx * dx + dy * dy);
+      const int dashes = std::min(200, static_cast<int>(len / 9.0f) + 1);
+      for (int d = 0; d < dashes; ++d) {
+        const float t0 = static_cast<float>(d) * 9.0f / std::max(len, 1.0f);
+        const float t1 = std::min(1.0f, t0 + 5.0f / std::max(len, 1.0f));
+        if (t0 >= 1.0f) break;
+        batch.segment(ImVec2(sa.x + dx * t0, sa.y + dy * t0), ImVec2(sa.x + dx * t1, sa.y + dy * t1),
+                      theme::component_color(c, alpha), 1.2f);
+      }
     } else {
       const Config& b = v[static_cast<std::size_t>(e.b)];
       const ImVec2 sa = view.to_screen(Vec2(a[0], a[1])), sb = view.to_screen(Vec2(b[0], b[1]));
@@ -168,7 +187,7 @@ void draw_roadmap(const WorkspaceView& view, const Space& space, const Roadmap& 
 }
 
 void RoadmapLayer::draw(const WorkspaceView& view, const Space& space, const Roadmap& roadmap,
-                        const std::vector<int>& labels, long long version) {
+                        const std::vector<int>& labels, long long version, const std::vector<unsigned char>* checked) {
   ImDrawList* dl = view.draw_list();
   const ImVec2 origin = view.to_screen(Vec2(0, 0)), unit = view.to_screen(Vec2(1, 1));
   const bool same = version == version_ && origin.x == origin_.x && origin.y == origin_.y && unit.x == unit_.x &&
@@ -177,7 +196,7 @@ void RoadmapLayer::draw(const WorkspaceView& view, const Space& space, const Roa
     // Draw afresh, then keep what was added to the draw list.
     const int vtx_start = dl->VtxBuffer.Size, idx_start = dl->IdxBuffer.Size;
     const unsigned base = dl->_VtxCurrentIdx;
-    draw_roadmap(view, space, roadmap, labels);
+    draw_roadmap(view, space, roadmap, labels, checked);
     vertices_.resize(dl->VtxBuffer.Size - vtx_start);
     std::memcpy(vertices_.Data, dl->VtxBuffer.Data + vtx_start, sizeof(ImDrawVert) * static_cast<std::size_t>(vertices_.Size));
     indices_.resize(dl->IdxBuffer.Size - idx_start);
@@ -194,6 +213,15 @@ void RoadmapLayer::draw(const WorkspaceView& view, const Space& space, const Roa
   dl->_VtxWritePtr += vertices_.Size;
   dl->_IdxWritePtr += indices_.Size;
   dl->_VtxCurrentIdx += static_cast<unsigned>(vertices_.Size);
+}
+
+void draw_rejected_samples(const WorkspaceView& view, const std::vector<Config>& rejected) {
+  ImDrawList* dl = view.draw_list();
+  for (const Config& q : rejected) {
+    const ImVec2 c = view.to_screen(Vec2(q[0], q[1]));
+    dl->AddLine(ImVec2(c.x - 3, c.y - 3), ImVec2(c.x + 3, c.y + 3), theme::kHit, 1.5f);
+    dl->AddLine(ImVec2(c.x - 3, c.y + 3), ImVec2(c.x + 3, c.y - 3), theme::kHit, 1.5f);
+  }
 }
 
 void draw_path(const WorkspaceView& view, const Space& space, const Roadmap& roadmap, const std::vector<int>& path) {

@@ -19,9 +19,10 @@ void draw_chart_segment(const WorkspaceView& view, const Space& space, const Con
                         ImU32 color, float thickness);
 
 /// The roadmap's edges (by component colour, or all one colour if labels are empty) and
-/// vertices, in a 2-D chart (coordinates 0 and 1 of each configuration).
+/// vertices, in a 2-D chart (coordinates 0 and 1 of each configuration). `checked`: a planner's
+/// checked_edge_flags() (Lazy PRM), whose edges never checked are drawn dashed.
 void draw_roadmap(const WorkspaceView& view, const Space& space, const Roadmap& roadmap,
-                  const std::vector<int>& component_labels);
+                  const std::vector<int>& component_labels, const std::vector<unsigned char>* checked = nullptr);
 
 /// draw_roadmap() with its geometry kept between frames: redrawn only when `version` (which the
 /// caller bumps whenever the roadmap or its colours change) or the view's transform changes;
@@ -32,8 +33,10 @@ inline constexpr std::size_t kMaxDrawnEdges = 50000;
 
 class RoadmapLayer {
  public:
+  /// (The caller's `version` must change when `checked` does: a step of the planner does.)
   void draw(const WorkspaceView& view, const Space& space, const Roadmap& roadmap,
-            const std::vector<int>& component_labels, long long version);
+            const std::vector<int>& component_labels, long long version,
+            const std::vector<unsigned char>* checked = nullptr);
 
  private:
   long long version_ = -1;
@@ -63,6 +66,10 @@ class RedrawThrottle {
   long long drawn_ = -1;
   double at_ = 0.0;
 };
+
+/// Draws a planner rejected (RecordingPlanner's), each a small cross: apart from the roadmap's
+/// squares, so that where a sampler does not keep shows next to where it does.
+void draw_rejected_samples(const WorkspaceView& view, const std::vector<Config>& rejected);
 
 /// The path through roadmap vertices, wide and outlined so it stands out of the roadmap.
 void draw_path(const WorkspaceView& view, const Space& space, const Roadmap& roadmap, const std::vector<int>& path);
