@@ -23,6 +23,7 @@
 #include "app/lessons/planner_session.hpp"
 #include "app/lessons/prm_controls.hpp"
 #include "app/lessons/recording_planner.hpp"
+#include "app/lessons/sampler_controls.hpp"
 #include "app/shell/instructor.hpp"
 #include "app/shell/js_api.hpp"
 #include "app/shell/lesson.hpp"
@@ -188,6 +189,7 @@ class CompareLesson : public Lesson, private Stepper {
       one["side"] = kSideKeys[i];
       one["name"] = p.name();
       one["planner"] = planner_kind_info(sides_[i].choice.kind).name;
+      if (!planner_kind_info(sides_[i].choice.kind).tree) one["sampler"] = sides_[i].choice.sampler.name();
       one["samples"] = p.samples_drawn();
       one["rejected"] = recording(i).rejected().size();
       one["start"] = config_to_json(sides_[i].session->planned_scene().start);
@@ -213,6 +215,7 @@ class CompareLesson : public Lesson, private Stepper {
     int mode = mode_, trials = trials_;
     std::vector<int> budgets = budgets_;
     bool run = false, cancel = false;
+    std::array<bool, 2> sampler_given = {false, false};
     for (auto it = j.begin(); it != j.end(); ++it) {
       const std::string& k = it.key();
       const json& v = *it;
@@ -226,6 +229,9 @@ class CompareLesson : public Lesson, private Stepper {
         } catch (const std::invalid_argument& e) {
           throw ApiError(k + ": " + e.what());
         }
+      } else if (side >= 0 && base == "sampler") {
+        choice[static_cast<std::size_t>(side)].sampler = sampler_from_json(k, v);
+        sampler_given[static_cast<std::size_t>(side)] = true;
       } else if (side >= 0 && base == "samples") {
         choice[static_cast<std::size_t>(side)].samples = static_cast<int>(api_param(side ? kSamplesB : kSamplesA, v));
       } else if (side >= 0 && base == "goal_bias") {
@@ -262,7 +268,11 @@ class CompareLesson : public Lesson, private Stepper {
     // and the passage is then the slider's value alone. The slider itself replaces any scene.
     const bool passage_scene = same_content(scene_, narrow_passage_scene(passage_));
     const Scene scene = passage != passage_ && passage_scene ? narrow_passage_scene(passage) : scene_;
-    for (PlannerChoice& c : choice) {
+    for (std::size_t i = 0; i < 2; ++i) {
+      PlannerChoice& c = choice[i];
+      // A tree planner samples uniformly: a side switched to one leaves its PRM sampler behind
+      // (one named in the same call is still refused, by validate()).
+      if (planner_kind_info(c.kind).tree && !sampler_given[i]) c.sampler = SamplerSpec{};
       c.seed = seed;
       try {
         validate(c);
@@ -295,6 +305,7 @@ class CompareLesson : public Lesson, private Stepper {
       out["samples_" + key] = c.samples;
       out["goal_bias_" + key] = c.goal_bias;
       out["step_" + key] = c.step;
+      out["sampler_" + key] = c.sampler.name();
     }
     return out;
   }
@@ -305,10 +316,12 @@ class CompareLesson : public Lesson, private Stepper {
             {"samples_a", "samples A", &kSamplesA},
             {"goal_bias_a", "goal bias A", &kGoalBiasA},
             {"step_a", "step A", &kStepA},
+            sampler_field("sampler_a", "sampler A"),
             {"planner_b", "planner B", nullptr, planner_choices()},
             {"samples_b", "samples B", &kSamplesB},
             {"goal_bias_b", "goal bias B", &kGoalBiasB},
             {"step_b", "step B", &kStepB},
+            sampler_field("sampler_b", "sampler B"),
             {"seed", "seed", &kSeed},
             {"passage", "passage width", &kPassageWidth},
             {"mode", "mode", nullptr, {"step", "experiment"}},
@@ -355,7 +368,7 @@ class CompareLesson : public Lesson, private Stepper {
 
   static bool same_choice(const PlannerChoice& a, const PlannerChoice& b) {
     return a.kind == b.kind && a.samples == b.samples && a.goal_bias == b.goal_bias && a.step == b.step &&
-           a.seed == b.seed;
+           a.seed == b.seed && a.sampler.kind == b.sampler.kind && a.sampler.sigma == b.sampler.sigma;
   }
 
   // What PRM's budgets say of `c` in `scene` (the tree planners check one edge a sample: their
@@ -379,6 +392,7 @@ class CompareLesson : public Lesson, private Stepper {
     p.neighbors = c.kind == PlannerChoice::Kind::PrmStar ? NeighborRule::parse("prm*") : c.neighbors;
     p.checker = c.checker;
     p.seed = c.seed;
+    p.sampler = c.sampler;  // a bridge draw tests up to three configurations
     return scene_budget_problem(p, scene);
   }
 
@@ -550,7 +564,10 @@ class CompareLesson : public Lesson, private Stepper {
       const char* current = planner_kind_info(c.kind).name;
       if (ImGui::BeginCombo("planner", current)) {
         for (const PlannerKindInfo& k : planner_kinds()) {
-          if (ImGui::Selectable(k.name, k.kind == c.kind)) c.kind = k.kind;
+          if (ImGui::Selectable(k.name, k.kind == c.kind)) {
+            c.kind = k.kind;
+            if (k.tree) c.sampler = SamplerSpec{};  // the trees sample uniformly
+          }
           if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", k.summary);
         }
         ImGui::EndCombo();
@@ -560,6 +577,10 @@ class CompareLesson : public Lesson, private Stepper {
       const std::string param = "samples_" + key;
       instructor::FixedParam fixed(param.c_str());
       param_slider(i ? kSamplesB : kSamplesA, "samples", c.samples, 0, 2000, ImGuiSliderFlags_AlwaysClamp);
+    }
+    if (!planner_kind_info(c.kind).tree) {
+      const std::string param = "sampler_" + key;
+      sampler_controls(c.sampler, param.c_str());
     }
     if (planner_kind_info(c.kind).tree) {
       if (c.kind == PlannerChoice::Kind::Rrt) {  // (RRT-Connect heads for the other tree, not the goal)
@@ -599,21 +620,19 @@ class CompareLesson : public Lesson, private Stepper {
       s.labels = p.component_labels();
       s.labels_at = s.session->version();
     }
-    s.layer.draw(view, space, p.roadmap(), s.labels, s.throttle(s.session->version(), s.session->busy()));
+    // (Lazy PRM's edges never checked come out dashed.)
+    s.layer.draw(view, space, p.roadmap(), s.labels, s.throttle(s.session->version(), s.session->busy()),
+                 p.checked_edge_flags());
     // Rejected samples: small crosses (the accepted ones are the roadmap's vertices).
-    ImDrawList* dl = view.draw_list();
-    for (const Config& q : recording(i).rejected()) {
-      const ImVec2 c = view.to_screen(Vec2(q[0], q[1]));
-      dl->AddLine(ImVec2(c.x - 3, c.y - 3), ImVec2(c.x + 3, c.y + 3), theme::kHit, 1.5f);
-      dl->AddLine(ImVec2(c.x - 3, c.y + 3), ImVec2(c.x + 3, c.y - 3), theme::kHit, 1.5f);
-    }
+    draw_rejected_samples(view, recording(i).rejected());
     if (p.solved()) draw_path(view, space, p.roadmap(), p.path());
     if (s.session->replaying()) draw_replay_pending(view, replaying_text(*s.session));
     else draw_current(p, view);
     view.draw_marker(Vec2(scene_.start[0], scene_.start[1]), theme::kStart, "S", !s.session->world().is_free(scene_.start));
     view.draw_marker(Vec2(scene_.goal[0], scene_.goal[1]), theme::kGoal, "G", !s.session->world().is_free(scene_.goal));
     view.pop_clip();
-    const std::string title = std::string(kSideNames[i]) + ": " + planner_kind_info(s.choice.kind).name;
+    std::string title = std::string(kSideNames[i]) + ": " + planner_kind_info(s.choice.kind).name;
+    if (s.choice.sampler.kind != SamplerSpec::Kind::Uniform) title += ", " + s.choice.sampler.name();
     view.draw_label(Vec2(scene_.workspace_min.x(), scene_.workspace_max.y()), title.c_str(), theme::kLabel,
                     ImVec2(16, -22));
   }

@@ -1,10 +1,14 @@
 // Lesson "Step PRM": the probabilistic roadmap method on a point robot, one step at a time.
 // The workspace is the C-space here (Q = R^2): obstacles, samples, edges and path in one view.
+// The sampler is a choice (uniform, Gaussian, bridge test, Halton): the planner is recorded
+// (recording_planner.hpp) so that the draws Gaussian and bridge throw away can be shown.
 #include <cstdio>
 #include <memory>
 
 #include "app/lessons/planner_session.hpp"
 #include "app/lessons/prm_controls.hpp"
+#include "app/lessons/recording_planner.hpp"
+#include "app/lessons/sampler_controls.hpp"
 #include "app/shell/bundled_scenes.hpp"
 #include "app/shell/instructor.hpp"
 #include "app/shell/js_api.hpp"
@@ -25,7 +29,7 @@ using json = nlohmann::json;
 
 class StepPrmLesson : public Lesson {
  public:
-  StepPrmLesson() : scene_(bundled_scene("prm-demo")), session_(scene_, params_) {}
+  StepPrmLesson() : scene_(bundled_scene("prm-demo")), session_(scene_, recorded(prm_factory(params_))) {}
 
   void on_show() override { session_.forget_log(); }
 
@@ -37,7 +41,10 @@ class StepPrmLesson : public Lesson {
     ImGui::TextWrapped("PRM as the course states it: add q_init and q_final; draw n samples and keep the "
                        "free ones; connect close pairs whose straight line is free; search the graph.");
     ImGui::Spacing();
-    if (prm_controls(params_, session_.world(), ctx)) rebuild(0);
+    if (prm_controls(params_, session_.world(), ctx, kLabPrmSamples, true)) rebuild(0);
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextDisabled("%s", sampler_summary(params_.sampler));
+    ImGui::PopTextWrapPos();
     ImGui::Separator();
     stats();
     ImGui::Separator();
@@ -55,6 +62,9 @@ class StepPrmLesson : public Lesson {
     refresh_labels();
     const Space& space = session_.world().space();
     roadmap_layer_.draw(view_, space, prm().roadmap(), labels_, throttle_(session_.version(), session_.busy()));
+    // Gaussian and bridge draws thrown away (many of them in free space): crosses, apart from the
+    // kept samples' squares. The planner's own sampler: during a replay, the old one's.
+    if (sampler_rejects_free_draws(prm().params().sampler)) draw_rejected_samples(view_, recording().rejected());
     if (prm().solved()) draw_path(view_, space, prm().roadmap(), prm().path());
     if (replay_pending() || session_.replaying()) {
       // The old roadmap faded under the obstacles where they are now.
@@ -99,7 +109,8 @@ class StepPrmLesson : public Lesson {
 
   json state(const json& args) const override {
     json out = planner_state_json(prm(), args.value("roadmap", false));
-    out["params"] = prm_params_json(params_);
+    out["params"] = params();
+    out["rejected"] = recording().rejected().size();
     out["replay_pending"] = replay_pending();
     out["planner_builds"] = session_.builds();
     out["running"] = running_json(session_);
@@ -107,17 +118,42 @@ class StepPrmLesson : public Lesson {
   }
 
   void set_params(const json& j) override {
-    params_ = prm_params_from_json(j, params_, session_.world());
+    if (!j.is_object()) throw ApiError("params must be an object");
+    // The sampler is this lesson's (the torus's PRM has none); the rest is PRM's, priced with
+    // the new sampler (a bridge draw tests up to three configurations).
+    PrmParams next = params_;
+    json rest = j;
+    if (j.contains("sampler")) {
+      next.sampler = sampler_from_json("sampler", j.at("sampler"));
+      rest.erase("sampler");
+    }
+    params_ = prm_params_from_json(rest, next, session_.world());
     rebuild(0);
   }
 
-  json params() const override { return prm_params_json(params_); }
-  std::vector<ParamField> param_fields() const override { return prm_param_fields(kLabPrmSamples); }
+  json params() const override {
+    json out = prm_params_json(params_);
+    out["sampler"] = params_.sampler.name();
+    return out;
+  }
+  std::vector<ParamField> param_fields() const override {
+    std::vector<ParamField> out = prm_param_fields(kLabPrmSamples);
+    out.push_back(sampler_field("sampler", "sampler"));
+    return out;
+  }
 
   std::string describe() const override {
     // The planner's scene: during a drag that would replay slowly it is the one from before.
+    const SamplerSpec& sampler = prm().params().sampler;
+    const std::string draws =
+        sampler.kind == SamplerSpec::Kind::Uniform
+            ? ""
+            : " Samples come from the sampler " + sampler.name() + ": " + sampler_summary(sampler) +
+                  (sampler_rejects_free_draws(sampler)
+                       ? " " + std::to_string(recording().rejected().size()) + " draws were thrown away so far."
+                       : "");
     return describe_scene(session_.planned_scene(), prm().world()) + " " +
-           describe_planner(prm(), !instructor::hidden("path_length")) +
+           describe_planner(prm(), !instructor::hidden("path_length")) + draws +
            (replay_pending() ? " The roadmap is the scene's before the drag; it is replayed at the release." : "");
   }
 
@@ -126,12 +162,13 @@ class StepPrmLesson : public Lesson {
 
  private:
   const Prm& prm() const { return session_.shown_as<Prm>(); }
+  const RecordingPlanner& recording() const { return *session_.recording(); }
   // A new planner for the current scene and parameters, replayed to `steps` (an edit keeps the
   // student at the same step, with the same seed).
   void rebuild(long steps) {
     // A smaller workspace makes the same r cover more pairs.
     keep_within_budget(params_, robot_space(scene_.robot, scene_.workspace_min, scene_.workspace_max));
-    session_.rebuild(scene_, params_, steps);
+    session_.rebuild(scene_, recorded(prm_factory(params_)), steps);
     labels_at_ = -1;
     check_at_ = -1;
     session_.forget_log();

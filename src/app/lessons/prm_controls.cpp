@@ -7,6 +7,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "app/lessons/sampler_controls.hpp"
 #include "app/shell/instructor.hpp"
 #include "app/shell/js_api.hpp"
 #include "app/shell/param_widgets.hpp"
@@ -84,7 +85,8 @@ std::string scene_budget_problem(PrmParams params, const Scene& scene) {
   return why.empty() ? why : "with these parameters this scene is too much for the lab: " + why;
 }
 
-bool prm_controls(PrmParams& p, const CollisionWorld& world, LabContext& ctx, const ParamSpec& samples) {
+bool prm_controls(PrmParams& p, const CollisionWorld& world, LabContext& ctx, const ParamSpec& samples,
+                  bool with_sampler) {
   const Space& space = world.space();
   const PrmParams before = p;
   bool changed = false;
@@ -93,6 +95,8 @@ bool prm_controls(PrmParams& p, const CollisionWorld& world, LabContext& ctx, co
     instructor::FixedParam fixed("samples");
     changed |= param_slider(samples, "samples n", p.samples, static_cast<int>(samples.min), static_cast<int>(samples.max));
   }
+  // Where the n samples come from (a bridge draw tests up to three configurations: priced below).
+  if (with_sampler) changed |= sampler_controls(p.sampler, "sampler");
   // Each parameter's widgets disabled while the instructor fixed it (instructor.hpp).
   std::optional<instructor::FixedParam> fixed;
   fixed.emplace("neighbors");

@@ -92,6 +92,17 @@ inline constexpr ParamSpec kLabCheckerStepD = kCheckerStepD.in_lab(0.001, kInf, 
 inline constexpr ParamSpec kSeed{"seed", "seed", true, 0, 9007199254740991.0, 1, 1, "",
                                  "the random generator's seed (same seed, same result everywhere)"};
 
+/// S of the samplers gaussian:S and bridge:S (core/planning/sampler.hpp): the standard deviation of
+/// the second configuration's offset from the first. The CLI takes any finite S > 0 (its
+/// --sampler's contract); the lab a range that makes sense for a workspace of a few units: a
+/// spread past it lands nearly every second configuration on the bounds, a finer one gives pairs
+/// that are one point twice.
+inline constexpr ParamSpec kSamplerSigma{"sigma", "", false, 0, kInf, 0.05, 0.005, "",
+                                         "how far the second configuration of a Gaussian or bridge draw lies from "
+                                         "the first (one standard deviation, in the space's metric)",
+                                         true, true};
+inline constexpr ParamSpec kLabSamplerSigma = kSamplerSigma.in_lab(0.001, 1, 0.05);
+
 // --- tree planners (core/planning/rrt.hpp, rrt_connect.hpp; cspacelab plan --planner rrt) ---
 
 /// B: the chance that RRT extends toward q_final instead of a uniform sample.
@@ -169,6 +180,6 @@ inline constexpr const ParamSpec* kAllParams[] = {
     &kLabExperimentTrials, &kExperimentSamples,  &kLabExperimentSamples, &kReferenceSamples,
     &kVisibilityTrials,  &kLabVisibilityTrials,  &kMcSeed,              &kTracedGridN,  &kMinGridMax,
     &kFieldZeta,         &kFieldSwitch,          &kFieldEta,            &kFieldRho0,    &kDescentStep,
-    &kDescentEscapes,    &kGoalBias,             &kTreeStep};
+    &kDescentEscapes,    &kGoalBias,             &kTreeStep,            &kSamplerSigma, &kLabSamplerSigma};
 
 }  // namespace csl

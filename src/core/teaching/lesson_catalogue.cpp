@@ -50,10 +50,12 @@ const CataloguedLesson kLessons[] = {
       {"samples_a", K::Integer, &kLabPrmSamples},
       {"goal_bias_a", K::Number, &kGoalBias},
       {"step_a", K::Number, &kTreeStep},
+      {"sampler_a", K::Text, nullptr, {}, -kInf, kInf, LessonParamSyntax::Sampler},
       {"planner_b", K::Text, nullptr, {}, -kInf, kInf, LessonParamSyntax::Planner},
       {"samples_b", K::Integer, &kLabPrmSamples},
       {"goal_bias_b", K::Number, &kGoalBias},
       {"step_b", K::Number, &kTreeStep},
+      {"sampler_b", K::Text, nullptr, {}, -kInf, kInf, LessonParamSyntax::Sampler},
       {"seed", K::Integer, &kSeed},
       {"passage", K::Number, &kPassageWidth},
       {"mode", K::Choice, nullptr, {"step", "experiment"}},
@@ -99,7 +101,8 @@ const CataloguedLesson kLessons[] = {
      {{"samples", K::Integer, &kLabPrmSamples},
       {"neighbors", K::Text, nullptr, {}, -kInf, kInf, LessonParamSyntax::NeighborRule},
       {"checker", K::Text, nullptr, {}, -kInf, kInf, LessonParamSyntax::EdgeChecker},
-      {"seed", K::Integer, nullptr, {}, 0, kInf}},
+      {"seed", K::Integer, nullptr, {}, 0, kInf},
+      {"sampler", K::Text, nullptr, {}, -kInf, kInf, LessonParamSyntax::Sampler}},
      {"point"}},
 };
 
@@ -183,6 +186,12 @@ std::string lesson_param_problem(const LessonParam& p, const json& v) {
           case LessonParamSyntax::RobotDescription: parse_robot_description(text); break;
           // The planners of planner_choice's table, whichever it lists (the lesson's menu too).
           case LessonParamSyntax::Planner: parse_planner_kind(text); break;
+          case LessonParamSyntax::Sampler: {
+            const SamplerSpec spec = SamplerSpec::parse(text);
+            const bool spread = spec.kind == SamplerSpec::Kind::Gaussian || spec.kind == SamplerSpec::Kind::Bridge;
+            if (spread && !in_range(kLabSamplerSigma, spec.sigma)) return name + ": " + param_error(kLabSamplerSigma);
+            break;
+          }
           case LessonParamSyntax::None: break;
         }
       } catch (const std::exception& e) {

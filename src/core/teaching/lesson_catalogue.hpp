@@ -32,7 +32,7 @@ enum class LessonParamKind {
 };
 
 /// What a Text parameter must read as (checked by the core's own parsers).
-enum class LessonParamSyntax { None, NeighborRule, EdgeChecker, RobotDescription, Planner };
+enum class LessonParamSyntax { None, NeighborRule, EdgeChecker, RobotDescription, Planner, Sampler };
 
 struct LessonParam {
   std::string_view name;             ///< the key of params() and of a link

@@ -1,0 +1,79 @@
+#include "app/lessons/sampler_controls.hpp"
+
+#include <stdexcept>
+
+#include "app/shell/instructor.hpp"
+#include "app/shell/js_api.hpp"
+#include "app/shell/param_widgets.hpp"
+#include "imgui.h"
+
+namespace csl::app {
+namespace {
+
+using Kind = SamplerSpec::Kind;
+
+bool spreads(Kind k) { return k == Kind::Gaussian || k == Kind::Bridge; }
+
+// The slider's practical end: half the unit square's side (a link may set up to the spec's 1).
+constexpr double kSliderMaxSigma = 0.5;
+
+}  // namespace
+
+bool sampler_rejects_free_draws(const SamplerSpec& spec) { return spreads(spec.kind); }
+
+bool sampler_controls(SamplerSpec& spec, const char* key) {
+  instructor::FixedParam fixed(key);
+  bool changed = false;
+  int kind = static_cast<int>(spec.kind);
+  const char* kinds[] = {"uniform", "Gaussian", "bridge test", "Halton"};
+  if (ImGui::Combo("sampler", &kind, kinds, 4) && kind != static_cast<int>(spec.kind)) {
+    spec.kind = static_cast<Kind>(kind);
+    // Gaussian and bridge keep the sigma the other had; from uniform or Halton, the default.
+    if (spreads(spec.kind) && !in_range(kLabSamplerSigma, spec.sigma)) spec.sigma = kLabSamplerSigma.def;
+    if (!spreads(spec.kind)) spec.sigma = 0.0;
+    changed = true;
+  }
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", sampler_summary(spec));
+  if (spreads(spec.kind))
+    changed |= param_slider(kLabSamplerSigma, "σ", spec.sigma, kLabSamplerSigma.min, kSliderMaxSigma, "%.3f");
+  return changed;
+}
+
+SamplerSpec sampler_from_json(const std::string& key, const nlohmann::json& v) {
+  if (!v.is_string()) throw ApiError(key + ": \"uniform\", \"gaussian:S\", \"bridge:S\" or \"halton\"");
+  SamplerSpec spec;
+  try {
+    spec = SamplerSpec::parse(v.get<std::string>());
+  } catch (const std::invalid_argument& e) {
+    throw ApiError(key + ": " + e.what());
+  }
+  if (spreads(spec.kind) && !in_range(kLabSamplerSigma, spec.sigma))
+    throw ApiError(key + ": " + param_error(kLabSamplerSigma));
+  return spec;
+}
+
+ParamField sampler_field(const char* key, const char* label) {
+  static const std::string help =
+      "uniform, gaussian:S, bridge:S or halton (S, sigma: " + range_text(kLabSamplerSigma) + " in the lab)";
+  return {key, label, nullptr, {}, help.c_str()};
+}
+
+const char* sampler_summary(const SamplerSpec& spec) {
+  switch (spec.kind) {
+    case Kind::Uniform:
+      return "Uniform: every point of the square is as likely as any other, so a narrow passage gets "
+             "samples only in proportion to its small area.";
+    case Kind::Gaussian:
+      return "Gaussian: a uniform point and a second one about σ from it; when exactly one of the two is "
+             "free, that one is kept, so samples gather along the obstacles' edges.";
+    case Kind::Bridge:
+      return "Bridge test: two points about σ apart that both lie in obstacles; their midpoint is kept if "
+             "it is free, which happens mostly in gaps between obstacles: narrow passages.";
+    case Kind::Halton:
+      return "Halton: a fixed sequence that spreads its points evenly over the square, without the clumps "
+             "and holes of random draws; the seed does not change it.";
+  }
+  return "";
+}
+
+}  // namespace csl::app
