@@ -32,8 +32,19 @@ class RecordingPlanner final : public Planner {
     return e;
   }
   void finish_phase() override {
+    // Step by step through a phase that draws samples (any may be one to keep); a phase whose
+    // first steps draw none (PRM's connecting: up to 10^6 edge checks) goes to the planner's own
+    // bulk path, which leaves the same state and builds no event per step.
     const std::string phase = inner_->phase_label();
-    while (!inner_->done() && phase == inner_->phase_label()) step();
+    bool samples = false;
+    for (int i = 0; (samples || i < kLookSteps) && !inner_->done() && phase == inner_->phase_label(); ++i) {
+      const PlannerEvent::Kind k = step().kind;
+      samples |= k == PlannerEvent::Kind::SampleAccepted || k == PlannerEvent::Kind::SampleRejected;
+    }
+    if (inner_->done() || phase != inner_->phase_label()) return;
+    const auto t0 = std::chrono::steady_clock::now();
+    inner_->finish_phase();
+    ms_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   }
   void reset() override {
     inner_->reset();
@@ -66,6 +77,8 @@ class RecordingPlanner final : public Planner {
   const Planner& inner() const { return *inner_; }
 
  private:
+  // finish_phase(): steps without a sample before a phase counts as one that draws none.
+  static constexpr int kLookSteps = 64;
   std::unique_ptr<Planner> inner_;
   std::vector<Config> rejected_;
   double ms_ = 0.0;
