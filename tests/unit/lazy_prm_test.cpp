@@ -178,6 +178,11 @@ TEST_CASE("Lazy PRM's steps: unchecked edges, a search, checks of its edges, rem
   prm.run();
   CHECK_FALSE(csl::planner_state_json(prm, true).contains("edge_checked"));
   CHECK_FALSE(csl::planner_state_json(prm, false).contains("edges_unchecked"));
+  // The interface says it, not the type: what a wrapper (the app's RecordingPlanner) passes on.
+  const csl::Planner& as_planner = lazy;
+  CHECK(as_planner.checked_edge_flags() == &lazy.edge_checked());
+  CHECK(as_planner.edges_unchecked() == lazy.edges_unchecked());
+  CHECK(static_cast<const csl::Planner&>(prm).checked_edge_flags() == nullptr);
 }
 
 TEST_CASE("Lazy PRM: going back to step k gives the identical state; finish_phase() as stepping") {

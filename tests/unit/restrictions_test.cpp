@@ -171,6 +171,15 @@ TEST_CASE("the catalogue: lessons, their parameters checked as a link would set 
   CHECK(csl::lesson_params_problem(*prm, json{{"neighbors", "k8"}}).rfind("neighbors: ", 0) == 0);
   CHECK(csl::lesson_params_problem(*prm, json{{"checker", "step:0.0001"}}) == "checker: D must be at least 0.001 in the lab");
   CHECK(csl::lesson_params_problem(*prm, json{{"seed", -1}}) == "seed: an integer >= 0");
+  // The samplers as the CLI spells them, sigma within the lab's [0.001, 1].
+  for (const char* ok : {"uniform", "halton", "gaussian:0.05", "bridge:0.001", "bridge:1"})
+    CHECK(csl::lesson_params_problem(*prm, json{{"sampler", ok}}).empty());
+  CHECK(csl::lesson_params_problem(*prm, json{{"sampler", "bridge:1.5"}}) == "sampler: sigma: a number in [0.001, 1] in the lab");
+  CHECK(csl::lesson_params_problem(*prm, json{{"sampler", "gaussian:0.0009"}}) ==
+        "sampler: sigma: a number in [0.001, 1] in the lab");
+  CHECK(csl::lesson_params_problem(*prm, json{{"sampler", "bridge:0"}}).rfind("sampler: sampler 'bridge:0': sigma", 0) == 0);
+  CHECK(csl::lesson_params_problem(*prm, json{{"sampler", "sobol"}}).rfind("sampler: unknown sampler 'sobol'", 0) == 0);
+  CHECK(csl::lesson_params_problem(*prm, json{{"sampler", 3}}) == "sampler: a string");
 
   const csl::CataloguedLesson* analysis = csl::find_catalogued_lesson("analysis");
   REQUIRE(analysis);
