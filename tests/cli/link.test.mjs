@@ -102,6 +102,8 @@ test('--list: the lessons and what a link may lock and hide in each', () => {
   assert.deepEqual(list.lessons.map((l) => l.id), ['torus', 'notation', 'collision', 'compare', 'distances', 'analysis', 'potential', 'step-prm']);
   const collision = list.lessons.find((l) => l.id === 'collision');
   assert.deepEqual(collision, { id: 'collision', name: 'Collision checking', params: ['grid_n', 'p', 'q'], robots: ['point', 'arm2'] });
+  assert.deepEqual(list.lessons.find((l) => l.id === 'step-prm').params, ['samples', 'neighbors', 'checker', 'seed', 'sampler']);
+  for (const k of ['sampler_a', 'sampler_b']) assert.ok(list.lessons.find((l) => l.id === 'compare').params.includes(k), k);
   const minN = list.answers.find((a) => a.name === 'min_n');
   assert.deepEqual([minN.lesson, minN.problems, minN.fields], ['collision', ['P12'], ['/min_grid', '/min_grid_interior', '/min_grid_one_end']]);
   assert.match(minN.what, /the smallest N/);
@@ -122,6 +124,10 @@ test('bad input: one line naming what is wrong, exit 2', () => {
   fails(/--params: "seed" is not a parameter of collision \(grid_n, p, q\)/, 'link', p12, '--lesson', 'collision', '--params', '{"seed": 3}');
   fails(/--params: grid_n: an integer in \[2, 100000\]/, 'link', p12, '--lesson', 'collision', '--params', '{"grid_n": 1}');
   fails(/--params: not JSON/, 'link', p12, '--lesson', 'collision', '--params', '{grid_n: 4}');
+  // The samplers as the lab takes them: the CLI's syntax, sigma within the lab's range.
+  fails(/--params: sampler: sigma: a number in \[0\.001, 1\] in the lab/, 'link', p12, '--lesson', 'step-prm',
+        '--params', '{"sampler": "bridge:5"}');
+  fails(/--params: sampler_b: unknown sampler 'sobol'/, 'link', p12, '--lesson', 'compare', '--params', '{"sampler_b": "sobol"}');
   fails(/--params: the parameters must be a JSON object/, 'link', p12, '--lesson', 'collision', '--params', '[4]');
   fails(/SCENE\.json: the step-prm lesson takes scenes with robot point; this one has 'arm2'/, 'link', scene('arm-2link.json'), '--lesson', 'step-prm');
   fails(/missing SCENE\.json/, 'link', '--lesson', 'collision');

@@ -105,7 +105,7 @@ test('heavy links: refused by the budgets with the reason, or run in slices the 
     await page.waitForFunction(() => window.cspacelab.status().busy === null, null, { timeout: 60000 });
     const state = await api(page, 'state');
     assert.equal(state.done, true);
-    assert.deepEqual(state.params, { samples: 20000, neighbors: 'k:10', checker: 'bisection', seed: 1 });
+    assert.deepEqual(state.params, { samples: 20000, neighbors: 'k:10', checker: 'bisection', seed: 1, sampler: 'uniform' });
     assert.deepEqual(errors, []);
     await ctx.close();
   }

@@ -55,7 +55,8 @@ test('garbage values: an in-app notice, the defaults, nothing else', () => withB
   assert.match(n2, /neighbors "k:0"/);
   assert.match(n2, /checker "grid:1"/);
   const s2 = await api(p2, 'state');
-  assert.deepEqual(s2.params, { checker: 'bisection', neighbors: 'k:10', samples: 200, seed: 1 }, 'defaults stand in');
+  assert.deepEqual(s2.params, { checker: 'bisection', neighbors: 'k:10', samples: 200, seed: 1, sampler: 'uniform' },
+                   'defaults stand in');
   assert.equal(s2.steps, 40, 'the good part of the link applies');
   const { page: p3 } = await fresh(browser);
   await openLab(p3, url + '?lesson=step-prm&samples=1e999');
