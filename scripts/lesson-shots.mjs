@@ -34,8 +34,9 @@ const LESSONS = {
     link: 'scene=wall-gap&samples=150&seed=4&steps=100000',
     teaches: 'The probabilistic roadmap method on a point robot, one step at a time: each sample ' +
              'accepted or rejected, each neighbour pair checked, components merging, the path found. The ' +
-             'workspace is the C-space here (Q = R²). Edit the scene with the mouse or the keys; the ' +
-             'roadmap replays.',
+             'workspace is the C-space here (Q = R²). The samples come uniformly, from the Gaussian or ' +
+             'bridge-test sampler (their rejected draws drawn as crosses) or from the Halton sequence. Edit ' +
+             'the scene with the mouse or the keys; the roadmap replays.',
   },
   collision: {
     link: 'scene=p12&grid_n=7&steps=6',
@@ -61,7 +62,8 @@ const LESSONS = {
     link: 'steps=100000',
     teaches: 'Two planners of those `cspacelab plan --planner` offers (PRM, RRT, RRT-Connect, …) on the same ' +
              'scene and seed, side by side, stepped together or run to the end: each one\'s graph or tree, ' +
-             'its accepted and rejected samples and its path, with a table of samples, collision checks, ' +
+             'its accepted and rejected samples (each PRM with its sampler), Lazy PRM\'s unchecked edges ' +
+             'dashed, and its path, with a table of samples, collision checks, ' +
              'edges, path length and time; a narrow passage whose width is a slider; and an experiment ' +
              'that plots each planner\'s success rate against its sample budget over many seeds.',
   },

@@ -22,7 +22,7 @@
 //            is refused). lab.js then loads lab-assignment.js, which checks the URL, opens the
 //            file and reports to an LMS (SCORM) in a parent frame. Not part of the state.
 //   and the lesson's own parameters (whatever its params() reports: samples, neighbors,
-//   checker, seed for Step PRM; grid_n, p, q for Collision checking; …).
+//   checker, seed, sampler for Step PRM; grid_n, p, q for Collision checking; …).
 //   lock     scene, params, lesson or a parameter's name: what the student cannot change
 //   hide     answers (every lesson's), none, or answers by name (min_n, ...): not shown
 //   reveal   never | after-answer: a hidden answer comes back once its homework exercise was
