@@ -71,8 +71,12 @@ class SurfaceView {
   void draw_curve(const std::vector<SurfacePoint>& points, ImU32 color, float thickness) const;
   bool hovered() const { return hovered_; }
 
- private:
+ protected:
+  /// View coordinates of a point: x to the right, z up the screen, y away from the viewer
+  /// (the volume view, app/views/volume_view.*, draws with the same turn and projection).
   Vec3 rotate(const Vec3& p) const;
+
+ private:
   ImVec2 centre_{0, 0};
   float scale_ = 1.0f;
   double yaw_ = kDefaultYaw, pitch_ = kDefaultPitch;

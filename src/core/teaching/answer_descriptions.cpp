@@ -32,6 +32,8 @@ const Description kDescriptions[] = {
      "the torque J^T F, and their sums: the numbers of the forces table (the arrows stay drawn)"},
     {"step-prm", "path_length",
      "the length of the path PRM found (the path itself is drawn)"},
+    {"cspace-3d", "path_length",
+     "the length of the path PRM found in the 3-D C-space (the path itself is drawn)"},
     {"compare", "path_length",
      "the lengths of the paths the two planners found (the paths themselves are drawn)"},
 };

@@ -39,6 +39,7 @@ const HideableAnswer kAnswers[] = {
       "/forces_table"}},
     {"path_length", "step-prm", {}, {"/path_length"}},
     {"path_length", "compare", {}, {"/planners/*/path_length"}},
+    {"path_length", "cspace-3d", {}, {"/prm/path_length"}},
 };
 
 // "a,b" -> {"a", "b"}; "" -> {} (an empty piece between separators is kept: a bad word).

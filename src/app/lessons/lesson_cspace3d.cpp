@@ -1,0 +1,449 @@
+// Lesson "C-spaces in 3-D": the handout's P1 (a robot that slides and turns in the plane, SE(2) =
+// R^2 x S^1) and P2, P5 (3-link arms, T^3) as pictures. The workspace beside the C-obstacle
+// volume (volume_view.*): a coarse voxel block for the shape, cut by a plane across the third
+// coordinate (theta, or theta1) that shows the exact slice there (se2_slice, arm3_slice).
+// Scrubbing the plane turns the robot in the workspace; moving the robot moves its point in the
+// block. PRM runs in the 3-D space and its roadmap is drawn in the block, edges that leave
+// through a glued face coming back through its twin.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <memory>
+#include <optional>
+
+#include "app/lessons/planner_session.hpp"
+#include "app/lessons/prm_controls.hpp"
+#include "app/shell/bundled_scenes.hpp"
+#include "app/shell/instructor.hpp"
+#include "app/shell/js_api.hpp"
+#include "app/shell/lesson.hpp"
+#include "app/shell/panel.hpp"
+#include "app/shell/theme.hpp"
+#include "app/shell/ui.hpp"
+#include "app/views/draw.hpp"
+#include "app/views/scene_editor.hpp"
+#include "app/views/split.hpp"
+#include "app/views/volume_view.hpp"
+#include "core/base/angles.hpp"
+#include "core/checking/scene_text.hpp"
+#include "core/geometry/geometry.hpp"
+#include "core/planning/planner_json.hpp"
+#include "core/planning/planner_text.hpp"
+#include "core/teaching/cspace_volume.hpp"
+
+namespace csl::app {
+namespace {
+
+using json = nlohmann::json;
+
+// The block drawn: coarse enough for a few thousand faces a frame. The free fraction the lesson
+// reports is counted on a finer volume (the core's exact cells at their centres).
+constexpr int kDrawXY = 32, kDrawZ = 32;
+constexpr int kFineSe2XY = 128, kFineSe2Z = 64, kFineArm = 96;
+// Columns of the arm's exact slice drawn in the plane (each exact along theta3).
+constexpr int kArmColumns = 128;
+
+class Cspace3dLesson : public Lesson {
+ public:
+  Cspace3dLesson() : scene_(bundled_scene("polygon-robot")), session_(scene_, params_) {
+    q_ = scene_.start;
+    rebuild_volumes();
+  }
+
+  void on_show() override { session_.forget_log(); }
+  void update(LabContext& ctx) override { session_.update(ctx, "ready: press Step or Play to grow a roadmap in 3-D"); }
+
+  void panel(LabContext& ctx) override {
+    ImGui::TextWrapped(arm() ? "Three joint angles fix the arm: Q = S¹ × S¹ × S¹ = T³, drawn as a cube whose "
+                               "opposite faces are glued. The plane cuts it at one θ₁: there the rest is the "
+                               "(θ₂, θ₃) square of links 2 and 3, or all blocked where link 1 hits."
+                             : "Where the robot is and how it is turned: Q = R² × S¹ = SE(2), drawn as x and y "
+                               "across and θ up, the top and bottom glued (θ = π is θ = -π). The plane cuts "
+                               "it at one θ: there the C-obstacle is the obstacles grown by the turned robot.");
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextDisabled("robot:");
+    ImGui::SameLine();
+    int choice = arm() ? 1 : 0;
+    if (ImGui::RadioButton("polygon (SE(2))", &choice, 0) && arm()) load("polygon-robot");
+    ui::flow(ui::toggle_width("3-link arm (T³)"));
+    if (ImGui::RadioButton("3-link arm (T³)", &choice, 1) && !arm()) load("arm-3link");
+    float cut = static_cast<float>(q_[cut_axis()]);
+    ImGui::SetNextItemWidth(-FLT_MIN);
+    if (ImGui::SliderFloat("##cut", &cut, static_cast<float>(-kPi), static_cast<float>(kPi),
+                           arm() ? "cut at θ₁ = %.2f" : "cut at θ = %.2f"))
+      q_[cut_axis()] = wrap_angle(cut);
+    ImGui::Text("q = %s  %s", config_text(q_).c_str(), world().is_free(q_) ? "free" : "in collision");
+    ImGui::TextWrapped("free: %.1f%% of Q (%s cells)", 100.0 * fine_free_, fine_text().c_str());
+    if (panel::fold("PRM in 3-D")) {
+      if (prm_controls(params_, world(), ctx, kLabTorusSamples)) rebuild(0);
+      ui::text_flow(ui::format("|V| = %zu  |E| = %ld, %d across a glued face", prm().roadmap().vertices.size(),
+                               prm().edges_alive(), seam_edges()));
+      if (prm().solved() && instructor::hidden("path_length"))
+        ImGui::TextColored(theme::vec4(theme::kTextGood), "path found, its length %s", instructor::kHidden);
+      else if (prm().solved())
+        ImGui::TextColored(theme::vec4(theme::kTextGood), "path found, length %.3f", prm().path_length());
+      else if (prm().done()) ImGui::TextColored(theme::vec4(theme::kTextBad), "no path found");
+    }
+    if (panel::fold("Obstacles", false))
+      if (editor_.toolbar(scene_, ctx)) rebuild(session_.wanted_steps());
+  }
+
+  void views(LabContext& ctx, ImVec2 size) override {
+    const Split s = split(size);
+    workspace(ctx, s.first);
+    between(s);
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    volume(s.second);
+    ctx.areas["volume"] = {at, ImVec2(at.x + s.second.x, at.y + s.second.y)};
+    ctx.areas["volume_cut"] = {volume_view_.strip_min(), volume_view_.strip_max()};
+    editor_.help_window();
+  }
+
+  Scene* scene() override { return &scene_; }
+  std::vector<LessonView> views_kept() override {
+    return {{"workspace", &view_, scene_.workspace_min, scene_.workspace_max},
+            {"volume", nullptr, Vec2::Zero(), Vec2::Zero(), &volume_view_}};
+  }
+  SceneEditor* editor() override { return &editor_; }
+  bool accept_scene(const Scene& s, std::string& why) override {
+    const bool polygon = std::holds_alternative<PolygonRobot>(s.robot);
+    const auto* a = std::get_if<ArmRobot>(&s.robot);
+    if (!polygon && !(a && a->links() == 3)) {
+      why = std::string("this lesson shows a polygon robot (SE(2)) or a 3-link arm (T^3); the scene has a '") +
+            robot_type_name(s.robot) + "' robot with " + std::to_string(robot_dof(s.robot)) + " coordinates";
+      return false;
+    }
+    if (!(why = scene_budget_problem(params_, s)).empty()) return false;
+    editor_.replace(scene_, s);
+    q_ = scene_.start;
+    rebuild(0);
+    return true;
+  }
+  bool undo() override { return editor_.undo(scene_) && (after_undo(), true); }
+  bool redo() override { return editor_.redo(scene_) && (after_undo(), true); }
+
+  json state(const json&) const override {
+    json out{{"robot", arm() ? "arm3" : "polygon"},
+             {"q", config_to_json(q_)},
+             {"q_free", world().is_free(q_)},
+             {"start", config_to_json(scene_.start)},
+             {"goal", config_to_json(scene_.goal)},
+             {"cut", {{"axis", arm() ? "theta1" : "theta"}, {"value", q_[cut_axis()]}, {"unit", unit(q_).z()}}},
+             {"q_in_volume", {unit(q_).x(), unit(q_).y(), unit(q_).z()}},
+             {"free_fraction", fine_free_},
+             {"free_fraction_cells", fine_cells_},
+             {"drawn", {{"cells", {kDrawXY, kDrawXY, kDrawZ}}, {"faces", volume_view_.faces()},
+                        {"yaw", volume_view_.yaw()}, {"pitch", volume_view_.pitch()}, {"zoom", volume_view_.zoom()}}},
+             {"prm", planner_state_json(prm(), false)}};
+    out["prm"]["params"] = prm_params_json(params_);
+    out["prm"]["seam_crossing_edges"] = seam_edges();
+    out["prm"]["running"] = running_json(session_);
+    return out;
+  }
+
+  void set_params(const json& j) override {
+    if (!j.is_object()) throw ApiError("params must be an object");
+    json prm_part = json::object();
+    std::optional<Config> q;
+    std::optional<double> cut;
+    for (auto it = j.begin(); it != j.end(); ++it) {
+      const std::string& k = it.key();
+      if (k == "samples" || k == "neighbors" || k == "checker" || k == "seed") {
+        prm_part[k] = *it;
+      } else if (k == "q") {
+        bool ok = it->is_array() && it->size() == 3;
+        for (std::size_t i = 0; ok && i < 3; ++i) ok = (*it)[i].is_number() && std::isfinite((*it)[i].get<double>());
+        if (!ok) throw ApiError(arm() ? "q: [theta1, theta2, theta3], finite" : "q: [x, y, theta], finite");
+        q = config({(*it)[0].get<double>(), (*it)[1].get<double>(), (*it)[2].get<double>()});
+      } else if (k == "cut") {
+        if (!it->is_number() || !std::isfinite(it->get<double>()) || std::fabs(it->get<double>()) > 1000)
+          throw ApiError("cut: a number in [-1000, 1000] (radians)");
+        cut = it->get<double>();
+      } else {
+        throw ApiError("unknown parameter \"" + k + "\"");
+      }
+    }
+    const PrmParams p = prm_params_from_json(prm_part, params_, world(), kLabTorusSamples);
+    if (q) q_ = world().space().wrap(*q);
+    if (cut) q_[cut_axis()] = wrap_angle(*cut);
+    if (!prm_part.empty()) {
+      params_ = p;
+      rebuild(0);
+    }
+  }
+
+  json params() const override {
+    json p = prm_params_json(params_);
+    p["q"] = config_to_json(q_);
+    p["cut"] = q_[cut_axis()];
+    return p;
+  }
+  std::vector<ParamField> param_fields() const override {
+    std::vector<ParamField> f = prm_param_fields(kLabTorusSamples);
+    f.push_back({"q", "configuration", nullptr, {}, "x, y, theta (polygon) or theta1, theta2, theta3 (arm)"});
+    f.push_back({"cut", "cut plane", nullptr, {}, "theta (polygon) or theta1 (arm) of the cut, radians"});
+    return f;
+  }
+
+  std::string describe() const override {
+    return describe_scene(scene_, world()) + " Its C-space is drawn in 3-D (" +
+           (arm() ? "T^3, a cube with opposite faces glued" : "SE(2): x, y across, theta up, top and bottom glued") +
+           "), cut at " + (arm() ? "theta1 = " : "theta = ") + ui::format("%.3f", q_[cut_axis()]) +
+           "; the robot is at " + config_text(q_) + ", " + (world().is_free(q_) ? "free" : "in collision") +
+           ". " + ui::format("%.1f", 100.0 * fine_free_) + " percent of the C-space is free. The roadmap: " +
+           describe_planner(prm(), !instructor::hidden("path_length"));
+  }
+
+  Stepper* stepper() override { return &session_; }
+
+ private:
+  bool arm() const { return std::holds_alternative<ArmRobot>(scene_.robot); }
+  // The coordinate the plane cuts: theta (the polygon's third) or theta1 (the arm's first).
+  int cut_axis() const { return arm() ? 0 : 2; }
+  const Prm& prm() const { return session_.shown_as<Prm>(); }
+  const CollisionWorld& world() const { return session_.world(); }
+  std::string fine_text() const {
+    return ui::format("%d × %d × %d", fine_cells_[0], fine_cells_[1], fine_cells_[2]);
+  }
+
+  void load(const char* name) {
+    std::string why;
+    if (!accept_scene(bundled_scene(name), why)) notice_ = why;
+  }
+  void after_undo() { rebuild(session_.wanted_steps()); }
+
+  void rebuild(long steps) {
+    keep_within_budget(params_, robot_space(scene_.robot, scene_.workspace_min, scene_.workspace_max));
+    session_.rebuild(scene_, params_, steps);
+    // Both robots have three coordinates: an undo across the robot choice starts at the start.
+    if (q_.size() != robot_dof(scene_.robot) || arm() != q_arm_) q_ = scene_.start;
+    q_arm_ = arm();
+    rebuild_volumes();
+    session_.forget_log();
+  }
+
+  // The exact slicers, the block drawn and the free fraction, from the scene as it is.
+  void rebuild_volumes() {
+    se2_.reset();
+    arm3_.reset();
+    arm_slice_.reset();
+    CSpaceVolume drawn, fine;
+    if (arm()) {
+      arm3_ = std::make_unique<Arm3Slices>(std::get<ArmRobot>(scene_.robot), scene_.obstacles);
+      drawn = arm3_volume(*arm3_, kDrawXY, kDrawZ);
+      fine = arm3_volume(*arm3_, kFineArm, kFineArm);
+      fine_cells_ = {kFineArm, kFineArm, kFineArm};
+      volume_view_.set_volume(drawn, Vec3(1, 1, 1));
+    } else {
+      se2_ = std::make_unique<Se2CObstacles>(std::get<PolygonRobot>(scene_.robot), scene_.obstacles);
+      drawn = se2_volume(*se2_, scene_.workspace_min, scene_.workspace_max, kDrawXY, kDrawXY, kDrawZ);
+      fine = se2_volume(*se2_, scene_.workspace_min, scene_.workspace_max, kFineSe2XY, kFineSe2XY, kFineSe2Z);
+      fine_cells_ = {kFineSe2XY, kFineSe2XY, kFineSe2Z};
+      const Vec2 size = scene_.workspace_max - scene_.workspace_min;
+      const double m = std::max(size.x(), size.y());
+      volume_view_.set_volume(drawn, Vec3(size.x() / m, size.y() / m, 0.8));
+    }
+    fine_free_ = fine.free_fraction;
+  }
+
+  // A configuration in the block's unit coordinates: x, y, theta for the polygon (the workspace
+  // box, theta from -pi); theta2, theta3, theta1 for the arm.
+  Vec3 unit(const Config& q) const {
+    const auto turn = [](double a) { return (wrap_angle(a) + kPi) / kTwoPi; };
+    if (arm()) return Vec3(turn(q[1]), turn(q[2]), turn(q[0]));
+    const Vec2 lo = scene_.workspace_min, size = scene_.workspace_max - scene_.workspace_min;
+    return Vec3((q[0] - lo.x()) / size.x(), (q[1] - lo.y()) / size.y(), turn(q[2]));
+  }
+  Vec3 unit_delta(const Config& d) const {
+    if (arm()) return Vec3(d[1], d[2], d[0]) / kTwoPi;
+    const Vec2 size = scene_.workspace_max - scene_.workspace_min;
+    return Vec3(d[0] / size.x(), d[1] / size.y(), d[2] / kTwoPi);
+  }
+
+  int seam_edges() const {
+    int n = 0;
+    const auto& v = prm().roadmap().vertices;
+    for (const RoadmapEdge& e : prm().roadmap().edges) {
+      if (!e.alive) continue;
+      const Config& a = v[static_cast<std::size_t>(e.a)];
+      const Config& b = v[static_cast<std::size_t>(e.b)];
+      const Vec3 end = unit(a) + unit_delta(world().space().difference(a, b));
+      n += end.minCoeff() < -1e-9 || end.maxCoeff() > 1 + 1e-9;
+    }
+    return n;
+  }
+
+  // --- the workspace: drag the polygon to slide it, a link to turn its joint; obstacles else.
+  void workspace(LabContext& ctx, ImVec2 size) {
+    view_.begin("##c3d-workspace", size, scene_.workspace_min, scene_.workspace_max);
+    ctx.views["workspace"] = &view_;
+    view_.draw_grid();
+    view_.push_clip();
+    for (const Obstacle& o : scene_.obstacles) view_.draw_obstacle(o);
+    const Robot& robot = scene_.robot;
+    draw_robot(view_, robot, scene_.start, theme::with_alpha(theme::kStart, 110), 2.0f);
+    draw_robot(view_, robot, scene_.goal, theme::with_alpha(theme::kGoal, 110), 2.0f);
+    draw_robot(view_, robot, q_, world().is_free(q_) ? theme::kRobot : theme::kHit, 3.0f);
+    view_.pop_clip();
+    view_.draw_label(Vec2(scene_.workspace_min.x(), scene_.workspace_max.y()),
+                     arm() ? "drag a link to turn its joint" : "drag the robot to slide it; the plane turns it",
+                     theme::kLabel, ImVec2(6, -22));
+    if (grab_ == 0 && view_.hovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+      grab_ = part_under_mouse();
+      grab_offset_ = view_.mouse_world() - (arm() ? Vec2::Zero() : Vec2(q_[0], q_[1]));
+    }
+    if (grab_ > 0) {
+      if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+        grab_ = 0;
+        return;
+      }
+      const Vec2 m = view_.mouse_world();
+      if (!arm()) {
+        q_[0] = m.x() - grab_offset_.x();
+        q_[1] = m.y() - grab_offset_.y();
+      } else {
+        Vec2 joints[ArmRobot::kMaxLinks + 1];
+        arm_joints(std::get<ArmRobot>(robot), q_, joints);
+        const Vec2 from = joints[grab_ - 1];
+        double before = 0;  // the absolute angle of the link before the one dragged
+        for (int i = 0; i + 1 < grab_; ++i) before += q_[i];
+        q_[grab_ - 1] = wrap_angle(std::atan2(m.y() - from.y(), m.x() - from.x()) - before);
+      }
+      return;
+    }
+    SceneEditor::Options options;
+    options.endpoints_are_points = !arm();
+    if (editor_.edit(view_, scene_, ctx, options)) edited();
+    if (session_.replay_pending() && !editor_.dragging()) edited();  // released
+  }
+
+  void edited() {
+    session_.edited(scene_, editor_.dragging());
+    rebuild_volumes();
+  }
+
+  // 1.. the link under the mouse (arm), 1 if on the polygon's body, else 0.
+  int part_under_mouse() const {
+    const Vec2 m = view_.mouse_world();
+    if (!arm()) {
+      Polygon body;
+      polygon_pose(std::get<PolygonRobot>(scene_.robot), q_, body);
+      return point_in_polygon(m, body) || (m - Vec2(q_[0], q_[1])).norm() <= view_.reach(8.0f) ? 1 : 0;
+    }
+    const ArmRobot& a = std::get<ArmRobot>(scene_.robot);
+    Vec2 joints[ArmRobot::kMaxLinks + 1];
+    arm_joints(a, q_, joints);
+    for (int i = a.links(); i >= 1; --i)
+      if (point_segment_distance(m, joints[i - 1], joints[i]) <= view_.reach(7.0f)) return i;
+    return 0;
+  }
+
+  // --- the block: C-obstacle faces, the exact slice at the cut, roadmap, path, points.
+  void volume(ImVec2 size) {
+    double cut = unit(q_).z();
+    if (volume_view_.begin("##c3d-volume", size, cut)) q_[cut_axis()] = wrap_angle(-kPi + kTwoPi * cut);
+    cut = unit(q_).z();
+    volume_view_.draw_block(cut, [&] { draw_slice(cut); });
+    if (arm()) volume_view_.draw_frame("θ₂", "θ₃", "θ₁");
+    else volume_view_.draw_frame("x", "y", "θ");
+    const bool glued[3] = {arm(), arm(), true};
+    const Space& space = world().space();
+    const Roadmap& r = prm().roadmap();
+    const bool show = !session_.replay_pending() && !session_.replaying();
+    if (show && r.edges.size() <= 6000)
+      for (const RoadmapEdge& e : r.edges) {
+        if (!e.alive) continue;
+        const Config& a = r.vertices[static_cast<std::size_t>(e.a)];
+        const Config& b = r.vertices[static_cast<std::size_t>(e.b)];
+        volume_view_.draw_segment(unit(a), unit_delta(space.difference(a, b)), glued,
+                                  theme::with_alpha(theme::kBlue, r.edges.size() > 1500 ? 45 : 110), 1.0f);
+      }
+    const std::vector<int>& path = prm().path();
+    for (std::size_t i = 0; show && prm().solved() && i + 1 < path.size(); ++i) {
+      const Config& a = r.vertices[static_cast<std::size_t>(path[i])];
+      const Config& b = r.vertices[static_cast<std::size_t>(path[i + 1])];
+      volume_view_.draw_segment(unit(a), unit_delta(space.difference(a, b)), glued, theme::kPath, 4.0f);
+    }
+    volume_view_.draw_point(unit(scene_.start), theme::kStart, 5.0f, "S");
+    volume_view_.draw_point(unit(scene_.goal), theme::kGoal, 5.0f, "G");
+    volume_view_.draw_point(unit(q_), world().is_free(q_) ? theme::kRobot : theme::kHit, 6.0f);
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    const ImVec2 corner = ImGui::GetItemRectMin();
+    dl->AddText(ImVec2(corner.x + 6, corner.y + 4), theme::kLabel,
+                arm() ? "T³: opposite faces glued" : "SE(2): θ up, top and bottom glued");
+    if (!notice_.empty()) dl->AddText(ImVec2(corner.x + 6, corner.y + 22), theme::kWarning, notice_.c_str());
+  }
+
+  // The exact C-obstacle at the cut, filled in the plane.
+  void draw_slice(double cut) {
+    const ImU32 color = theme::kCObstacle;
+    if (!arm()) {
+      se2_->slice(q_[2], pieces_);
+      const Vec2 lo = scene_.workspace_min, size = scene_.workspace_max - scene_.workspace_min;
+      for (const RoundedPolygon& piece : pieces_) {
+        std::vector<Vec2> unit_xy;
+        for (const Vec2& p : clip_to_box(rounded_polygon_outline(piece, 0.2)))
+          unit_xy.push_back(Vec2((p.x() - lo.x()) / size.x(), (p.y() - lo.y()) / size.y()));
+        volume_view_.fill_in_plane(unit_xy, cut, color);
+      }
+      return;
+    }
+    if (!arm_slice_ || arm_slice_->theta1() != q_[0]) arm_slice_.emplace(arm3_->slice(q_[0]));
+    if (arm_slice_->all_blocked()) {
+      volume_view_.fill_in_plane({Vec2(0, 0), Vec2(1, 0), Vec2(1, 1), Vec2(0, 1)}, cut, color);
+      return;
+    }
+    std::vector<AngleInterval> blocked;
+    for (int c = 0; c < kArmColumns; ++c) {
+      const double u0 = double(c) / kArmColumns, u1 = double(c + 1) / kArmColumns;
+      arm_slice_->blocked_theta3(-kPi + kTwoPi * 0.5 * (u0 + u1), blocked);
+      for (const AngleInterval& i : blocked) {
+        const double v0 = (i.lo + kPi) / kTwoPi, v1 = (i.hi + kPi) / kTwoPi;
+        volume_view_.fill_in_plane({Vec2(u0, v0), Vec2(u1, v0), Vec2(u1, v1), Vec2(u0, v1)}, cut, color);
+      }
+    }
+  }
+
+  // A convex polygon clipped to the workspace box (Sutherland-Hodgman, one side at a time).
+  Polygon clip_to_box(Polygon poly) const {
+    for (int side = 0; side < 4 && !poly.empty(); ++side) {
+      const int axis = side / 2;
+      const bool upper = side % 2;
+      const double bound = upper ? scene_.workspace_max[axis] : scene_.workspace_min[axis];
+      const auto inside = [&](const Vec2& p) { return upper ? p[axis] <= bound : p[axis] >= bound; };
+      Polygon out;
+      for (std::size_t i = 0; i < poly.size(); ++i) {
+        const Vec2& a = poly[i];
+        const Vec2& b = poly[(i + 1) % poly.size()];
+        if (inside(a)) out.push_back(a);
+        if (inside(a) != inside(b)) out.push_back(a + (b - a) * ((bound - a[axis]) / (b[axis] - a[axis])));
+      }
+      poly = std::move(out);
+    }
+    return poly;
+  }
+
+  Scene scene_;
+  SceneEditor editor_;
+  WorkspaceView view_;
+  VolumeView volume_view_;
+  PrmParams params_;
+  PlannerSession session_;  // after scene_ and params_, from which it starts
+  std::unique_ptr<Se2CObstacles> se2_;
+  std::unique_ptr<Arm3Slices> arm3_;
+  std::optional<Arm3Slices::Slice> arm_slice_;  // the arm's slice at the cut, kept while it stays
+  std::vector<RoundedPolygon> pieces_;
+  double fine_free_ = 0.0;
+  std::array<int, 3> fine_cells_{0, 0, 0};
+  Config q_;
+  bool q_arm_ = false;  // q_ is an arm's angles
+  int grab_ = 0;
+  Vec2 grab_offset_{0, 0};
+  std::string notice_;
+};
+
+}  // namespace
+
+CSL_REGISTER_LESSON(Cspace3dLesson, "cspace-3d", "C-spaces in 3-D", "Configuration spaces");
+
+}  // namespace csl::app
