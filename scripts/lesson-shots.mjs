@@ -51,6 +51,14 @@ const LESSONS = {
              'opposite edges are glued, linked both ways, with the exact C-obstacles; PRM on the torus ' +
              '(edges across a seam), the torus in 3-D, and loops that can and cannot be shrunk.',
   },
+  'cspace-3d': {
+    link: 'samples=600&neighbors=k:10&seed=2&steps=100000&cut=0.9',
+    teaches: 'Three-dimensional C-spaces as pictures (homework P1, P2, P5): the polygon robot that slides and ' +
+             'turns (SE(2) = R² × S¹, θ up, top and bottom glued) or the 3-link arm (T³, a cube with opposite ' +
+             'faces glued) beside a block of its C-obstacles, cut by a plane at the robot\'s θ (θ₁) that shows ' +
+             'the exact slice there; scrub the plane to turn the robot, drag the robot to move its point; PRM ' +
+             'in 3-D, edges through a glued face coming back through its twin.',
+  },
   potential: {
     link: '',
     teaches: 'Potential fields (homework P13, section 2.4): the attractive and repulsive fields at the ' +

@@ -6,6 +6,8 @@
 //   node tests/bench/frame_time.mjs phone [samples=2000]       a phone upright (390 x 844 CSS px, pixel ratio 3,
 //                                                              touch, the compact layout): Step PRM's roadmap
 //                                                              and the torus lesson (3.4 M device pixels)
+//   node tests/bench/frame_time.mjs cspace-3d [robot=polygon|arm]  C-spaces in 3-D: the block idle, turned by a
+//                                                              drag, and its cut plane scrubbed (PRM's roadmap drawn)
 //   node tests/bench/frame_time.mjs heavy-link                 links that start long runs (issue 27): every
 //                                                              frame from the first until the run is done
 // Headless Chromium renders WebGL with SwiftShader, on the CPU: the browser's frame interval
@@ -135,6 +137,43 @@ try {
                   `max ${sorted.at(-1).toFixed(1)} ms; app CPU per frame max ${run.cpu_max.toFixed(1)} ms ` +
                   `(building the UI: max ${run.ui_max.toFixed(1)} ms)`);
     }
+  } else if (scenario === 'cspace-3d') {
+    await api(page, 'select_lesson', { id: 'cspace-3d' });
+    if (process.argv[3] === 'arm')
+      await api(page, 'set_scene', { scene: (await api(page, 'bundled_scenes'))['arm-3link'] });
+    await api(page, 'set_params', { params: { samples: 600, neighbors: 'k:10', seed: 2 } });
+    await api(page, 'run');
+    const s = await api(page, 'state');
+    const box = await page.locator('canvas').boundingBox();
+    const { views } = (await api(page, 'status')).layout;
+    const area = (name) => (({ x, y, w, h }) => ({ x: box.x + x, y: box.y + y, w, h }))(views.find((v) => v.name === name));
+    const vol = area('volume'), strip = area('volume_cut');
+    console.log(`C-spaces in 3-D (${s.robot}): ${s.drawn.faces} faces, roadmap of ${s.prm.nodes} vertices, ` +
+                `${s.prm.edges} edges`);
+    // The app's statistics cover its last 120 frames: each phase runs 3 s before it is measured.
+    const phase = async (name, move) => {
+      console.log(name);
+      if (move) await page.mouse.down();
+      const motion = async () => {
+        if (!move) return;
+        for (let i = 0; i < 180; ++i) {
+          await move(i);
+          await page.waitForTimeout(16);
+        }
+      };
+      await motion();
+      await measure(page, motion);
+      if (move) await page.mouse.up();
+    };
+    await page.mouse.move(5, 5);
+    await phase('idle');
+    const c = { x: vol.x + vol.w * 0.35, y: vol.y + vol.h * 0.5 };
+    await page.mouse.move(c.x, c.y);
+    await phase('turning: a drag in circles over the block', (i) => page.mouse.move(c.x + 60 * Math.sin(i / 10), c.y + 40 * Math.cos(i / 10)));
+    const sx = strip.x + strip.w / 2;
+    await page.mouse.move(sx, strip.y + strip.h / 2);
+    await phase('scrubbing: the cut plane dragged up and down the strip',
+                (i) => page.mouse.move(sx, strip.y + strip.h / 2 + 0.4 * strip.h * Math.sin(i / 12)));
   } else if (scenario === 'potential') {
     await api(page, 'select_lesson', { id: 'potential' });
     // Slow steps, so the descent (and its turning slice) lasts the whole measurement.

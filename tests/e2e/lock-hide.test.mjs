@@ -241,6 +241,7 @@ test('every lesson: hide=answers takes its listed fields out of state() and its 
   const setups = {
     'step-prm': async () => { await api(page, 'set_scene', { scene: bundled['wall-gap'] }); await api(page, 'run'); },
     torus: async () => api(page, 'run'),
+    'cspace-3d': async () => { await api(page, 'set_params', { params: { samples: 600, neighbors: 'k:10', seed: 2 } }); await api(page, 'run'); },
     compare: async () => api(page, 'run'),
     distances: async () => {},
     analysis: async () => {},
@@ -270,8 +271,8 @@ test('every lesson: hide=answers takes its listed fields out of state() and its 
       assert.doesNotMatch(text, /length/, 'compare: describe');
       assert.doesNotMatch(log, /length \d/, 'compare: the log');
     }
-    if (l.id === 'step-prm' || l.id === 'torus') {
-      const length = l.id === 'torus' ? shown.prm.path_length : shown.path_length;
+    if (l.id === 'step-prm' || l.id === 'torus' || l.id === 'cspace-3d') {
+      const length = l.id === 'step-prm' ? shown.path_length : shown.prm.path_length;
       assert.ok(length > 0, `${l.id}: a path was found`);
       assert.match(shownText, new RegExp(`length ${four(length).replace('.', '\\.')}`));
       assert.doesNotMatch(text, /length/, `${l.id}: describe`);

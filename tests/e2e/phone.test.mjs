@@ -60,7 +60,7 @@ test('Phone upright: every lesson\'s main view takes the width', () => withBrows
   assert.equal(l.touch, true, 'a phone is known to be touched');
   const main = {
     'step-prm': 'workspace', torus: 'workspace', potential: 'workspace', collision: 'workspace',
-    analysis: 'workspace', distances: 'circle', notation: 'robot', compare: 'workspace',
+    analysis: 'workspace', distances: 'circle', notation: 'robot', compare: 'workspace', 'cspace-3d': 'workspace',
   };
   const lessons = (await api(page, 'lessons')).map((x) => x.id);
   assert.deepEqual([...lessons].sort(), Object.keys(main).sort(), 'every lesson is checked here');

@@ -64,9 +64,9 @@ class Cspace3dLesson : public Lesson {
     ImGui::TextDisabled("robot:");
     ImGui::SameLine();
     int choice = arm() ? 1 : 0;
-    if (ImGui::RadioButton("polygon (SE(2))", &choice, 0) && arm()) load("polygon-robot");
+    if (ImGui::RadioButton("polygon (SE(2))", &choice, 0) && arm()) load(ctx, "polygon-robot");
     ui::flow(ui::toggle_width("3-link arm (T³)"));
-    if (ImGui::RadioButton("3-link arm (T³)", &choice, 1) && !arm()) load("arm-3link");
+    if (ImGui::RadioButton("3-link arm (T³)", &choice, 1) && !arm()) load(ctx, "arm-3link");
     float cut = static_cast<float>(q_[cut_axis()]);
     ImGui::SetNextItemWidth(-FLT_MIN);
     if (ImGui::SliderFloat("##cut", &cut, static_cast<float>(-kPi), static_cast<float>(kPi),
@@ -84,6 +84,17 @@ class Cspace3dLesson : public Lesson {
         ImGui::TextColored(theme::vec4(theme::kTextGood), "path found, length %.3f", prm().path_length());
       else if (prm().done()) ImGui::TextColored(theme::vec4(theme::kTextBad), "no path found");
     }
+    if (panel::fold("Reading the picture", false))
+      ImGui::TextWrapped(arm() ? "Each cut fixes θ₁: links 2 and 3 are then a 2-link arm from the end of link 1, "
+                                 "so the cut is a square with glued edges like the torus lesson's. Where link 1 "
+                                 "itself hits an obstacle the whole cut is blocked: a slab through the cube. All "
+                                 "three angles wrap, so a path may leave through any face and come back through "
+                                 "the opposite one."
+                               : "Each cut holds the robot at one angle: its C-obstacle is every obstacle grown by "
+                                 "the robot turned that way. Scrub the plane and the grown shapes turn with it; a "
+                                 "long robot blocks a gap it lies across and passes it end first. A path may climb "
+                                 "in θ (the robot turns) while it moves; through the top it comes back at the "
+                                 "bottom, the same angle.");
     if (panel::fold("Obstacles", false))
       if (editor_.toolbar(scene_, ctx)) rebuild(session_.wanted_steps());
   }
@@ -206,9 +217,10 @@ class Cspace3dLesson : public Lesson {
     return ui::format("%d × %d × %d", fine_cells_[0], fine_cells_[1], fine_cells_[2]);
   }
 
-  void load(const char* name) {
+  // The robot choice loads its bundled scene as one undoable edit.
+  void load(LabContext& ctx, const char* name) {
     std::string why;
-    if (!accept_scene(bundled_scene(name), why)) notice_ = why;
+    if (!accept_scene(bundled_scene(name), why)) ctx.notify(why);
   }
   void after_undo() { rebuild(session_.wanted_steps()); }
 
@@ -340,6 +352,7 @@ class Cspace3dLesson : public Lesson {
 
   // --- the block: C-obstacle faces, the exact slice at the cut, roadmap, path, points.
   void volume(ImVec2 size) {
+    const ImVec2 corner = ImGui::GetCursorScreenPos();
     double cut = unit(q_).z();
     if (volume_view_.begin("##c3d-volume", size, cut)) q_[cut_axis()] = wrap_angle(-kPi + kTwoPi * cut);
     cut = unit(q_).z();
@@ -368,10 +381,8 @@ class Cspace3dLesson : public Lesson {
     volume_view_.draw_point(unit(scene_.goal), theme::kGoal, 5.0f, "G");
     volume_view_.draw_point(unit(q_), world().is_free(q_) ? theme::kRobot : theme::kHit, 6.0f);
     ImDrawList* dl = ImGui::GetWindowDrawList();
-    const ImVec2 corner = ImGui::GetItemRectMin();
     dl->AddText(ImVec2(corner.x + 6, corner.y + 4), theme::kLabel,
                 arm() ? "T³: opposite faces glued" : "SE(2): θ up, top and bottom glued");
-    if (!notice_.empty()) dl->AddText(ImVec2(corner.x + 6, corner.y + 22), theme::kWarning, notice_.c_str());
   }
 
   // The exact C-obstacle at the cut, filled in the plane.
@@ -439,7 +450,6 @@ class Cspace3dLesson : public Lesson {
   bool q_arm_ = false;  // q_ is an arm's angles
   int grab_ = 0;
   Vec2 grab_offset_{0, 0};
-  std::string notice_;
 };
 
 }  // namespace
