@@ -52,7 +52,7 @@ const LESSONS = {
              '(edges across a seam), the torus in 3-D, and loops that can and cannot be shrunk.',
   },
   'cspace-3d': {
-    link: 'samples=600&neighbors=k:10&seed=2&steps=100000&cut=0.9',
+    link: 'samples=1000&neighbors=k:10&seed=2&steps=100000&cut=0.9',
     teaches: 'Three-dimensional C-spaces as pictures (homework P1, P2, P5): the polygon robot that slides and ' +
              'turns (SE(2) = R² × S¹, θ up, top and bottom glued) or the 3-link arm (T³, a cube with opposite ' +
              'faces glued) beside a block of its C-obstacles, cut by a plane at the robot\'s θ (θ₁) that shows ' +

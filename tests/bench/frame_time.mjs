@@ -141,7 +141,7 @@ try {
     await api(page, 'select_lesson', { id: 'cspace-3d' });
     if (process.argv[3] === 'arm')
       await api(page, 'set_scene', { scene: (await api(page, 'bundled_scenes'))['arm-3link'] });
-    await api(page, 'set_params', { params: { samples: 600, neighbors: 'k:10', seed: 2 } });
+    await api(page, 'set_params', { params: { samples: 1000, neighbors: 'k:10', seed: 2 } });
     await api(page, 'run');
     const s = await api(page, 'state');
     const box = await page.locator('canvas').boundingBox();

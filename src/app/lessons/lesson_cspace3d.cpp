@@ -71,7 +71,7 @@ class Cspace3dLesson : public Lesson {
     ImGui::SetNextItemWidth(-FLT_MIN);
     if (ImGui::SliderFloat("##cut", &cut, static_cast<float>(-kPi), static_cast<float>(kPi),
                            arm() ? "cut at θ₁ = %.2f" : "cut at θ = %.2f"))
-      q_[cut_axis()] = wrap_angle(cut);
+      q_[cut_axis()] = wrap_angle(static_cast<double>(cut));
     ImGui::Text("q = %s  %s", config_text(q_).c_str(), world().is_free(q_) ? "free" : "in collision");
     ImGui::TextWrapped("free: %.1f%% of Q (%s cells)", 100.0 * fine_free_, fine_text().c_str());
     if (panel::fold("PRM in 3-D")) {

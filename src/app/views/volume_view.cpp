@@ -69,7 +69,7 @@ bool VolumeView::begin(const char* id, ImVec2 size, double& cut) {
   strip_min_ = ImGui::GetItemRectMin();
   strip_max_ = ImGui::GetItemRectMax();
   const float pad = 12.0f, top = strip_min_.y + pad, bottom = strip_max_.y - pad;
-  if (ImGui::IsItemActive()) cut = (bottom - io.MousePos.y) / (bottom - top);
+  if (ImGui::IsItemActive()) cut = static_cast<double>((bottom - io.MousePos.y) / (bottom - top));
   cut = std::clamp(cut, 0.0, 1.0);
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const float mid = 0.5f * (strip_min_.x + strip_max_.x);
@@ -91,9 +91,11 @@ void VolumeView::draw_half(double cut, bool below) const {
   const double split = cut * nz_;
   // The half the plane hides from the viewer is drawn opaque; the one in front of it faint.
   const bool front = below != facing(Vec3(0, 0, 1));
-  const ImU32 color = front ? theme::with_alpha(theme::kCObstacle, 45) : theme::with_alpha(theme::kCObstacle, 255);
+  const ImU32 color = front ? theme::with_alpha(theme::kCObstacle, 40) : theme::with_alpha(theme::kCObstacle, 255);
   for (const Face& f : faces_) {
-    if ((f.layer + 0.5 < split) != below) continue;
+    // Faces turned away are hidden behind the solid's own (or, at the cut, by the plane): not
+    // drawn, which halves the work and keeps the faint half from piling up into grey.
+    if ((f.layer + 0.5 < split) != below || !facing(f.normal)) continue;
     SurfaceMesh::Face m;
     for (int c = 0; c < 4; ++c) m.corner[c] = f.corner[c];
     m.normal = f.normal;
