@@ -152,7 +152,7 @@ TEST_CASE("strip_answer_fields removes the answers' fields, in arrays too, and l
 }
 
 TEST_CASE("the catalogue: lessons, their parameters checked as a link would set them") {
-  CHECK(csl::lesson_ids_text() == "torus, notation, collision, compare, distances, analysis, potential, step-prm");
+  CHECK(csl::lesson_ids_text() == "torus, notation, cspace-3d, collision, compare, distances, analysis, potential, step-prm");
   const csl::CataloguedLesson* c = csl::find_catalogued_lesson("collision");
   REQUIRE(c);
   CHECK(c->name == "Collision checking");

@@ -243,6 +243,16 @@ void App::compact_bar() {
     ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(10, 0.5f * (bar_h - ImGui::GetFontSize())));
     ImGui::SetNextItemWidth(width);
     const std::string preview = "Lesson: " + current_name;
+    // Rows as tall as a finger needs, but every lesson within the screen below the menu: a phone
+    // on its side (390 px) cannot scroll the list by touch, and nine lessons at full height
+    // left the last ones off the screen.
+    int rows = 0, headings = 0;
+    for (std::size_t i = 0; i < lessons().size(); ++i, ++rows)
+      headings += i == 0 || lessons()[i].category != lessons()[i - 1].category;
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float room = ImGui::GetIO().DisplaySize.y - ImGui::GetCursorScreenPos().y - bar_h - 2 * style.WindowPadding.y -
+                       static_cast<float>(headings) * ImGui::GetTextLineHeightWithSpacing();
+    const float row_h = std::clamp(room / static_cast<float>(std::max(rows, 1)) - style.ItemSpacing.y, 24.0f, bar_h - 8);
     if (ImGui::BeginCombo("##lesson", preview.c_str(), ImGuiComboFlags_HeightLargest)) {
       std::string category;
       for (const LessonInfo& l : lessons()) {
@@ -251,7 +261,7 @@ void App::compact_bar() {
           ImGui::TextDisabled("%s", category.c_str());
         }
         const ImGuiSelectableFlags off = instructor::lesson_allowed(l.id) ? 0 : ImGuiSelectableFlags_Disabled;
-        if (ImGui::Selectable(l.name.c_str(), l.id == lesson_id_, off, ImVec2(0, bar_h - 8))) {
+        if (ImGui::Selectable(l.name.c_str(), l.id == lesson_id_, off, ImVec2(0, row_h))) {
           select_lesson(l.id);
           tab_ = Tab::View;
         }
