@@ -99,7 +99,7 @@ test('lessons without a scene, parameters and a task as the page writes them', (
 
 test('--list: the lessons and what a link may lock and hide in each', () => {
   const list = json('link', '--list');
-  assert.deepEqual(list.lessons.map((l) => l.id), ['torus', 'notation', 'collision', 'compare', 'distances', 'analysis', 'potential', 'step-prm']);
+  assert.deepEqual(list.lessons.map((l) => l.id), ['torus', 'notation', 'cspace-3d', 'collision', 'compare', 'distances', 'analysis', 'potential', 'step-prm']);
   const collision = list.lessons.find((l) => l.id === 'collision');
   assert.deepEqual(collision, { id: 'collision', name: 'Collision checking', params: ['grid_n', 'p', 'q'], robots: ['point', 'arm2'] });
   assert.deepEqual(list.lessons.find((l) => l.id === 'step-prm').params, ['samples', 'neighbors', 'checker', 'seed', 'sampler']);
@@ -115,8 +115,8 @@ test('--list: the lessons and what a link may lock and hide in each', () => {
 
 test('bad input: one line naming what is wrong, exit 2', () => {
   const p12 = scene('p12.json');
-  fails(/--lesson is missing \(torus, notation, collision, compare, distances, analysis, potential, step-prm\)/, 'link', p12);
-  fails(/--lesson: 'collisions' is not a lesson \(torus, notation, collision/, 'link', p12, '--lesson', 'collisions');
+  fails(/--lesson is missing \(torus, notation, cspace-3d, collision, compare, distances, analysis, potential, step-prm\)/, 'link', p12);
+  fails(/--lesson: 'collisions' is not a lesson \(torus, notation, cspace-3d, collision/, 'link', p12, '--lesson', 'collisions');
   fails(/--lock: "sceen" is not scene, params, lesson or a parameter of collision \(grid_n, p, q\)/,
         'link', p12, '--lesson', 'collision', '--lock', 'sceen,params');
   fails(/--hide: "min_n" is not answers, none or an answer of step-prm \(path_length\)/, 'link', p12, '--lesson', 'step-prm', '--hide', 'min_n');
