@@ -143,6 +143,8 @@ test('exercises answered by typing: right and wrong, checked against numbers com
   // same with superscripts and a times sign through the API (a test's keyboard cannot type
   // them into the canvas: it sends such characters as composed text, which SDL does not read).
   await page.evaluate(() => window.cspacelab.openProblem('P1', 3));
+  await waitFrames(page, 2);
+  assert.equal(await pageButton(page, 'see-in-3d'), null, 'the 3-D picture, whose title says SE(2), waits for an answer');
   assert.equal(await page.evaluate(() => window.cspacelab.checkAnswer('R^2').correct), false);
   assert.equal(await page.evaluate(() => window.cspacelab.checkAnswer('R² × S¹').correct), true);
   c = await answer(page, 'R^2 x S^1');
@@ -153,6 +155,11 @@ test('exercises answered by typing: right and wrong, checked against numbers com
   // Four readable answers (R^2, R² × S¹, and R^2 x S^1 twice), one exercise right.
   assert.deepEqual((await api(page, 'homework_state')).scores.P1, { tried: 4, right: 1 },
                    'a right answer counts once, an empty one not at all');
+
+  // Answered: the C-space itself, SE(2) as a stack of theta slices in the 3-D lesson.
+  await press(page, 'see-in-3d');
+  assert.equal((await api(page, 'status')).lesson, 'cspace-3d');
+  assert.equal((await api(page, 'state')).robot, 'polygon');
 
   // A reload of the problem link: the saved work stands and the problem's card comes back.
   await page.evaluate(() => window.cspacelab.shell.saveNow && window.cspacelab.shell.saveNow());

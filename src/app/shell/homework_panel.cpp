@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "app/shell/bundled_scenes.hpp"
 #include "app/shell/card.hpp"
 #include "app/shell/instructor.hpp"
 #include "app/shell/theme.hpp"
@@ -252,6 +253,19 @@ void HomeworkPanel::problem_body(const HomeworkProblem& problem) {
       }
       web::record_control("show-in-tool");
     }
+  }
+  // P1, P2 and P5 are answered in notation; once answered (the lesson's title would give the
+  // answer away before), the C-space itself: SE(2) as a theta-stack, a revolute 3-link arm's T^3.
+  if (checked_ && (e.id == "P1" || e.id == "P2" || e.id == "P5")) {
+    if (ImGui::SmallButton(e.id == "P1" ? "See SE(2) in 3-D" : "See a 3-link arm's T\xc2\xb3 in 3-D")) {
+      try {
+        show_("cspace-3d", {{"scene", scene_to_json(bundled_scene(e.id == "P1" ? "polygon-robot" : "arm-3link"))}});
+        error_.clear();
+      } catch (const std::exception& x) {
+        error_ = std::string("The 3-D lesson did not open: ") + x.what();  // an instructor's lock=lesson, say
+      }
+    }
+    web::record_control("see-in-3d");
   }
   if (ImGui::SmallButton("New numbers")) set_exercise(e.id, fresh_seed());
   web::record_control("new-numbers");
