@@ -1,0 +1,339 @@
+// The assignment mode as a student meets it: docs/assignment-example.json opened through the API
+// with a learner id (as the LMS layer opens it), exercises answered in the card by keyboard and
+// mouse (right and wrong, the right numbers computed here from the CLI's given numbers), the
+// task done by really running the PRM and "Check my lab", the explore item visited, Submit with
+// its confirmation, and the grade compared with `cspacelab assignment grade` for the same
+// answers. A reload resumes exactly from the suspend object; the DOM event carries the state; the
+// card works in the phone's compact layout and under an instructor's lock.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { withPage, withBrowser, collectErrors, openLab, click, keys, waitFrames, api, pageButton, screenshot,
+         inspectPng, cli, tempJson } from './lib/harness.mjs';
+
+const here = path.dirname(fileURLToPath(import.meta.url));
+const FILE = path.resolve(here, '../../docs/assignment-example.json');
+const ASSIGNMENT = JSON.parse(fs.readFileSync(FILE, 'utf8'));
+const LEARNER = 'student-4711';
+
+// The S^1 distance: the least |q2 - q1 + 2 pi k|.
+function s1(q1, q2) {
+  let best = Infinity;
+  for (let k = -4; k <= 4; ++k) best = Math.min(best, Math.abs(q2 - q1 + 2 * Math.PI * k));
+  return best;
+}
+
+// The smallest N whose points t = i/(N-1) on (0,0)-(1,0) land in the closed disk.
+function minGrid(center, radius) {
+  for (let n = 2; n < 100000; ++n)
+    for (let i = 0; i < n; ++i)
+      if (Math.hypot(i / (n - 1) - center[0], center[1]) <= radius) return n;
+  return null;
+}
+
+// The learner's exercises as the CLI makes them (seeds, given numbers; never an answer).
+function exercises(learner) {
+  return cli('assignment', 'exercises', FILE, '--learner', learner).items;
+}
+
+async function press(page, name) {
+  const at = await pageButton(page, name);
+  assert.ok(at, `the control "${name}" is on screen`);
+  await click(page, at);
+}
+
+// Clears the card's answer field, types `text` and presses Enter, as a student does.
+async function typeAnswer(page, text, { enter = true } = {}) {
+  await press(page, 'assignment-answer');
+  await page.keyboard.press('Control+A');
+  await page.keyboard.press('Backspace');
+  await waitFrames(page, 1);
+  await page.keyboard.type(text, { delay: 20 });
+  await waitFrames(page, 2);
+  if (enter) await keys(page, 'Enter');
+  await waitFrames(page, 2);
+}
+
+const state = (page) => api(page, 'assignment_state');
+// The state without its note (why the lab could not show an item: not part of the work).
+const work = ({ note, ...rest }) => rest;
+
+// Records every cspacelab:assignment event's detail on the lab's root element.
+async function listen(page) {
+  await page.evaluate(() => {
+    window.__assignmentEvents = [];
+    const root = window.cspacelab.module.canvas.closest('[data-lab]');
+    root.addEventListener('cspacelab:assignment', (e) => window.__assignmentEvents.push(e.detail));
+  });
+}
+const events = (page) => page.evaluate(() => window.__assignmentEvents);
+
+// Runs the PRM in step-prm with at most 50 samples until it finds a path (seeds tried in
+// turn); the last run by the mouse (Run all). Returns the lesson's state.
+async function solveWithFewSamples(page) {
+  for (let seed = 1; seed <= 60; ++seed) {
+    await page.evaluate((s) => {
+      window.cspacelab.setParams({ samples: 50, neighbors: 'k:10', seed: s });
+      window.cspacelab.reset();
+    }, seed);
+    await press(page, 'run-all');
+    await page.waitForFunction(() => !window.cspacelab.status().busy && window.cspacelab.status().stepping.finished,
+                               null, { timeout: 30000 });
+    const s = await api(page, 'state');
+    if (s.solved) return s;
+  }
+  throw new Error('no seed in 1..60 solves the scene with 50 samples');
+}
+
+test('an assignment done in the card: exercises by keyboard and mouse, the task by running the PRM, submitted, graded as the CLI grades',
+  () => withPage(async ({ page, browser }) => {
+  await listen(page);
+  let st = await api(page, 'assignment_open', { assignment: ASSIGNMENT, learner: LEARNER });
+  assert.equal(st.title, ASSIGNMENT.title);
+  assert.equal(st.learner, LEARNER);
+  assert.equal(st.items.length, 5);
+  assert.deepEqual(st.items.map((i) => i.status), ['open', 'open', 'open', 'open', 'open']);
+  assert.deepEqual(st.items.map((i) => i.id), ['item-1', 'item-2', 'item-3', 'item-4', 'item-5']);
+  assert.deepEqual(st.grade, { raw: 0, min: 0, max: 8, scaled: 0, completed: false, passed: false });
+  await page.waitForFunction(() => window.__assignmentEvents.length === 1);
+  assert.deepEqual((await events(page))[0], st, 'the event carries the state');
+
+  // The learner's own numbers, as the CLI gives them for the same id (and not another's).
+  const mine = exercises(LEARNER);
+  for (const i of [0, 1, 2]) {
+    assert.equal(st.items[i].seed, mine[i].seed, `item ${i}: the CLI's seed`);
+    assert.equal(st.items[i].prompt, mine[i].prompt);
+  }
+  assert.notEqual(exercises('someone-else')[1].seed, mine[1].seed, 'a neighbour gets other numbers');
+
+  // Item 1 (P3): a wrong answer, typed and sent with Enter.
+  await press(page, 'assignment-item-0');
+  assert.equal((await state(page)).current, 0);
+  assert.equal((await api(page, 'status')).lesson, 'notation', 'P3 opens its tool');
+  await typeAnswer(page, 'R^9');
+  st = await state(page);
+  assert.equal(st.items[0].status, 'incorrect');
+  assert.equal(st.items[0].answer, 'R^9');
+  assert.equal(st.items[0].feedback, 'Not right yet.');
+  assert.ok(!('expected' in st.items[0]), 'no answer shown before submission');
+
+  // Item 2 (P10), by keyboard: Next, then a wrong answer, then the right one (Enter each time).
+  await press(page, 'assignment-next');
+  assert.equal((await state(page)).current, 1);
+  const { q1, q2 } = mine[1].given;
+  const d = s1(q1, q2);
+  const wrong = Math.abs(Math.abs(q1 - q2) - d) > 0.05 ? Math.abs(q1 - q2) : d + 1;
+  await typeAnswer(page, wrong.toFixed(3));
+  assert.equal((await state(page)).items[1].status, 'incorrect');
+  const p10 = d.toFixed(4);
+  await typeAnswer(page, p10);
+  st = await state(page);
+  assert.equal(st.items[1].status, 'correct', st.items[1].feedback);
+  assert.equal(st.items[1].score, 2);
+  await screenshot(page, 'assignment-exercise.png');
+
+  // Item 3 (P12, a fixed seed), by mouse: the item's row, a wrong count, then the right one with Check.
+  await press(page, 'assignment-item-2');
+  assert.equal((await api(page, 'status')).lesson, 'collision');
+  const n = minGrid(mine[2].given.center, mine[2].given.radius);
+  await typeAnswer(page, String(n + 3), { enter: false });
+  await press(page, 'assignment-check');
+  assert.equal((await state(page)).items[2].status, 'incorrect');
+  await typeAnswer(page, String(n), { enter: false });
+  await press(page, 'assignment-check');
+  st = await state(page);
+  assert.equal(st.items[2].status, 'correct');
+  assert.equal(st.grade.raw, 4);
+
+  // Item 4 (explore): Next opens the wall with a gap in Step PRM, and that is the visit.
+  await press(page, 'assignment-next');
+  st = await state(page);
+  assert.equal(st.current, 3);
+  assert.equal(st.items[3].status, 'viewed');
+  assert.equal((await api(page, 'status')).lesson, 'step-prm');
+  assert.equal((await api(page, 'state')).scene_name, 'A wall with a gap');
+  assert.equal((await api(page, 'state')).params.samples, 200);
+
+  // Item 5 (task): "Check my lab" before a path is found fails, after one is found passes.
+  await press(page, 'assignment-next');
+  assert.equal((await api(page, 'state')).params.samples, 50, 'the task\'s parameters');
+  await page.evaluate(() => window.cspacelab.setParams({ samples: 60 }));
+  await press(page, 'assignment-check-lab');
+  st = await state(page);
+  assert.equal(st.items[4].status, 'incorrect');
+  assert.match(st.items[4].feedback, /samples is 60/);
+  const solved = await solveWithFewSamples(page);
+  assert.equal(solved.params.samples, 50);
+  await press(page, 'assignment-check-lab');
+  st = await state(page);
+  assert.equal(st.items[4].status, 'correct', st.items[4].feedback);
+  assert.deepEqual(st.items[4].answer, { solved: true, params: { samples: 50 } }, 'what the check read, kept');
+  const card = await screenshot(page, 'assignment-task.png');
+  assert.ok((await inspectPng(browser, card.png)).colours > 25);
+
+  // Submit asks first: Cancel keeps it open, Submit makes it final.
+  await press(page, 'assignment-submit');
+  await waitFrames(page, 2);
+  await screenshot(page, 'assignment-confirm.png');
+  await press(page, 'assignment-submit-cancel');
+  assert.equal((await state(page)).submitted, false);
+  await press(page, 'assignment-submit');
+  await waitFrames(page, 2);
+  await press(page, 'assignment-submit-confirm');
+  st = await state(page);
+  assert.equal(st.submitted, true);
+  assert.deepEqual(st.items.map((i) => i.status), ['incorrect', 'correct', 'correct', 'viewed', 'correct']);
+  // The review: right answers and worked solutions now, and in the interactions.
+  assert.ok(Math.abs(st.items[1].expected - d) < 1e-9, `expected ${st.items[1].expected} = ${d}`);
+  assert.equal(st.items[2].expected, n);
+  assert.ok(st.items[1].explanation.length > 20);
+  assert.equal(st.interactions[1].type, 'numeric');
+  assert.equal(st.interactions[0].type, 'fill-in');
+  assert.equal(st.interactions[1].learner_response, p10);
+  assert.equal(st.interactions[0].result, 'incorrect');
+  assert.ok('correct_response' in st.interactions[2]);
+  assert.deepEqual(st.interactions.map((i) => i.weighting), [1, 2, 2, 0, 3]);
+  await screenshot(page, 'assignment-review.png');
+  assert.match(await page.evaluate(() => {
+    try { window.cspacelab.call('assignment_answer', { index: 0, answer: 'R^2' }); } catch (e) { return e.message; }
+    return 'taken';
+  }), /submitted/, 'answers are final');
+
+  // The grade is the CLI's for the same answers (typed here, the state read here before the check).
+  const answers = { learner: LEARNER, answers: [
+    { item: 0, answer: 'R^9' }, { item: 1, answer: p10 }, { item: 2, answer: String(n) }, { item: 3, visited: true },
+    { item: 4, state: solved }] };
+  const graded = cli('assignment', 'grade', FILE, '--answers', tempJson(answers));
+  assert.deepEqual(st.grade, { ...graded.score, completed: graded.completed, passed: graded.passed });
+  assert.deepEqual(st.grade, { raw: 7, min: 0, max: 8, scaled: 7 / 8, completed: true, passed: true });
+  // ... and the answers the state reports grade the same.
+  assert.deepEqual(cli('assignment', 'grade', FILE, '--answers', tempJson(st.answers)).score, graded.score);
+
+  // Every change was announced: the last event is the state now.
+  const all = await events(page);
+  assert.ok(all.length >= 12, `${all.length} events`);
+  assert.deepEqual(all[all.length - 1], st);
+}));
+
+test('a reload resumes exactly from the suspend object; a bad file or resume is refused whole',
+  () => withPage(async ({ page }) => {
+  await api(page, 'assignment_open', { assignment: JSON.stringify(ASSIGNMENT), learner: LEARNER });
+  const mine = exercises(LEARNER);
+  await api(page, 'assignment_go', { index: 1 });
+  const d = s1(mine[1].given.q1, mine[1].given.q2);
+  let item = await api(page, 'assignment_answer', { index: 1, answer: d.toFixed(4) });
+  assert.equal(item.status, 'correct');
+  assert.equal(item.score, 2);
+  await api(page, 'assignment_answer', { index: 0, answer: 'nonsense ((' });
+  await api(page, 'assignment_answer', { index: 3 });
+  await api(page, 'assignment_go', { index: 4 });
+  const before = await state(page);
+  assert.equal(before.items[0].status, 'answered', 'an unreadable answer is recorded, not an attempt');
+  assert.equal(before.items[3].status, 'viewed');
+  assert.equal(before.current, 4);
+  const suspend = before.suspend;
+  assert.ok(JSON.stringify(suspend).length < 4000);
+
+  await page.reload();
+  await page.waitForFunction(() => window.cspacelab && window.cspacelab.status().frames >= 2);
+  await listen(page);
+  const after = await api(page, 'assignment_open', { assignment: ASSIGNMENT, learner: LEARNER, resume: suspend });
+  assert.deepEqual(work(after), work(before), 'the same answers, item, grade and interactions');
+  await page.waitForFunction(() => window.__assignmentEvents.length === 1);
+  assert.deepEqual((await events(page))[0], after);
+  await waitFrames(page, 3);
+  await screenshot(page, 'assignment-resumed.png');
+  // The card shows the resumed item: its "Check my lab" is on screen.
+  assert.ok(await pageButton(page, 'assignment-check-lab'));
+
+  // Every problem of a bad file in one error, naming item and field; nothing changes.
+  const bad = structuredClone(ASSIGNMENT);
+  bad.items[1].points = -1;
+  bad.items[4].check = { pointer: 'solved', equals: true };
+  bad.items[2].problem = 'P99';
+  const message = await page.evaluate((a) => {
+    try { window.cspacelab.call('assignment_open', { assignment: a }); } catch (e) { return e.message; }
+    return null;
+  }, bad);
+  assert.match(message, /^assignment: 3 problems: /);
+  assert.match(message, /items\[1\] \(P10\): points: /);
+  assert.match(message, /items\[2\] \(P99\): problem: /);
+  assert.match(message, /items\[4\] \("Find a path with at most 50 samples"\): check/);
+  const resumeError = await page.evaluate(([a, s]) => {
+    try { window.cspacelab.call('assignment_open', { assignment: a, resume: s }); } catch (e) { return e.message; }
+    return null;
+  }, [ASSIGNMENT, { ...suspend, c: 9 }]);
+  assert.match(resumeError, /resume: c: the current item, 0 to 4/);
+  assert.deepEqual(work(await state(page)), work(before), 'the open assignment is untouched');
+
+  await api(page, 'assignment_close');
+  await page.waitForFunction(() => window.__assignmentEvents.at(-1) === null);
+  assert.equal(await pageButton(page, 'assignment-progress'), null, 'the card is gone');
+}));
+
+test('on a phone: the card in the Controls tab, answered by touch, submitted',
+  () => withBrowser(async ({ browser, url }) => {
+  const ctx = await browser.newContext({ viewport: { width: 390, height: 844 }, deviceScaleFactor: 3, hasTouch: true, isMobile: true });
+  const page = await ctx.newPage();
+  await page.addInitScript(() => localStorage.setItem('cspacelab:v1:welcomed', '1'));
+  const errors = collectErrors(page);
+  await openLab(page, url);
+  const cdp = await ctx.newCDPSession(page);
+  const tap = async (name) => {
+    const at = await pageButton(page, name);
+    assert.ok(at, `the control "${name}" is on screen`);
+    for (const type of ['touchStart', 'touchEnd']) {
+      await cdp.send('Input.dispatchTouchEvent', { type, touchPoints: type === 'touchStart' ? [{ x: at.x, y: at.y, id: 0 }] : [] });
+      await waitFrames(page, 2);
+    }
+  };
+  await api(page, 'assignment_open', { assignment: ASSIGNMENT, learner: LEARNER });
+  await tap('tab:controls');
+  assert.equal((await api(page, 'status')).layout.tab, 'controls');
+  const mine = exercises(LEARNER);
+  await tap('assignment-item-1');
+  await tap('assignment-answer');
+  await page.keyboard.type(s1(mine[1].given.q1, mine[1].given.q2).toFixed(4), { delay: 20 });
+  await waitFrames(page, 2);
+  await tap('assignment-check');
+  assert.equal((await state(page)).items[1].status, 'correct');
+  await screenshot(page, 'assignment-phone.png');
+  // An explore item opens the View tab: the student looks at the lab.
+  await tap('assignment-item-3');
+  assert.equal((await api(page, 'status')).layout.tab, 'view');
+  assert.equal((await state(page)).items[3].status, 'viewed');
+  await tap('tab:controls');
+  await tap('assignment-submit');
+  await tap('assignment-submit-confirm');
+  const st = await state(page);
+  assert.equal(st.submitted, true);
+  assert.equal(st.grade.raw, 2);
+  await screenshot(page, 'assignment-phone-review.png');
+  assert.deepEqual(errors, []);
+  await ctx.close();
+}));
+
+test('with the lesson locked by the instructor (lock=lesson) the assignment still works',
+  () => withPage({ open: '?lesson=distances&lock=lesson' }, async ({ page }) => {
+  await api(page, 'assignment_open', { assignment: ASSIGNMENT, learner: LEARNER });
+  // P3's tool is another lesson: the lab stays, the card says why, the exercise is answered.
+  let st = await api(page, 'assignment_go', { index: 0 });
+  assert.equal((await api(page, 'status')).lesson, 'distances');
+  assert.match(st.note, /instructor/);
+  // P10's tool is this one.
+  st = await api(page, 'assignment_go', { index: 1 });
+  assert.equal(st.note, '');
+  const mine = exercises(LEARNER);
+  await waitFrames(page, 2);
+  await typeAnswer(page, s1(mine[1].given.q1, mine[1].given.q2).toFixed(4));
+  assert.equal((await state(page)).items[1].status, 'correct');
+  // The task's lesson is not open (locked away): Check my lab says so, nothing is recorded.
+  await api(page, 'assignment_go', { index: 4 });
+  await waitFrames(page, 2);
+  await press(page, 'assignment-check-lab');
+  st = await state(page);
+  assert.equal(st.items[4].status, 'open');
+  assert.match(st.note, /not open/);
+}));
