@@ -280,7 +280,8 @@ void AssignmentPanel::item_list() {
     const StatusLook look = status_look(status);
     const AssignmentItem& item = session_->assignment.items[i];
     char label[320];
-    std::snprintf(label, sizeof label, "%s %zu. %s (%s)##item%zu", look.mark, i + 1, item.title.c_str(), look.word, i);
+    // The status before the title: a row cut at the panel's edge still says it.
+    std::snprintf(label, sizeof label, "%s %zu. (%s) %s##item%zu", look.mark, i + 1, look.word, item.title.c_str(), i);
     const bool good = status == "correct" || status == "viewed", bad = status == "incorrect";
     if (good || bad) ImGui::PushStyleColor(ImGuiCol_Text, theme::vec4(good ? theme::kTextGood : theme::kTextBad));
     if (ImGui::Selectable(label, i == session_->current)) visit(i);
@@ -350,7 +351,9 @@ void AssignmentPanel::current_item() {
 
 void AssignmentPanel::review() {
   const json& st = state_;
-  ImGui::TextDisabled("Review: your answers, the right ones and how to get there");
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextWrapped("Review: your answers, the right ones and how to get there");
+  ImGui::PopStyleColor();
   for (const json& it : st["items"]) {
     ImGui::Separator();
     const std::string status = it["status"].get<std::string>();
