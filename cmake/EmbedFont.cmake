@@ -1,10 +1,11 @@
 # The UI font: DejaVu Sans from Debian's fonts-dejavu-core, cut at build time to the glyphs the
-# lab shows (Latin, Greek letters, arrows, maths) with pyftsubset, and compiled into the
-# program as a byte array. 757 KB -> about 80 KB of wasm; nothing of it is committed.
+# lab shows (Latin, Greek letters, arrows, maths, geometric shapes, the homework map's check
+# mark) with pyftsubset, and compiled into the program as a byte array. 757 KB -> about 80 KB of wasm; nothing of it is committed.
 #
 # The one list of Unicode ranges below feeds both pyftsubset and ImGui's glyph ranges.
 set(CSPACELAB_FONT_RANGES
-  0020-007E 00A0-00FF 0370-03FF 2010-205E 2070-209F 2190-21FF 2200-22FF 2308-230B 25A0-25FF)
+  0020-007E 00A0-00FF 0370-03FF 2010-205E 2070-209F 2190-21FF 2200-22FF 2308-230B 25A0-25FF
+  2713-2713)
 set(CSPACELAB_FONT_SOURCE "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf" CACHE FILEPATH "UI font")
 
 function(cspacelab_embed_font out_var)
