@@ -67,7 +67,9 @@ class AssignmentPanel {
   nlohmann::json state_;  // assignment_session_json(*session_) as of the last change
   std::set<std::size_t> preset_;  // items whose lesson got the item's setup this session
   std::string note_;              // why the lab could not show the item as written, or an error
-  char answer_[256] = "";         // the current exercise's answer field
+  // The current exercise's answer field: room for the longest answer the core records (one set
+  // through the API or resumed from suspend data), so that a re-check never records it cut.
+  char answer_[kMaxAnswerText + 1] = "";
   std::size_t field_item_ = static_cast<std::size_t>(-1);  // the item answer_ belongs to
   bool focus_answer_ = false;
   bool want_confirm_ = false;
