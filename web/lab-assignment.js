@@ -6,8 +6,8 @@
 // 1.2's window.API, 2004's window.API_1484_11), initialises, opens the assignment for the LMS's
 // learner id with the suspend data of the last session, and on every 'cspacelab:assignment'
 // event of the lab's root writes score, status, one interaction per item and the suspend data,
-// then commits. It terminates once, on pagehide. Without an LMS the suspend data goes to
-// localStorage instead. Anything the LMS refuses becomes the app's one-line notice: the lab
+// then commits. It terminates once, on a pagehide not into the back-forward cache. Without an
+// LMS the suspend data goes to localStorage instead. Anything the LMS refuses becomes the app's one-line notice: the lab
 // itself goes on. Nothing received from the LMS is evaluated.
 'use strict';
 
@@ -122,25 +122,30 @@
     return `${String(h).padStart(4, '0')}:${String(m).padStart(2, '0')}:${sec.padStart(5, '0')}`;
   }
 
+  /** A 2004 fill-in response is CMILangString250 per [,] node; a leading { opens {lang=}: so [;], (. */
+  function fillIn(s) {
+    return s.replace(/\[,\]/g, '[;]').replace(/^\{/, '(').slice(0, 250);
+  }
+
   /**
    * The values one state writes, in order ([element, value]): score, status, interactions,
    * suspend data. SCORM 1.2's raw score is compared with the manifest's masteryscore (0-100) and
-   * kept within 0-100 by runtimes, so 1.2 reports the percentage; 2004 reports points and scaled.
+   * kept within 0-100 by runtimes, so 1.2 reports core's scaled as a percentage; 2004 reports
+   * points and scaled. Passed/failed only once submitted (core's `completed`: all attempted).
    */
   function valuesOf(state, v) {
     const g = state.grade || {};
     const out = [];
-    const span = g.max - g.min;
+    const result = state.submitted === true ? (g.passed ? 'passed' : 'failed') : null;
     if (v === V12) {
-      const pct = span > 0 ? (100 * (g.raw - g.min)) / span : 0;
+      const pct = Math.round(10000 * Math.max(0, Math.min(1, Number(g.scaled) || 0))) / 100;
       out.push([v.score + 'raw', decimal(pct)], [v.score + 'min', '0'], [v.score + 'max', '100']);
-      out.push(['cmi.core.lesson_status', !g.completed ? 'incomplete' : g.passed === true ? 'passed'
-                                          : g.passed === false ? 'failed' : 'completed']);
+      out.push(['cmi.core.lesson_status', result || 'incomplete']);
     } else {
       out.push([v.score + 'raw', decimal(g.raw)], [v.score + 'min', decimal(g.min)], [v.score + 'max', decimal(g.max)]);
       out.push([v.score + 'scaled', decimal(Math.max(-1, Math.min(1, g.scaled)))]);
-      out.push(['cmi.completion_status', g.completed ? 'completed' : 'incomplete']);
-      out.push(['cmi.success_status', g.completed && typeof g.passed === 'boolean' ? (g.passed ? 'passed' : 'failed') : 'unknown']);
+      out.push(['cmi.completion_status', result ? 'completed' : 'incomplete']);
+      out.push(['cmi.success_status', result || 'unknown']);
     }
     (state.interactions || []).forEach((it, n) => {
       const p = `cmi.interactions.${n}.`;
@@ -153,7 +158,8 @@
       out.push([p + 'id', identifier(it.id, n)], [p + 'type', type]);
       if (v === V2004 && it.description) out.push([p + 'description', String(it.description).slice(0, 250)]);
       // An unanswered item has no response (an empty one is not a number); 1.2 holds 255 characters.
-      if (response !== '') out.push([p + v.response, response.slice(0, v === V12 ? 255 : 4000)]);
+      if (response !== '')
+        out.push([p + v.response, v === V12 ? response.slice(0, 255) : type === 'fill-in' ? fillIn(response) : response.slice(0, 4000)]);
       // The right answer where its pattern is plain: a number, or text without 2004's {…} and [,]
       // syntax. (A task's condition is not a pattern: runtimes refuse some as type mismatches.)
       if (correct !== '' && (type === 'numeric' || (type === 'fill-in' && !/[{}[\]]/.test(correct))))
@@ -183,7 +189,12 @@
       this.finished = false;
       this.commitTimer = null;
       this.onState = (event) => this.report(event.detail);
-      this.onHide = () => this.finish();
+      this.onHide = (event) => (event && event.persisted ? this.commit() : this.finish());
+      // Back from the bfcache after Terminate: SCORM allows no second Initialize.
+      this.onShow = (event) => {
+        if (event && event.persisted && this.finished)
+          this.notify('This page has stopped reporting to your course: reload the page to keep reporting to your course.');
+      };
     }
 
     notify(text) {
@@ -221,16 +232,19 @@
       return null;
     }
 
+    /** By the file's URL (two courses' "Week 3" differ) and seed_key. */
     get storeKey() {
       const a = this.assignment || {};
-      return STORE_PREFIX + String(a.seed_key || a.title || this.url);
+      return STORE_PREFIX + this.url + (a.seed_key ? '#' + a.seed_key : '');
     }
 
     async start() {
       let text;
       try {
+        // A redirect must not lead the file off this site (assignmentUrl's rule); one within it may.
         const response = await this.win.fetch(this.url, { credentials: 'same-origin' });
         if (!response.ok) throw new Error(`HTTP ${response.status}`);
+        if (response.url && new URL(response.url).origin !== new URL(this.url).origin) throw new Error('redirected off this site');
         text = await response.text();
         this.assignment = JSON.parse(text);
       } catch (e) {
@@ -246,6 +260,7 @@
           this.lms = null;  // the LMS would not start a session: run as a plain page
         } else {
           this.win.addEventListener('pagehide', this.onHide);
+          this.win.addEventListener('pageshow', this.onShow);
           learner = this.lmsCall(v.get, v.learner) || undefined;
           resume = this.lmsCall(v.get, 'cmi.suspend_data') || null;
         }

@@ -13,9 +13,21 @@ const Assignment = require('../../web/lab-assignment.js');
 const { Scorm12API, Scorm2004API } = await import('scorm-again');
 const EXAMPLE = fs.readFileSync(fileURLToPath(new URL('../../docs/assignment-example.json', import.meta.url)), 'utf8');
 
+// What core answers for learner stu-17 (`cspacelab assignment grade docs/assignment-example.json
+// --answers ANSWERS --learner stu-17`, ANSWERS = GRADED below): the fake's right answers and the
+// grade the fake is checked against.
+const GRADE = JSON.parse(fs.readFileSync(fileURLToPath(new URL('./fixtures/assignment-grade-stu-17.json', import.meta.url)), 'utf8'));
+const SOLVED = { solved: true, params: { samples: 40 } };
+const GRADED = [[0, 'T^2'], [1, '3.05'], [2, '7'], [4, SOLVED]];
+
 /**
- * A fake of the app's assignment commands (the contract in docs/web.md, Assignments): an
- * exercise's answer is right when it is 42, a task's when it is "done"; the grade counts points.
+ * A fake of the app's assignment commands following core's rules (assignment_grade.cpp,
+ * assignment_session.cpp): an item is attempted when answered readably (an explore item when
+ * visited); completed = every item attempted; raw = the points of the right ones; scaled =
+ * raw / max (1 when max is 0 and completed); passed = scaled >= pass, whether submitted or not;
+ * an interaction's result is neutral until attempted; suspend = {v: 1, c, s, a: [[item, answer]]}.
+ * Right answers are core's for stu-17 (GRADE); a task is answered here with a state ({index,
+ * state}) where the app reads its lesson's.
  */
 function fakeApp() {
   const calls = [];
@@ -25,25 +37,41 @@ function fakeApp() {
   let current = 0;
   let submitted = false;
   let answers = [];
-  const right = (item, answer) => (item.kind === 'exercise' ? answer === 42 : answer === 'done');
+  const notation = (item) => /^P[1-7]$/.test(item.problem);
+  function judge(item, index, answer) {
+    if (answer === undefined) return { attempted: false, correct: false };
+    if (item.kind === 'explore') return { attempted: true, correct: true };
+    if (item.kind === 'task') return { attempted: true, correct: answer.solved === true && answer.params.samples <= 50 };
+    const expected = GRADE.items[index].expected;
+    if (notation(item)) return { attempted: answer.trim() !== '', correct: answer.trim() === expected };
+    const x = Number(answer);
+    return { attempted: Number.isFinite(x), correct: Math.abs(x - expected) <= (item.tolerance ?? 0.005) };
+  }
   function state() {
+    const graded = a.items.map((item, i) => judge(item, i, answers[i]));
     const items = a.items.map((item, index) => {
-      const answered = answers[index] !== undefined;
-      const ok = answered && right(item, answers[index]);
-      return { index, id: `item-${index + 1}`, kind: item.kind, title: item.title || item.problem, prompt: '', points: item.points,
-               status: submitted ? (ok ? 'correct' : 'incorrect') : answered ? 'answered' : 'open',
-               score: submitted && ok ? item.points : 0, max: item.points };
+      const g = graded[index];
+      const points = item.points ?? (item.kind === 'explore' ? 0 : 1);
+      return { index, id: `item-${index + 1}`, kind: item.kind, title: item.title || item.problem, points,
+               status: answers[index] === undefined ? 'open' : item.kind === 'explore' ? 'viewed' : !g.attempted ? 'answered' : g.correct ? 'correct' : 'incorrect',
+               score: g.correct ? points : 0, max: points };
     });
     const max = items.reduce((s, i) => s + i.max, 0);
     const raw = items.reduce((s, i) => s + i.score, 0);
+    const completed = graded.every((g) => g.attempted);
+    const scaled = max > 0 ? raw / max : completed ? 1 : 0;
+    const pass = a.pass ?? 0.6;
+    const response = (item, x) => (x === undefined ? '' : item.kind === 'explore' ? 'visited' : item.kind === 'task' ? `solved: ${x.solved}` : x);
     return {
-      title: a.title, description: a.description, learner, pass: a.pass, current, submitted, items,
-      grade: { raw, min: 0, max, scaled: max ? raw / max : 0, completed: submitted, passed: submitted ? raw / max >= a.pass : null },
-      interactions: items.map((it) => ({
-        id: `${it.id} ${a.items[it.index].problem || it.kind}`, type: it.kind === 'exercise' ? 'numeric' : 'other',
-        description: it.title, learner_response: answers[it.index] === undefined ? '' : String(answers[it.index]),
-        result: !submitted ? 'neutral' : it.status === 'correct' ? 'correct' : 'incorrect', weighting: it.max })),
-      suspend: { current, answers, submitted },
+      title: a.title, description: a.description, learner, pass, current, submitted, items,
+      grade: { raw, min: 0, max, scaled, completed, passed: scaled >= pass },
+      interactions: items.map((it, i) => ({
+        id: it.id, description: it.title, weighting: it.max,
+        type: it.kind !== 'exercise' ? 'other' : notation(a.items[i]) ? 'fill-in' : 'numeric',
+        learner_response: response(a.items[i], answers[i]),
+        result: !graded[i].attempted ? 'neutral' : graded[i].correct ? 'correct' : 'incorrect' })),
+      suspend: { v: 1, c: current, s: submitted ? 1 : 0,
+                 a: answers.flatMap((x, i) => (x === undefined ? [] : [[i, a.items[i].kind === 'explore' ? 1 : x]])) },
     };
   }
   const api = {
@@ -54,16 +82,21 @@ function fakeApp() {
       if (cmd === 'assignment_open') {
         const file = typeof args.assignment === 'string' ? JSON.parse(args.assignment) : args.assignment;
         if (!Array.isArray(file.items)) throw new Error('items: missing');
-        if (args.resume && !Array.isArray(args.resume.answers)) throw new Error('resume: answers missing');
+        const r = args.resume;
+        if (r && r.v !== 1) throw new Error('resume: v: 1, the version of the suspend object');
+        if (r && !Array.isArray(r.a)) throw new Error('resume: a: a list of [item, answer]');
         a = file;
         learner = args.learner || '';
-        ({ current = 0, answers = [], submitted = false } = args.resume || {});
-        answers = [...answers];
+        current = r ? r.c : 0;
+        submitted = r ? r.s === 1 : false;
+        answers = [];
+        for (const [i, x] of r ? r.a : []) answers[i] = x;
         return state();
       }
       if (cmd === 'assignment_state') return state();
+      if (submitted && cmd === 'assignment_answer') throw new Error('assignment_answer: submitted');
       if (cmd === 'assignment_go') current = args.index;
-      else if (cmd === 'assignment_answer') answers[args.index] = args.answer;
+      else if (cmd === 'assignment_answer') answers[args.index] = a.items[args.index].kind === 'explore' ? 1 : args.answer ?? args.state;
       else if (cmd === 'assignment_submit') submitted = true;
       else throw new Error('unknown command ' + cmd);
       const s = state();
@@ -76,6 +109,22 @@ function fakeApp() {
   root.attrs = {};
   return { api, root };
 }
+
+/** Answers item `index` in the fake: a task with a lesson state, anything else with text. */
+function answer(app, index, x) {
+  return app.api.call('assignment_answer', typeof x === 'object' ? { index, state: x } : { index, answer: x });
+}
+
+test('the fake grades as core does (the recorded cspacelab assignment grade)', async () => {
+  const app = fakeApp();
+  await run(fakeWindow(null), app, 'http://lab.test/a.json');
+  for (const [i, x] of GRADED) answer(app, i, x);
+  const g = app.api.call('assignment_state').grade;
+  assert.deepEqual(g, { ...GRADE.score, completed: GRADE.completed, passed: GRADE.passed });
+  assert.deepEqual(app.api.call('assignment_state').items.map((it) => it.score), GRADE.items.map((it) => it.points));
+  assert.equal(GRADE.completed, false, 'the explore item is not visited');
+  assert.equal(GRADE.passed, true, 'core passes what is not complete: the adapter must wait for submission');
+});
 
 /** A window in a frame under `parent`, fetching the assignment text `file`. */
 function fakeWindow(parent, file = EXAMPLE, storage = new Map()) {
@@ -103,8 +152,8 @@ function lmsParent(version, cmi) {
   return parent;
 }
 
-async function run(win, app) {
-  const a = new Assignment(app.root, app.api, 'http://lab.test/assignment.json', win);
+async function run(win, app, url = 'http://lab.test/assignment.json') {
+  const a = new Assignment(app.root, app.api, url, win);
   await a.start();
   return a;
 }
@@ -132,14 +181,18 @@ for (const version of ['1.2', '2004']) {
     else assert.deepEqual([get(lms, 'cmi.completion_status'), get(lms, 'cmi.success_status')], ['incomplete', 'unknown']);
     assert.equal(interactions(lms).length, 5);
 
-    // Items 1, 2 and 5 right (1 + 2 + 3 of 8 points), item 3 wrong, 4 unanswered.
-    app.api.call('assignment_answer', { index: 0, answer: 42 });
-    app.api.call('assignment_answer', { index: 1, answer: 42 });
-    app.api.call('assignment_answer', { index: 2, answer: 41.5 });
-    app.api.call('assignment_answer', { index: 4, answer: 'done' });
+    const status = () => (v12 ? [get(lms, 'cmi.core.lesson_status')] : [get(lms, 'cmi.completion_status'), get(lms, 'cmi.success_status')]);
+    // Items 1, 2 and 5 right (1 + 2 + 3 of 8 points), item 3 wrong, 4 (explore, 0 points) not visited.
+    for (const [i, x] of GRADED) answer(app, i, x);
     app.api.call('assignment_go', { index: 4 });
-    assert.equal(interaction(lms, 2)[v12 ? 'student_response' : 'learner_response'], '41.5');
-    assert.equal(interaction(lms, 2).result, 'neutral', 'no result before submission');
+    assert.equal(interaction(lms, 2)[v12 ? 'student_response' : 'learner_response'], '7');
+    assert.equal(interaction(lms, 2).result, v12 ? 'wrong' : 'incorrect', 'core judges an attempt before submission');
+    assert.deepEqual(status(), v12 ? ['incomplete'] : ['incomplete', 'unknown'], 'core says passed; not submitted');
+    // All answered, not submitted: core's grade is completed and passed; the LMS hears neither.
+    answer(app, 3);
+    const g = app.api.call('assignment_state').grade;
+    assert.deepEqual([g.completed, g.passed], [true, true]);
+    assert.deepEqual(status(), v12 ? ['incomplete'] : ['incomplete', 'unknown'], 'answers may still change');
     app.api.call('assignment_submit', {});
 
     const pts = 6 / 8;
@@ -154,14 +207,15 @@ for (const version of ['1.2', '2004']) {
     const rows = interactions(lms).map((it) => [it.id, it.type, it[v12 ? 'student_response' : 'learner_response'], it.result]);
     const other = v12 ? 'performance' : 'other';
     assert.deepEqual(rows, [
-      ['item-1_P3', 'numeric', '42', 'correct'],
-      ['item-2_P10', 'numeric', '42', 'correct'],
-      ['item-3_P12', 'numeric', '41.5', v12 ? 'wrong' : 'incorrect'],
-      ['item-4_explore', other, '', v12 ? 'wrong' : 'incorrect'],
-      ['item-5_task', other, 'done', 'correct'],
+      ['item-1', 'fill-in', 'T^2', 'correct'],
+      ['item-2', 'numeric', '3.05', 'correct'],
+      ['item-3', 'numeric', '7', v12 ? 'wrong' : 'incorrect'],
+      ['item-4', other, 'visited', 'correct'],
+      ['item-5', other, 'solved: true', 'correct'],
     ]);
     assert.deepEqual(interactions(lms).map((it) => Number(it.weighting)), [1, 2, 2, 0, 3]);
-    assert.deepEqual(JSON.parse(record(lms).suspend_data), { current: 4, answers: [42, 42, 41.5, null, 'done'], submitted: true });
+    assert.deepEqual(JSON.parse(record(lms).suspend_data),
+                     { v: 1, c: 4, s: 1, a: [[0, 'T^2'], [1, '3.05'], [2, '7'], [3, 1], [4, SOLVED]] });
 
     win.dispatchEvent(new Event('pagehide'));
     win.dispatchEvent(new Event('pagehide'));
@@ -174,19 +228,19 @@ for (const version of ['1.2', '2004']) {
   });
 
   test(`SCORM ${version}: a relaunch resumes from the suspend data`, async () => {
-    const suspend = JSON.stringify({ current: 2, answers: [42, 7], submitted: false });
+    const suspend = JSON.stringify({ v: 1, c: 2, s: 0, a: [[0, 'T^2'], [1, '7']] });
     const parent = lmsParent(version, v12 ? { suspend_data: suspend, core: { entry: 'resume' } } : { suspend_data: suspend, entry: 'resume' });
     const app = fakeApp();
     await run(fakeWindow(parent), app);
     assert.deepEqual(app.api.calls[0][1].resume, JSON.parse(suspend));
     const lms = parent.lms;
-    assert.deepEqual(interactions(lms).slice(0, 2).map((it) => it[v12 ? 'student_response' : 'learner_response']), ['42', '7']);
+    assert.deepEqual(interactions(lms).slice(0, 2).map((it) => it[v12 ? 'student_response' : 'learner_response']), ['T^2', '7']);
     // Saved work the file no longer takes: a fresh start, said in the notice.
-    const broken = lmsParent(version, { suspend_data: '{"current":1}' });
+    const broken = lmsParent(version, { suspend_data: '{"v":1,"c":1}' });
     const app2 = fakeApp();
     const a2 = await run(fakeWindow(broken), app2);
     assert.equal(a2.state.current, 0);
-    assert.match(app2.api.notices.join('\n'), /saved answers do not fit this assignment any more \(resume: answers missing\)/);
+    assert.match(app2.api.notices.join('\n'), /saved answers do not fit this assignment any more \(resume: a: a list of \[item, answer\]\)/);
   });
 }
 
@@ -215,14 +269,15 @@ test('without an LMS: a plain page that resumes from localStorage', async () => 
   const storage = new Map();
   const app = fakeApp();
   await run(fakeWindow(null, EXAMPLE, storage), app);
-  app.api.call('assignment_answer', { index: 1, answer: 42 });
+  answer(app, 1, '3.05');
   app.api.call('assignment_go', { index: 1 });
-  const key = 'cspacelab:v1:assignment:motion-planning-week3';
-  assert.deepEqual(JSON.parse(storage.get(key)), { current: 1, answers: [null, 42], submitted: false });
+  const key = 'cspacelab:v1:assignment:http://lab.test/assignment.json#motion-planning-week3';
+  assert.deepEqual([...storage.keys()], [key], 'by the file\'s URL and its seed_key');
+  assert.deepEqual(JSON.parse(storage.get(key)), { v: 1, c: 1, s: 0, a: [[1, '3.05']] });
   const again = fakeApp();
   const a = await run(fakeWindow(null, EXAMPLE, storage), again);
   assert.equal(again.api.calls[0][1].learner, undefined);
-  assert.deepEqual(again.api.calls[0][1].resume, { current: 1, answers: [null, 42], submitted: false });
+  assert.deepEqual(again.api.calls[0][1].resume, { v: 1, c: 1, s: 0, a: [[1, '3.05']] });
   assert.equal(a.state.current, 1);
 });
 
@@ -232,7 +287,7 @@ test('what the LMS refuses is one notice per element; a bad file is named and th
   parent.lms.SetValue = (el, value) => (el === 'cmi.score.raw' ? 'false' : set(el, value));
   const app = fakeApp();
   await run(fakeWindow(parent), app);
-  app.api.call('assignment_answer', { index: 0, answer: 42 });
+  answer(app, 0, 'T^2');
   app.api.call('assignment_submit', {});
   assert.equal(app.api.notices.length, 1, app.api.notices.join('\n'));
   assert.match(app.api.notices[0], /^The LMS \(SCORM 2004\) refused cmi\.score\.raw = 0 \(\d+: /);
@@ -297,4 +352,111 @@ test('a numeric item answered with text is reported as fill-in; plain right answ
     for (const [element, value] of values)
       assert.equal(lms[V.set](element, value), 'true', `SCORM ${V.version} takes ${element} = ${value} (${lms[V.error]()})`);
   }
+});
+
+test('1.2 score: core\'s scaled as a percentage (1 for an assignment of 0 points, once completed)', () => {
+  const score = (grade, submitted = true) => new Map(Assignment.valuesOf({ submitted, grade }, Assignment.V12));
+  const zero = score({ raw: 0, min: 0, max: 0, scaled: 1, completed: true, passed: true });
+  assert.deepEqual(['raw', 'min', 'max'].map((k) => zero.get('cmi.core.score.' + k)), ['100', '0', '100']);
+  assert.equal(zero.get('cmi.core.lesson_status'), 'passed');
+  assert.equal(score({ raw: 2, min: 0, max: 3, scaled: 2 / 3, completed: true, passed: true }).get('cmi.core.score.raw'), '66.67');
+  const blank = score({ raw: 0, min: 0, max: 3, scaled: 0, completed: false, passed: false });
+  assert.equal(blank.get('cmi.core.lesson_status'), 'failed', 'submitted with a blank item: failed, not incomplete');
+});
+
+test('2004 fill-in responses: at most 250 characters, no leading { or [,] (CMILangString250 per node)', () => {
+  const long = 'Q = ' + 'S^1 x '.repeat(60) + 'R^2';
+  const state = { submitted: false, grade: { raw: 0, min: 0, max: 3, scaled: 0, completed: true, passed: false }, interactions: [
+    { id: 'item-1', type: 'fill-in', learner_response: '{x | x in R^2 [,] |x| < 1}' },
+    { id: 'item-2', type: 'fill-in', learner_response: long },
+    { id: 'item-3', type: 'numeric', learner_response: '{1}' },
+  ] };
+  const values = new Map(Assignment.valuesOf(state, Assignment.V2004));
+  assert.equal(values.get('cmi.interactions.0.learner_response'), '(x | x in R^2 [;] |x| < 1}');
+  assert.equal(values.get('cmi.interactions.1.learner_response'), long.slice(0, 250));
+  assert.equal(values.get('cmi.interactions.2.type'), 'fill-in');
+  const lms = new Scorm2004API({ logLevel: 5 });
+  lms.Initialize('');
+  for (const [element, value] of values)
+    assert.equal(lms.SetValue(element, value), 'true', `SCORM 2004 takes ${element} = ${value} (${lms.GetLastError()})`);
+  assert.equal(lms.GetValue('cmi.interactions.1.learner_response').length, 250);
+  const v12 = new Map(Assignment.valuesOf(state, Assignment.V12));
+  assert.equal(v12.get('cmi.interactions.0.student_response'), '{x | x in R^2 [,] |x| < 1}', '1.2 keeps the text');
+});
+
+test('back-forward cache: a persisted pagehide commits only; back after Terminate, a notice', async () => {
+  for (const version of ['1.2', '2004']) {
+    const [fin, com] = version === '1.2' ? ['LMSFinish', 'LMSCommit'] : ['Terminate', 'Commit'];
+    const parent = lmsParent(version);
+    const win = fakeWindow(parent);
+    const app = fakeApp();
+    const a = await run(win, app);
+    answer(app, 0, 'T^2');
+    const hide = (persisted) => win.dispatchEvent(Object.assign(new Event('pagehide'), { persisted }));
+    const show = (persisted) => win.dispatchEvent(Object.assign(new Event('pageshow'), { persisted }));
+    hide(true);
+    assert.equal(parent.count[fin], undefined, `${version}: not terminated into the cache`);
+    assert.equal(parent.count[com], 1, `${version}: committed`);
+    show(true);
+    answer(app, 1, '3.05');
+    a.commit();
+    assert.equal(parent.count[com], 2, `${version}: still reporting after coming back`);
+    assert.deepEqual(app.api.notices, []);
+    hide(false);
+    assert.equal(parent.count[fin], 1);
+    show(true);
+    assert.deepEqual(app.api.notices, ['This page has stopped reporting to your course: reload the page to keep reporting to your course.']);
+    assert.equal(parent.count[version === '1.2' ? 'LMSInitialize' : 'Initialize'], 1, 'no second Initialize');
+  }
+});
+
+test('assignment=: a redirect off this site is refused', async () => {
+  const http = await import('node:http');
+  // Another origin (another port) that serves a file, as a site a link would point it at would.
+  const other = http.createServer((req, res) => res.writeHead(200, { 'access-control-allow-origin': '*' }).end(EXAMPLE));
+  await new Promise((ok) => other.listen(0, '127.0.0.1', ok));
+  const server = http.createServer((req, res) => {
+    if (req.url === '/away.json') res.writeHead(302, { location: `http://127.0.0.1:${other.address().port}/a.json` }).end();
+    else if (req.url === '/here.json') res.writeHead(302, { location: '/assignment.json' }).end();
+    else res.writeHead(200, { 'content-type': 'application/json' }).end(EXAMPLE);
+  });
+  await new Promise((ok) => server.listen(0, '127.0.0.1', ok));
+  const base = `http://127.0.0.1:${server.address().port}`;
+  try {
+    const away = fakeApp();
+    const a = await run(Object.assign(fakeWindow(null), { fetch: (url, init) => fetch(url, init) }), away, base + '/away.json');
+    assert.equal(a.state, null);
+    assert.deepEqual(away.api.notices, ['The assignment away.json could not be loaded (redirected off this site).']);
+    const here = fakeApp();
+    await run(Object.assign(fakeWindow(null), { fetch: (url, init) => fetch(url, init) }), here, base + '/here.json');
+    assert.deepEqual(here.api.notices, [], 'a redirect within the site is followed');
+    assert.equal(here.api.calls[0][0], 'assignment_open');
+    // What a fetch that follows a redirect reports (response.url) is checked too.
+    const win = fakeWindow(null);
+    win.fetch = async () => ({ ok: true, status: 200, url: 'http://evil.example/a.json', text: async () => EXAMPLE });
+    const app = fakeApp();
+    await run(win, app);
+    assert.deepEqual(app.api.notices, ['The assignment assignment.json could not be loaded (redirected off this site).']);
+    const plain = fakeApp();
+    await run(Object.assign(fakeWindow(null), { fetch: (url, init) => fetch(url, init) }), plain, base + '/assignment.json');
+    assert.deepEqual(plain.api.notices, [], 'no redirect: loaded');
+  } finally {
+    server.close();
+    other.close();
+  }
+});
+
+test('without an LMS: two courses\' files of one title keep their work apart', async () => {
+  const storage = new Map();
+  const file = JSON.stringify({ ...JSON.parse(EXAMPLE), seed_key: undefined });
+  for (const course of ['robotics', 'planning']) {
+    const app = fakeApp();
+    await run(fakeWindow(null, file, storage), app, `http://lab.test/${course}/week3.json`);
+    answer(app, 1, course === 'robotics' ? '3.05' : '1');
+  }
+  assert.deepEqual([...storage.keys()], ['cspacelab:v1:assignment:http://lab.test/robotics/week3.json',
+                                         'cspacelab:v1:assignment:http://lab.test/planning/week3.json']);
+  const again = fakeApp();
+  await run(fakeWindow(null, file, storage), again, 'http://lab.test/robotics/week3.json');
+  assert.deepEqual(again.api.calls[0][1].resume.a, [[1, '3.05']]);
 });
