@@ -100,8 +100,9 @@ function launchPage(indexHtml, title, version) {
   const main = /<main class="lab"[^>]*>/;
   if (!main.test(indexHtml)) throw new Error('the site\'s index.html has no <main class="lab"> to configure');
   return indexHtml
-    .replace(main, `<main class="lab" id="assignment" data-lab="assignment=${ASSIGNMENT}" data-lab-scorm="${version}">`)
-    .replace(/<title>[^<]*<\/title>/, `<title>${xml(title)} - C-Space Lab</title>`)
+    // Replaced by functions: in a replacement string, $' $& $1 in a title would be patterns.
+    .replace(main, () => `<main class="lab" id="assignment" data-lab="assignment=${ASSIGNMENT}" data-lab-scorm="${version}">`)
+    .replace(/<title>[^<]*<\/title>/, () => `<title>${xml(title)} - C-Space Lab</title>`)
     .replace(/\n\s*<meta name="description"[^>]*>/, '');
 }
 

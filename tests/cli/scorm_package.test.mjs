@@ -176,6 +176,23 @@ for (const version of ['1.2', '2004']) {
   });
 }
 
+test('a title with $\' $& $1 (replacement patterns) is written as it is, in the page and the manifest', () => {
+  const file = JSON.parse(fs.readFileSync(EXAMPLE, 'utf8'));
+  file.title = "Costs in $'s & $& of $1 <ok>";
+  const dir = tempDir();
+  const assignment = path.join(dir, 'dollars.json');
+  fs.writeFileSync(assignment, JSON.stringify(file));
+  const r = pack(assignment, dist, dir, '--version', '2004');
+  assert.equal(r.status, 0, r.stderr);
+  const entries = readZip(fs.readFileSync(path.join(dir, 'dollars-scorm2004.zip')));
+  const launch = entries.find((e) => e.name === 'launch.html').data.toString('utf8');
+  const titles = launch.match(/<title>[\s\S]*?<\/title>/g);
+  assert.deepEqual(titles, ["<title>Costs in $'s &amp; $&amp; of $1 &lt;ok&gt; - C-Space Lab</title>"]);
+  assert.equal(launch.split('<main class="lab"').length, 2, 'one lab element');
+  const manifest = parseXml(entries.find((e) => e.name === 'imsmanifest.xml').data.toString('utf8'));
+  assert.ok(all(manifest).some((el) => el.name === 'title' && el.text === file.title), 'the manifest\'s title');
+});
+
 test('an invalid assignment is refused with each item and field named, and nothing written', () => {
   const bad = JSON.parse(fs.readFileSync(EXAMPLE, 'utf8'));
   bad.items[1].points = -1;
