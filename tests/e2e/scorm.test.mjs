@@ -245,6 +245,14 @@ for (const version of ['1.2', '2004']) {
       }
       assert.ok(solved, 'a seed with 45 samples joins start and goal');
       await call(frame, 'assignment_answer', { index: 4 });
+      // Every item answered, not submitted: the app's grade is completed and passed, but the
+      // answers may still change, so the LMS hears neither (read back from the runtime).
+      const open = await call(frame, 'assignment_state');
+      assert.deepEqual([open.submitted, open.grade.completed, open.grade.passed], [false, true, true]);
+      await page.waitForFunction((el) => Object.values(window.lms.api.renderCMIToJSONObject().cmi.interactions)[4][el] !== '',
+                                 v12 ? 'student_response' : 'learner_response');
+      if (v12) assert.equal(await lmsGet(page, 'cmi.core.lesson_status'), 'incomplete');
+      else assert.deepEqual([await lmsGet(page, 'cmi.completion_status'), await lmsGet(page, 'cmi.success_status')], ['incomplete', 'unknown']);
       // Submit with the mouse, through the card's confirmation.
       await clickControl(page, frame, 'assignment-submit');
       await clickControl(page, frame, 'assignment-submit-confirm');
