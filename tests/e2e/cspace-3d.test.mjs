@@ -4,8 +4,9 @@
 // for the polygon robot (SE(2)) and the 3-link arm (T^3); and the lesson on a phone.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
+import zlib from 'node:zlib';
 import {
-  withPage, withBrowser, openLab, collectErrors, worldToPage, drag, keys, waitFrames, screenshot, inspectPng, api,
+  withPage, withBrowser, openLab, collectErrors, worldToPage, drag, keys, waitFrames, screenshot, inspectPng, api, refusal,
 } from './lib/harness.mjs';
 
 const TWO_PI = 2 * Math.PI;
@@ -169,6 +170,57 @@ test('T^3: the 3-link arm, its cut at theta1 and PRM through glued faces', () =>
   const pathRgb = rgbOf((await api(page, 'theme')).colours.path);
   const n = await countNear(browser, shot.png, { x: vol.x, y: vol.y, w: vol.w - 30, h: vol.h }, pathRgb);
   assert.ok(n > 40, `${n} path-coloured pixels in the volume`);
+}));
+
+// A polygon-robot scene whose 3-D C-space costs far past the lab's limit: 100 concave stars
+// of 64 vertices (62 triangles each) over the box, the robot made a 32-gon (one convex piece).
+function heavyScene(base) {
+  const [lo, hi] = [base.workspace.min, base.workspace.max];
+  const w = [(hi[0] - lo[0]) / 10, (hi[1] - lo[1]) / 10];
+  const obstacles = [];
+  for (let i = 0; i < 10; ++i) for (let j = 0; j < 10; ++j) {
+    const c = [lo[0] + (i + 0.5) * w[0], lo[1] + (j + 0.5) * w[1]];
+    const vertices = [];
+    for (let k = 0; k < 64; ++k) {
+      const r = (k % 2 ? 0.2 : 0.4) * Math.min(w[0], w[1]), a = TWO_PI * k / 64;
+      vertices.push([c[0] + r * Math.cos(a), c[1] + r * Math.sin(a)].map((v) => +v.toFixed(5)));
+    }
+    obstacles.push({ type: 'polygon', vertices });
+  }
+  const robot = { type: 'polygon', vertices: [] };
+  for (let k = 0; k < 32; ++k) robot.vertices.push([0.02 * Math.cos(TWO_PI * k / 32), 0.02 * Math.sin(TWO_PI * k / 32)]);
+  return { ...base, robot, obstacles };
+}
+
+test('A scene whose volumes cost past the lab\'s limit is refused, by the API and by a link',
+  () => withBrowser(async ({ browser, url }) => {
+  const page = await browser.newPage();
+  const errors = collectErrors(page);
+  await openLab(page, url + '?lesson=cspace-3d');
+  await waitFrames(page, 2);
+  const before = await api(page, 'get_scene');
+  const heavy = heavyScene(before);
+  const t0 = Date.now();
+  const why = await refusal(page, 'call', 'set_scene', { scene: heavy });
+  assert.ok(Date.now() - t0 < 5000, `refused in ${Date.now() - t0} ms, before any volume is built`);
+  assert.match(why, /too much work for the lab: 4 x [\d.e+]+ vertex sums \+ [\d.e+]+ C-obstacle pieces x 128 rows a slice x 64 slices = [\d.e+]+, plus [\d.e+]+ for the drawn block, over the lab's [\d.e+]+/);
+  assert.deepEqual(await api(page, 'get_scene'), before, 'the old scene stays');
+  assert.equal((await api(page, 'state')).robot, 'polygon');
+  await page.close();
+
+  // The same scene by link (samples=0: no roadmap to price) opens the lesson's own scene with a notice.
+  const linked = await browser.newPage();
+  const linkErrors = collectErrors(linked);
+  const zipped = zlib.deflateRawSync(Buffer.from(JSON.stringify(heavy)), { level: 9 }).toString('base64url');
+  const t1 = Date.now();
+  await openLab(linked, url + `?lesson=cspace-3d&samples=0&scene=z.${zipped}`);
+  await waitFrames(linked, 2);
+  assert.ok(Date.now() - t1 < 20000, `the link opened in ${Date.now() - t1} ms`);
+  assert.match((await api(linked, 'status')).notice, /too much work for the lab/);
+  assert.equal((await api(linked, 'get_scene')).obstacles.length, before.obstacles.length, 'the bundled scene is shown');
+  await linked.close();
+  assert.deepEqual(errors, []);
+  assert.deepEqual(linkErrors, []);
 }));
 
 test('Phone upright: the lesson is usable with fingers', () => withBrowser(async ({ browser, url }) => {

@@ -25,6 +25,7 @@
 #include "app/views/split.hpp"
 #include "app/views/volume_view.hpp"
 #include "core/base/angles.hpp"
+#include "core/base/text.hpp"
 #include "core/checking/scene_text.hpp"
 #include "core/geometry/geometry.hpp"
 #include "core/planning/planner_json.hpp"
@@ -96,7 +97,10 @@ class Cspace3dLesson : public Lesson {
                                  "in θ (the robot turns) while it moves; through the top it comes back at the "
                                  "bottom, the same angle.");
     if (panel::fold("Obstacles", false))
-      if (editor_.toolbar(scene_, ctx)) rebuild(session_.wanted_steps());
+      if (editor_.toolbar(scene_, ctx)) {
+        refuse_heavy_redo(ctx);
+        rebuild(session_.wanted_steps());
+      }
   }
 
   void views(LabContext& ctx, ImVec2 size) override {
@@ -124,6 +128,8 @@ class Cspace3dLesson : public Lesson {
             robot_type_name(s.robot) + "' robot with " + std::to_string(robot_dof(s.robot)) + " coordinates";
       return false;
     }
+    // The volumes are built at once as the scene is taken (the roadmap runs in slices later).
+    if (!(why = volume_problem(s)).empty()) return false;
     if (!(why = scene_budget_problem(params_, s)).empty()) return false;
     editor_.replace(scene_, s);
     q_ = scene_.start;
@@ -131,7 +137,15 @@ class Cspace3dLesson : public Lesson {
     return true;
   }
   bool undo() override { return editor_.undo(scene_) && (after_undo(), true); }
-  bool redo() override { return editor_.redo(scene_) && (after_undo(), true); }
+  bool redo() override {
+    if (!editor_.redo(scene_)) return false;
+    if (!volume_problem(scene_).empty()) {  // a refused edit, back on the redo stack
+      editor_.undo(scene_);
+      return false;
+    }
+    after_undo();
+    return true;
+  }
 
   json state(const json&) const override {
     json out{{"robot", arm() ? "arm3" : "polygon"},
@@ -224,6 +238,27 @@ class Cspace3dLesson : public Lesson {
   }
   void after_undo() { rebuild(session_.wanted_steps()); }
 
+  // What is wrong with building `s`'s volumes (the fine one and the drawn one) in the lab, or
+  // "": they are built at once when the scene changes, so a heavy scene would hang the page.
+  static std::string volume_problem(const Scene& s) {
+    const bool polygon = std::holds_alternative<PolygonRobot>(s.robot);
+    const VolumeWork fine = polygon ? cspace_volume_work(s, kFineSe2XY, kFineSe2Z) : cspace_volume_work(s, kFineArm, kFineArm);
+    const VolumeWork drawn = cspace_volume_work(s, kDrawXY, kDrawZ);
+    if (fine.units + drawn.units <= kLabMaxVolumeWork) return "";
+    return "this scene's 3-D C-space is too much work for the lab: " + fine.text + " = " + significant(fine.units) +
+           ", plus " + significant(drawn.units) + " for the drawn block, over the lab's " +
+           significant(kLabMaxVolumeWork) + "; use fewer or simpler obstacles (the CLI's cspace command takes more)";
+  }
+  // The toolbar's (or a key's) Redo may bring back an edit refused by volume_problem() (undone
+  // then, so it waits on the redo stack): refuse it again. Undo and Delete only go back to, or
+  // lighten, scenes accepted before.
+  void refuse_heavy_redo(LabContext& ctx) {
+    if (const std::string why = volume_problem(scene_); !why.empty()) {
+      editor_.undo(scene_);
+      ctx.notify(why);
+    }
+  }
+
   void rebuild(long steps) {
     keep_within_budget(params_, robot_space(scene_.robot, scene_.workspace_min, scene_.workspace_max));
     session_.rebuild(scene_, params_, steps);
@@ -235,7 +270,9 @@ class Cspace3dLesson : public Lesson {
   }
 
   // The exact slicers, the block drawn and the free fraction, from the scene as it is.
-  void rebuild_volumes() {
+  // While an obstacle is dragged only the drawn block follows (`fine_too` false); the fine volume
+  // and its free fraction wait for the release (fine_stale_).
+  void rebuild_volumes(bool fine_too = true) {
     se2_.reset();
     arm3_.reset();
     arm_slice_.reset();
@@ -243,19 +280,21 @@ class Cspace3dLesson : public Lesson {
     if (arm()) {
       arm3_ = std::make_unique<Arm3Slices>(std::get<ArmRobot>(scene_.robot), scene_.obstacles);
       drawn = arm3_volume(*arm3_, kDrawXY, kDrawZ);
-      fine = arm3_volume(*arm3_, kFineArm, kFineArm);
+      if (fine_too) fine = arm3_volume(*arm3_, kFineArm, kFineArm);
       fine_cells_ = {kFineArm, kFineArm, kFineArm};
       volume_view_.set_volume(drawn, Vec3(1, 1, 1));
     } else {
       se2_ = std::make_unique<Se2CObstacles>(std::get<PolygonRobot>(scene_.robot), scene_.obstacles);
       drawn = se2_volume(*se2_, scene_.workspace_min, scene_.workspace_max, kDrawXY, kDrawXY, kDrawZ);
-      fine = se2_volume(*se2_, scene_.workspace_min, scene_.workspace_max, kFineSe2XY, kFineSe2XY, kFineSe2Z);
+      if (fine_too)
+        fine = se2_volume(*se2_, scene_.workspace_min, scene_.workspace_max, kFineSe2XY, kFineSe2XY, kFineSe2Z);
       fine_cells_ = {kFineSe2XY, kFineSe2XY, kFineSe2Z};
       const Vec2 size = scene_.workspace_max - scene_.workspace_min;
       const double m = std::max(size.x(), size.y());
       volume_view_.set_volume(drawn, Vec3(size.x() / m, size.y() / m, 0.8));
     }
-    fine_free_ = fine.free_fraction;
+    fine_stale_ = !fine_too;
+    if (fine_too) fine_free_ = fine.free_fraction;
   }
 
   // A configuration in the block's unit coordinates: x, y, theta for the polygon (the workspace
@@ -325,13 +364,25 @@ class Cspace3dLesson : public Lesson {
     }
     SceneEditor::Options options;
     options.endpoints_are_points = !arm();
-    if (editor_.edit(view_, scene_, ctx, options)) edited();
-    if (session_.replay_pending() && !editor_.dragging()) edited();  // released
+    if (editor_.edit(view_, scene_, ctx, options)) edited(ctx);
+    if ((session_.replay_pending() || fine_stale_) && !editor_.dragging()) edited(ctx);  // released
   }
 
-  void edited() {
-    session_.edited(scene_, editor_.dragging());
-    rebuild_volumes();
+  // An edit in the workspace (each frame of a drag, and its release). A finished edit whose
+  // volumes would cost past the lab's limit is undone with the reason; during a drag the cost
+  // cannot be known to settle, and only the drawn block is built.
+  void edited(LabContext& ctx) {
+    const bool dragging = editor_.dragging();
+    if (!dragging) {
+      if (const std::string why = volume_problem(scene_); !why.empty()) {
+        editor_.undo(scene_);
+        after_undo();
+        ctx.notify(why);
+        return;
+      }
+    }
+    session_.edited(scene_, dragging);
+    rebuild_volumes(!dragging);
   }
 
   // 1.. the link under the mouse (arm), 1 if on the polygon's body, else 0.
@@ -445,6 +496,7 @@ class Cspace3dLesson : public Lesson {
   std::optional<Arm3Slices::Slice> arm_slice_;  // the arm's slice at the cut, kept while it stays
   std::vector<RoundedPolygon> pieces_;
   double fine_free_ = 0.0;
+  bool fine_stale_ = false;  // the scene changed in a drag since fine_free_ was counted
   std::array<int, 3> fine_cells_{0, 0, 0};
   Config q_;
   bool q_arm_ = false;  // q_ is an arm's angles

@@ -49,6 +49,15 @@ struct VolumeWork {
 /// 512 x 256, 1.05e8 units, took 2.3 s). The T^3 estimate ignores the pruning by reach, which
 /// makes most columns far cheaper.
 inline constexpr double kMaxVolumeWork = 4e8;
+/// The most work the lab's "C-spaces in 3-D" lesson spends on a scene's volumes (the fine one it
+/// counts the free fraction on plus the coarse one it draws), at once when the scene changes:
+/// a scene past it is refused, as the page must stay responsive. About 2 s in the browser at
+/// worst. Measured in headless Chromium (set_scene, both volumes): the bundled polygon-robot and
+/// arm-3link scenes 3 to 7 ms; 100 concave 32-gons and the rectangle robot 0.46 s (0.24 s
+/// natively for the fine volume alone); 100 concave 64-gons and a 32-gon robot (4.16e5 vertex
+/// sums, 3400 pieces a slice: 1.34e8 + 5.7e7 units) 5.6 s, 29 ns a unit, where vertex sums
+/// dominate and cost more than the 4 units priced (the fine volume natively 5.5 s).
+inline constexpr double kLabMaxVolumeWork = 5e7;
 /// SE(2) (a polygon robot): (4 x vertex sums + pieces x R) a slice x K; T^3 (a 3-link arm):
 /// obstacle edges x R^2 x K (a disk 1 edge, a wall 6, a polygon its vertices). slices == 0
 /// prices one slice as `cspacelab cspace --slice` makes it (SE(2): 64 units a piece for its
