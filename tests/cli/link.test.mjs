@@ -124,6 +124,11 @@ test('bad input: one line naming what is wrong, exit 2', () => {
   fails(/--params: "seed" is not a parameter of collision \(grid_n, p, q\)/, 'link', p12, '--lesson', 'collision', '--params', '{"seed": 3}');
   fails(/--params: grid_n: an integer in \[2, 100000\]/, 'link', p12, '--lesson', 'collision', '--params', '{"grid_n": 1}');
   fails(/--params: not JSON/, 'link', p12, '--lesson', 'collision', '--params', '{grid_n: 4}');
+  // A configuration of the 3-D lesson has three coordinates (its robots' ranges are the lab's to check).
+  fails(/--params: q: 3 numbers \[a, b, \.\.\.\]/, 'link', scene('polygon-robot.json'), '--lesson', 'cspace-3d', '--params', '{"q": [1, 2]}');
+  fails(/--params: q: 3 numbers/, 'link', scene('polygon-robot.json'), '--lesson', 'cspace-3d', '--params', '{"q": [1, 2, 3, 4]}');
+  assert.deepEqual(query(json('link', scene('polygon-robot.json'), '--lesson', 'cspace-3d', '--params', '{"q": [0.5, 0.5, 1]}').url)
+    .get('q').split(',').map(Number), [0.5, 0.5, 1]);
   // The samplers as the lab takes them: the CLI's syntax, sigma within the lab's range.
   fails(/--params: sampler: sigma: a number in \[0\.001, 1\] in the lab/, 'link', p12, '--lesson', 'step-prm',
         '--params', '{"sampler": "bridge:5"}');

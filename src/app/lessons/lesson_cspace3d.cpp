@@ -176,9 +176,20 @@ class Cspace3dLesson : public Lesson {
       if (k == "samples" || k == "neighbors" || k == "checker" || k == "seed") {
         prm_part[k] = *it;
       } else if (k == "q") {
+        // Angles wrap, within the range `cut` takes (beyond it a double wraps to noise); x and y
+        // must be in the workspace box, the space the volume and the planner cover.
+        const Vec2 lo = scene_.workspace_min, hi = scene_.workspace_max;
+        const auto in = [](const json& v, double a, double b) {
+          return v.is_number() && std::isfinite(v.get<double>()) && v.get<double>() >= a && v.get<double>() <= b;
+        };
         bool ok = it->is_array() && it->size() == 3;
-        for (std::size_t i = 0; ok && i < 3; ++i) ok = (*it)[i].is_number() && std::isfinite((*it)[i].get<double>());
-        if (!ok) throw ApiError(arm() ? "q: [theta1, theta2, theta3], finite" : "q: [x, y, theta], finite");
+        for (int i = 0; ok && i < 3; ++i)
+          ok = arm() || i == 2 ? in((*it)[i], -1000, 1000) : in((*it)[i], lo[i], hi[i]);
+        if (!ok)
+          throw ApiError(arm() ? std::string("q: [theta1, theta2, theta3], three angles in [-1000, 1000] (radians)")
+                               : "q: [x, y, theta], x in [" + significant(lo.x()) + ", " + significant(hi.x()) +
+                                     "], y in [" + significant(lo.y()) + ", " + significant(hi.y()) +
+                                     "], theta in [-1000, 1000] (radians)");
         q = config({(*it)[0].get<double>(), (*it)[1].get<double>(), (*it)[2].get<double>()});
       } else if (k == "cut") {
         if (!it->is_number() || !std::isfinite(it->get<double>()) || std::fabs(it->get<double>()) > 1000)
@@ -205,8 +216,10 @@ class Cspace3dLesson : public Lesson {
   }
   std::vector<ParamField> param_fields() const override {
     std::vector<ParamField> f = prm_param_fields(kLabTorusSamples);
-    f.push_back({"q", "configuration", nullptr, {}, "x, y, theta (polygon) or theta1, theta2, theta3 (arm)"});
-    f.push_back({"cut", "cut plane", nullptr, {}, "theta (polygon) or theta1 (arm) of the cut, radians"});
+    f.push_back({"q", "configuration",
+                 nullptr, {}, "x, y, theta (polygon; x, y in the workspace box) or theta1, theta2, theta3 (arm)"});
+    f.push_back({"cut", "cut plane", nullptr, {},
+                 "theta (polygon) or theta1 (arm) of the cut, radians (a number in [-1000, 1000])"});
     return f;
   }
 

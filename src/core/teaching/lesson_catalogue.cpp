@@ -46,7 +46,8 @@ const CataloguedLesson kLessons[] = {
       {"neighbors", K::Text, nullptr, {}, -kInf, kInf, LessonParamSyntax::NeighborRule},
       {"checker", K::Text, nullptr, {}, -kInf, kInf, LessonParamSyntax::EdgeChecker},
       {"seed", K::Integer, nullptr, {}, 0, kInf},
-      {"q", K::NumberList},
+      // Both of its robots have three coordinates; their ranges depend on the scene (the lab checks).
+      {"q", K::NumberList, nullptr, {}, -kInf, kInf, LessonParamSyntax::None, 3},
       {"cut", K::Number, nullptr, {}, -1000, 1000}},
      {"polygon", "arm"}},
     {"collision",
@@ -217,9 +218,11 @@ std::string lesson_param_problem(const LessonParam& p, const json& v) {
       return name + ": [a, b], two numbers, each in [" + plain(p.lo) + ", " + plain(p.hi) + "]";
     }
     case K::NumberList: {
-      bool ok = v.is_array() && !v.empty() && v.size() <= 64;
+      const std::size_t n = static_cast<std::size_t>(p.max_items);
+      bool ok = v.is_array() && !v.empty() && v.size() <= 64 && (n == 0 || v.size() == n);
       for (std::size_t i = 0; ok && i < v.size(); ++i) ok = finite_number(v[i]);
-      return ok ? "" : name + ": [a, b, ...], numbers";
+      if (ok) return "";
+      return n == 0 ? name + ": [a, b, ...], numbers" : name + ": " + std::to_string(n) + " numbers [a, b, ...]";
     }
     case K::IntegerList: {
       const std::string what = name + ": 1 to " + std::to_string(p.max_items) + " integers, each " +

@@ -27,7 +27,7 @@ enum class LessonParamKind {
   Text,         ///< a string (its syntax: `syntax`)
   Choice,       ///< one of `choices`
   Pair,         ///< [a, b], each in [lo, hi]
-  NumberList,   ///< [a, b, ...] of any length >= 1 (a configuration: the scene's robot decides)
+  NumberList,   ///< [a, b, ...]: `max_items` numbers if set, else any length >= 1 (a configuration: the scene's robot decides)
   IntegerList,  ///< [n, ...], 1 to `max_items` integers of `spec`
 };
 
@@ -41,7 +41,7 @@ struct LessonParam {
   std::initializer_list<std::string_view> choices = {};
   double lo = -kInf, hi = kInf;      ///< without a spec: the inclusive range of a number, or of each item
   LessonParamSyntax syntax = LessonParamSyntax::None;
-  int max_items = 0;                 ///< IntegerList: at most this many
+  int max_items = 0;                 ///< IntegerList: at most this many; NumberList: exactly this many (0: any)
 };
 
 struct CataloguedLesson {
