@@ -5,8 +5,9 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import zlib from 'node:zlib';
+import fs from 'node:fs';
 import {
-  withPage, withBrowser, openLab, collectErrors, worldToPage, drag, keys, waitFrames, screenshot, inspectPng, api, refusal,
+  withPage, withBrowser, openLab, collectErrors, worldToPage, drag, keys, waitFrames, screenshot, inspectPng, api, refusal, cli, tempJson,
 } from './lib/harness.mjs';
 
 const TWO_PI = 2 * Math.PI;
@@ -32,6 +33,30 @@ async function countNear(browser, png, box, rgb, tolerance = 40) {
   return at.filter((c) => Math.abs(c[0] - rgb[0]) + Math.abs(c[1] - rgb[1]) + Math.abs(c[2] - rgb[2]) <= tolerance).length;
 }
 
+// The free fraction of the scene's exact volume at R x R x K cells as the CLI computes it: the
+// share of 255 bytes (free cells) in the file it writes.
+function cliFreeFraction(scene, [r, , k]) {
+  const file = tempJson(scene);
+  const out = file.replace(/scene\.json$/, 'volume.bin');
+  cli('cspace', file, '--resolution', String(r), '--slices', String(k), '--out', out);
+  const bytes = fs.readFileSync(out);
+  assert.equal(bytes.length, r * r * k);
+  let free = 0;
+  for (const b of bytes) free += b === 255;
+  return free / bytes.length;
+}
+
+// Roadmap edges whose short way round crosses +-pi on a glued angle (`glued`: which coordinates
+// are angles), from the roadmap the API lists.
+function seamEdges(prm, glued) {
+  let n = 0;
+  for (const [a, b] of prm.edge_list) {
+    const p = prm.vertices[a], q = prm.vertices[b];
+    n += glued.some((g, i) => g && Math.abs(wrap(q[i]) - wrap(p[i])) > Math.PI);
+  }
+  return n;
+}
+
 // The theme API's colours are [r, g, b].
 const rgbOf = (c) => c.slice(0, 3);
 const close = (a, b, tol = 45) => Math.abs(a[0] - b[0]) + Math.abs(a[1] - b[1]) + Math.abs(a[2] - b[2]) <= tol;
@@ -51,9 +76,11 @@ test('SE(2): scrubbing the cut turns the robot, dragging it moves its point, a d
   assert.equal(s.robot, 'polygon');
   assert.equal(s.cut.axis, 'theta');
   assert.equal(s.cut.value, s.q[2]);
-  assert.ok(s.free_fraction > 0.3 && s.free_fraction < 0.95, `free fraction ${s.free_fraction}`);
   assert.ok(s.drawn.faces > 100, `${s.drawn.faces} faces drawn`);
   const scene = await api(page, 'get_scene');
+  assert.deepEqual(s.free_fraction_cells, [128, 128, 64]);
+  const cliFree = cliFreeFraction(scene, s.free_fraction_cells);
+  assert.ok(Math.abs(s.free_fraction - cliFree) < 2e-5, `free fraction ${s.free_fraction}, the CLI's ${cliFree}`);
 
   // A point on the robot's outline (its short edge's middle, robot frame (0.08, 0)) at q.
   const edge = (q) => [q[0] + 0.08 * Math.cos(q[2]), q[1] + 0.08 * Math.sin(q[2])];
@@ -95,9 +122,16 @@ test('SE(2): scrubbing the cut turns the robot, dragging it moves its point, a d
   const px = (await api(page, 'view', { view: 'workspace' })).scale;
   assert.ok(Math.abs(m.q[0] - 0.25) < 3 / px && Math.abs(m.q[1] - 0.6) < 3 / px, `moved to ${m.q}`);
   assert.equal(m.q[2], u.q[2], 'theta unchanged');
-  const box = [scene.workspace.max[0] - scene.workspace.min[0], scene.workspace.max[1] - scene.workspace.min[1]];
-  assert.ok(Math.abs(m.q_in_volume[0] - (m.q[0] - scene.workspace.min[0]) / box[0]) < 1e-9);
-  assert.ok(Math.abs(m.q_in_volume[1] - (m.q[1] - scene.workspace.min[1]) / box[1]) < 1e-9);
+  // x and y across the [0, 1] box, theta from -pi: at (0.25, 0.75, 0) a quarter, three quarters, half way up.
+  assert.deepEqual(scene.workspace, { min: [0, 0], max: [1, 1] });
+  await api(page, 'set_params', { params: { q: [0.25, 0.75, 0] } });
+  assert.deepEqual((await api(page, 'state')).q_in_volume, [0.25, 0.75, 0.5]);
+  // Outside the space: refused with the ranges, and q stays.
+  for (const q of [[1e300, 0, 0], [1.5, 0.5, 0], [0.5, -0.1, 0], [0.5, 0.5, 1e300], [0.5, 0.5]])
+    assert.equal(await refusal(page, 'call', 'set_params', { params: { q } }),
+                 'q: [x, y, theta], x in [0, 1], y in [0, 1], theta in [-1000, 1000] (radians)', `q = ${q}`);
+  assert.deepEqual((await api(page, 'state')).q, [0.25, 0.75, 0]);
+  await api(page, 'set_params', { params: { q: m.q } });
 
   // A drag across the block turns it (0.01 rad a pixel) and changes what it shows.
   const turnBefore = await screenshot(page, 'cspace3d-se2-turn0.png');
@@ -164,7 +198,20 @@ test('T^3: the 3-link arm, its cut at theta1 and PRM through glued faces', () =>
   await waitFrames(page, 3);
   const planned = await api(page, 'state');
   assert.ok(planned.prm.solved, 'PRM found a path in T^3');
-  assert.ok(planned.prm.seam_crossing_edges > 0, `${planned.prm.seam_crossing_edges} edges through glued faces`);
+  // The edges through glued faces, counted from the roadmap's own vertices: all three angles wrap.
+  const listed = (await api(page, 'state', { roadmap: true })).prm;
+  const seams = seamEdges(listed, [true, true, true]);
+  assert.ok(seams > 0, 'some edge crosses a glued face');
+  assert.equal(planned.prm.seam_crossing_edges, seams);
+  // The free fraction against the CLI's volume of the same scene, and a known configuration's place.
+  assert.deepEqual(planned.free_fraction_cells, [96, 96, 96]);
+  const cliFree = cliFreeFraction(await api(page, 'get_scene'), planned.free_fraction_cells);
+  assert.ok(Math.abs(planned.free_fraction - cliFree) < 2e-5, `free fraction ${planned.free_fraction}, the CLI's ${cliFree}`);
+  await api(page, 'set_params', { params: { q: [Math.PI / 2, -Math.PI / 2, 0] } });
+  const inVolume = (await api(page, 'state')).q_in_volume;
+  assert.ok([0.25, 0.5, 0.75].every((v, i) => Math.abs(inVolume[i] - v) < 1e-12), `(theta2, theta3, theta1) from -pi: ${inVolume}`);
+  assert.match(await refusal(page, 'call', 'set_params', { params: { q: [0, 0, 1e300] } }),
+               /^q: \[theta1, theta2, theta3\], three angles in \[-1000, 1000\] \(radians\)$/);
   const vol = await area(page, 'volume');
   const shot = await screenshot(page, 'cspace3d-arm-path.png');
   const pathRgb = rgbOf((await api(page, 'theme')).colours.path);

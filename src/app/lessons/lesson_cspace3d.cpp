@@ -147,7 +147,7 @@ class Cspace3dLesson : public Lesson {
     return true;
   }
 
-  json state(const json&) const override {
+  json state(const json& args) const override {
     json out{{"robot", arm() ? "arm3" : "polygon"},
              {"q", config_to_json(q_)},
              {"q_free", world().is_free(q_)},
@@ -159,7 +159,7 @@ class Cspace3dLesson : public Lesson {
              {"free_fraction_cells", fine_cells_},
              {"drawn", {{"cells", {kDrawXY, kDrawXY, kDrawZ}}, {"faces", volume_view_.faces()},
                         {"yaw", volume_view_.yaw()}, {"pitch", volume_view_.pitch()}, {"zoom", volume_view_.zoom()}}},
-             {"prm", planner_state_json(prm(), false)}};
+             {"prm", planner_state_json(prm(), args.value("roadmap", false))}};
     out["prm"]["params"] = prm_params_json(params_);
     out["prm"]["seam_crossing_edges"] = seam_edges();
     out["prm"]["running"] = running_json(session_);
