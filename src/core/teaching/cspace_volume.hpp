@@ -44,10 +44,11 @@ struct VolumeWork {
   double units = 0.0;
   std::string text;
 };
-/// The most work a volume or slice may take: about 10 s natively at worst (measured: 200
+/// The most work a volume or slice may take: 10 to 20 s natively at worst. Measured: 200
 /// obstacles, a third of them concave, and an L-shaped robot, about 800 pieces a slice: 512 x
-/// 512 x 256, 1.05e8 units, took 2.3 s). The T^3 estimate ignores the pruning by reach, which
-/// makes most columns far cheaper.
+/// 512 x 256, 1.05e8 units, took 2.3 s (22 ns a unit); where vertex sums dominate a unit costs
+/// more (100 concave 64-gons and a 32-gon robot: 1.34e8 units in 5.5 s, 41 ns). The T^3
+/// estimate ignores the pruning by reach, which makes most columns far cheaper.
 inline constexpr double kMaxVolumeWork = 4e8;
 /// The most work the lab's "C-spaces in 3-D" lesson spends on a scene's volumes (the fine one it
 /// counts the free fraction on plus the coarse one it draws), at once when the scene changes:
