@@ -149,6 +149,14 @@ class CompareLesson : public Lesson, private Stepper {
     }
     ImGui::Separator();
     if (mode_ == kExperimentMode) experiment_panel(ctx);
+    // The planners count differently, and the table shows their own counts (the CLI's
+    // "evaluations"): say what is in it, so that 2000 bridge draws over 4 checks is not a riddle.
+    if (mode_ != kExperimentMode) {
+      ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+      ImGui::TextWrapped("Collision checks: the configurations the edge checks tested, and each new tree end; a "
+                         "PRM's samples are tested too (1 to 3 per draw), not counted there.");
+      ImGui::PopStyleColor();
+    }
   }
 
   void views(LabContext& ctx, ImVec2 size) override {
