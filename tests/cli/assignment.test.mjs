@@ -8,6 +8,7 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { json, fails, run, SOURCE } from './lib/cli.mjs';
+import { s1, minGrid } from '../lib/homework-answers.mjs';
 
 const EXAMPLE = path.join(SOURCE || path.resolve(path.dirname(new URL(import.meta.url).pathname), '../..'), 'docs/assignment-example.json');
 
@@ -16,19 +17,6 @@ function temp(content, name = 'file.json') {
   const file = path.join(dir, name);
   fs.writeFileSync(file, typeof content === 'string' ? content : JSON.stringify(content));
   return file;
-}
-
-// S^1 distance written again here.
-function s1(q1, q2) {
-  let best = Infinity;
-  for (let k = -4; k <= 4; ++k) best = Math.min(best, Math.abs(q2 - q1 + 2 * Math.PI * k));
-  return best;
-}
-// P12's smallest N by brute force.
-function minGrid(c, r) {
-  for (let n = 2; n < 100000; ++n)
-    for (let i = 0; i < n; ++i) if (Math.hypot(i / (n - 1) - c[0], c[1]) <= r) return n;
-  return null;
 }
 
 const example = JSON.parse(fs.readFileSync(EXAMPLE, 'utf8'));

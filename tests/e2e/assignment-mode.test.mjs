@@ -12,26 +12,12 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { withPage, withBrowser, collectErrors, openLab, click, keys, waitFrames, api, pageButton, screenshot,
          inspectPng, cli, tempJson } from './lib/harness.mjs';
+import { s1, minGrid } from '../lib/homework-answers.mjs';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const FILE = path.resolve(here, '../../docs/assignment-example.json');
 const ASSIGNMENT = JSON.parse(fs.readFileSync(FILE, 'utf8'));
 const LEARNER = 'student-4711';
-
-// The S^1 distance: the least |q2 - q1 + 2 pi k|.
-function s1(q1, q2) {
-  let best = Infinity;
-  for (let k = -4; k <= 4; ++k) best = Math.min(best, Math.abs(q2 - q1 + 2 * Math.PI * k));
-  return best;
-}
-
-// The smallest N whose points t = i/(N-1) on (0,0)-(1,0) land in the closed disk.
-function minGrid(center, radius) {
-  for (let n = 2; n < 100000; ++n)
-    for (let i = 0; i < n; ++i)
-      if (Math.hypot(i / (n - 1) - center[0], center[1]) <= radius) return n;
-  return null;
-}
 
 // The learner's exercises as the CLI makes them (seeds, given numbers; never an answer).
 function exercises(learner) {

@@ -7,6 +7,7 @@ import assert from 'node:assert/strict';
 import { withPage, withBrowser, collectErrors, openLab, click, keys, waitFrames, api, pageButton, screenshot,
          inspectPng, cli, expectView } from './lib/harness.mjs';
 import { lessonProbes } from './lib/probes.mjs';
+import { s1, minGrid } from '../lib/homework-answers.mjs';
 
 const LESSON = { P1: 'notation', P2: 'notation', P3: 'notation', P4: 'notation', P5: 'notation', P6: 'notation',
                  P7: 'notation', P8: 'analysis', P9: 'analysis', P10: 'distances', P11: 'distances',
@@ -29,23 +30,6 @@ async function answer(page, text) {
   await keys(page, 'Enter');
   await waitFrames(page, 2);
   return (await api(page, 'homework_state')).check;
-}
-
-// The distance on S^1, by the shortest of the turns q2 - q1 + 2 pi k.
-function s1(q1, q2) {
-  let best = Infinity;
-  for (let k = -4; k <= 4; ++k) best = Math.min(best, Math.abs(q2 - q1 + 2 * Math.PI * k));
-  return best;
-}
-
-// The smallest N whose points t = i/(N-1) on (0,0)-(1,0) land in the closed disk.
-function minGrid(center, radius) {
-  for (let n = 2; n < 100000; ++n)
-    for (let i = 0; i < n; ++i) {
-      const x = i / (n - 1);
-      if (Math.hypot(x - center[0], center[1]) <= radius) return n;
-    }
-  return null;
 }
 
 test('first visit: the welcome leads to the homework map, and is not shown again',

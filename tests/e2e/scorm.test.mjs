@@ -17,23 +17,12 @@ import { fileURLToPath } from 'node:url';
 import { DIST, CLI, launchBrowser, collectErrors, cli, screenshot } from './lib/harness.mjs';
 import { serve } from '../../scripts/static-server.mjs';
 import { readZip } from '../../scripts/zip.mjs';
+import { s1, minGrid } from '../lib/homework-answers.mjs';
 
 const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
 const EXAMPLE = path.join(ROOT, 'docs/assignment-example.json');
 const LEARNER = 'ann@example.edu';
 const SCORM_AGAIN = path.join(ROOT, 'node_modules/scorm-again/dist/scorm-again.min.js');
-
-// S^1 distance and P12's smallest N, written again here (tests/cli/assignment.test.mjs).
-function s1(q1, q2) {
-  let best = Infinity;
-  for (let k = -4; k <= 4; ++k) best = Math.min(best, Math.abs(q2 - q1 + 2 * Math.PI * k));
-  return best;
-}
-function minGrid(c, r) {
-  for (let n = 2; n < 100000; ++n)
-    for (let i = 0; i < n; ++i) if (Math.hypot(i / (n - 1) - c[0], c[1]) <= r) return n;
-  return null;
-}
 
 // The stand-in LMS: a page with scorm-again and an iframe. Every launch gets a fresh API object
 // holding the learner and the last session's suspend data (entry=resume after exit=suspend), as
