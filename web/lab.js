@@ -287,6 +287,10 @@
     try {
       if (single) throw new Error('the single-file lab cannot load files: use the lab\'s site or its SCORM package');
       if (typeof window.CSpaceLabAssignment === 'undefined') await load('lab-assignment.js');
+      if (root.cspacelabAccess) {  // the card in the accessible DOM, before the first event
+        if (typeof window.CSpaceLabAssignmentAccess === 'undefined') await load('lab-assignment-access.js');
+        window.CSpaceLabAssignmentAccess(root.cspacelabAccess);
+      }
       const A = window.CSpaceLabAssignment;
       const assignment = new A(root, api, A.assignmentUrl(raw, location.href));
       await assignment.start();

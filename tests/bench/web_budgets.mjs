@@ -2,9 +2,10 @@
 // do not depend on the machine, fail it):
 //   wasm <= 2.0 MB (1.5 MB until the homework companion, 1.75 MB until an instructor's lock and
 //   hide, 1.8 MB until the planners of issue 24: see docs/web.md, Budgets) and
-//   JS <= 250 KB uncompressed (what every page loads); lab-assignment.js, loaded only by a lab in
-//   assignment mode (assignment=, the SCORM packages' launch page), on its own <= 16 KB; first frame <= 1 s after navigation on localhost in headless
-//   Chromium.
+//   JS <= 250 KB uncompressed (what every page loads); lab-assignment.js and
+//   lab-assignment-access.js, loaded only by a lab in assignment mode (assignment=, the SCORM
+//   packages' launch page), on their own <= 24 KB (16 KB until the card's accessible mirror);
+//   first frame <= 1 s after navigation on localhost in headless Chromium.
 //   node tests/bench/web_budgets.mjs [--quick] [--runs N]
 // First frame = performance.now() (milliseconds since the navigation started) when Emscripten's
 // main loop has drawn its first frame (Module.postMainLoop, recorded by lab-shell.js). Each run
@@ -20,7 +21,7 @@ const args = process.argv.slice(2);
 const quick = args.includes('--quick');
 const runs = Number(args[args.indexOf('--runs') + 1]) || (quick ? 2 : 10);
 const KB = 1024;
-const budgets = { wasm: 2.0 * KB * KB, js: 250 * KB, assignmentJs: 16 * KB, firstFrameMs: 1000 };
+const budgets = { wasm: 2.0 * KB * KB, js: 250 * KB, assignmentJs: 24 * KB, firstFrameMs: 1000 };
 
 function size(file) {
   const bytes = fs.readFileSync(path.join(DIST, file));
@@ -32,14 +33,15 @@ const wasm = size('cspacelab.wasm');
 const jsFiles = ['cspacelab.js', 'lab-api.js', 'lab-url.js', 'lab-shell.js', 'lab-access.js', 'lab-task.js', 'lab-print.js', 'lab.js'];
 const js = jsFiles.map((f) => ({ file: f, ...size(f) }));
 const jsTotal = js.reduce((a, f) => ({ raw: a.raw + f.raw, gzip: a.gzip + f.gzip }), { raw: 0, gzip: 0 });
-const assignmentJs = size('lab-assignment.js');
+const assignmentJs = ['lab-assignment.js', 'lab-assignment-access.js'].map(size)
+  .reduce((a, f) => ({ raw: a.raw + f.raw, gzip: a.gzip + f.gzip }), { raw: 0, gzip: 0 });
 const single = size('cspacelab-single.html');
 
 console.log('file                        uncompressed        gzip');
 console.log(`cspacelab.wasm            ${fmt(wasm.raw)} ${fmt(wasm.gzip)}   budget ${fmt(budgets.wasm)}  ${wasm.raw <= budgets.wasm ? 'ok' : 'OVER'}`);
 for (const f of js) console.log(`${f.file.padEnd(25)} ${fmt(f.raw)} ${fmt(f.gzip)}`);
 console.log(`all JS                    ${fmt(jsTotal.raw)} ${fmt(jsTotal.gzip)}   budget ${fmt(budgets.js)}  ${jsTotal.raw <= budgets.js ? 'ok' : 'OVER'}`);
-console.log(`lab-assignment.js         ${fmt(assignmentJs.raw)} ${fmt(assignmentJs.gzip)}   budget ${fmt(budgets.assignmentJs)}  ` +
+console.log(`lab-assignment*.js        ${fmt(assignmentJs.raw)} ${fmt(assignmentJs.gzip)}   budget ${fmt(budgets.assignmentJs)}  ` +
             `${assignmentJs.raw <= budgets.assignmentJs ? 'ok' : 'OVER'}   (assignment mode only: not in "all JS")`);
 console.log(`cspacelab-single.html     ${fmt(single.raw)} ${fmt(single.gzip)}   (everything, one file)`);
 if (wasm.raw > budgets.wasm || jsTotal.raw > budgets.js || assignmentJs.raw > budgets.assignmentJs) process.exitCode = 1;

@@ -8,10 +8,12 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
+import os from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { withPage, withBrowser, collectErrors, openLab, click, keys, waitFrames, api, pageButton, screenshot,
-         inspectPng, cli, tempJson } from './lib/harness.mjs';
+         inspectPng, cli, tempJson, DIST, launchBrowser } from './lib/harness.mjs';
+import { serve } from '../../scripts/static-server.mjs';
 import { s1, minGrid } from '../lib/homework-answers.mjs';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
@@ -323,3 +325,71 @@ test('with the lesson locked by the instructor (lock=lesson) the assignment stil
   assert.equal(st.items[4].status, 'open');
   assert.match(st.note, /not open/);
 }));
+
+test('by keyboard in the accessible DOM: a lab opened with assignment= mirrors the card, answers, submits',
+  { timeout: 180000 }, async () => {
+  // The site with the assignment file beside the page, as a course's site or the SCORM package
+  // holds it: the mirror (lab-assignment-access.js) comes only with assignment=.
+  const site = fs.mkdtempSync(path.join(os.tmpdir(), 'cspacelab-assign-'));
+  for (const f of fs.readdirSync(DIST)) fs.symlinkSync(path.join(DIST, f), path.join(site, f));
+  fs.copyFileSync(FILE, path.join(site, 'week3.json'));
+  const { server, url } = await serve(site, 0);
+  const browser = await launchBrowser();
+  try {
+    const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
+    await page.addInitScript(() => localStorage.setItem('cspacelab:v1:welcomed', '1'));
+    const errors = collectErrors(page);
+    await openLab(page, url + 'index.html?assignment=week3.json');
+    const group = page.locator('.lab-access-assignment');
+    await group.waitFor({ state: 'attached' });
+    await page.waitForFunction(() => !document.querySelector('.lab-access-assignment').hidden);
+    assert.match(await group.locator('h3').textContent(), /^Assignment: Week 3/);
+    const items = group.locator('ol').first().locator('button');
+    assert.equal(await items.count(), ASSIGNMENT.items.length);
+    assert.equal(await items.nth(0).getAttribute('aria-current'), 'true');
+
+    // To P10 by the keyboard: focus its button in the list, Enter.
+    await items.nth(1).focus();
+    await page.keyboard.press('Enter');
+    await page.waitForFunction(() => document.querySelectorAll('.lab-access-assignment ol button')[1]
+      .getAttribute('aria-current') === 'true');
+    assert.match(await group.locator('p').nth(1).textContent(), /^2\. /);
+    const learner = (await api(page, 'assignment_state')).learner;
+    const given = cli('assignment', 'exercises', FILE, ...(learner ? ['--learner', learner] : [])).items[1].given;
+    const right = s1(given.q1, given.q2);
+    const input = group.locator('input');
+    const answerWith = async (text) => {
+      await input.focus();
+      await input.fill('');
+      await page.keyboard.type(text);
+      await page.keyboard.press('Enter');
+      await waitFrames(page, 2);
+    };
+    await answerWith((right + 0.5).toFixed(4));
+    assert.equal((await api(page, 'assignment_state')).items[1].status, 'incorrect');
+    assert.match(await items.nth(1).textContent(), /: not right$/);
+    await answerWith(right.toFixed(4));
+    assert.equal((await api(page, 'assignment_state')).items[1].status, 'correct');
+    assert.match(await items.nth(1).textContent(), /: right$/);
+    assert.match(await group.locator('p[aria-live]').textContent(), /right/i, 'the feedback is in the live region');
+    assert.match(await group.locator('p').first().textContent(), /^1 of 5 done, score 2 of 8$/);
+
+    // Submit asks first; the confirmation takes the focus, and Enter submits.
+    await group.getByRole('button', { name: 'Submit...' }).focus();
+    await page.keyboard.press('Enter');
+    const sure = group.getByRole('button', { name: /Yes, submit/ });
+    assert.equal(await sure.isVisible(), true);
+    assert.equal(await page.evaluate(() => document.activeElement.textContent), await sure.textContent());
+    await page.keyboard.press('Enter');
+    await page.waitForFunction(() => window.cspacelab.call('assignment_state').submitted);
+    assert.match(await group.locator('p').first().textContent(), /submitted, not passed$/);
+    const review = group.locator('ol').nth(1).locator('li');
+    assert.equal(await review.count(), ASSIGNMENT.items.length);
+    assert.match(await review.nth(1).textContent(), new RegExp(`Your answer: ${right.toFixed(4)}\\.`));
+    assert.deepEqual(errors, []);
+  } finally {
+    await browser.close();
+    server.close();
+    fs.rmSync(site, { recursive: true, force: true });
+  }
+});

@@ -1,0 +1,107 @@
+// The assignment card (the app's, drawn on the canvas) in the lab's accessible DOM (lab-access.js),
+// for a screen reader and the keyboard: the title, progress and score, the items as buttons with
+// their status (the current one aria-current), the current item's prompt, an answer field with
+// Check (Enter too), "Open in the lab", "Check my lab", Previous, Next, Submit with a second
+// button that confirms, the feedback in a polite live region, and the review after submission.
+// Loaded by lab.js with lab-assignment.js, only for a lab in assignment mode, so that no other lab
+// pays for it. It follows the app's cspacelab:assignment events rather than a poll, and makes its
+// elements once (only their text changes), so that the focus stays where the student is.
+'use strict';
+
+(function (global) {
+  const WORDS = { open: 'to do', answered: 'unreadable', correct: 'right', incorrect: 'not right', viewed: 'viewed' };
+
+  /** Adds the assignment to `access` (a CSpaceLabAccess) and keeps it in step with the app. */
+  function mirrorAssignment(access) {
+    const el = (tag, props, parent) => access.el(tag, props, parent);
+    const call = (cmd, args) => access.api.call(cmd, args);
+    let state = null, shownItem = null;
+
+    const g = el('div', { className: 'lab-access-assignment', role: 'group' }, access.section);
+    g.hidden = true;
+    const title = el('h3', { id: access.id + '-assignment' }, g);
+    g.setAttribute('aria-labelledby', title.id);
+    const progress = el('p', {}, g);
+    const items = el('ol', {}, g);
+    const prompt = el('p', {}, g);
+    const row = el('div', { className: 'lab-access-param' }, g);
+    el('label', { for: access.id + '-answer', text: 'Your answer' }, row);
+    const input = el('input', { id: access.id + '-answer', type: 'text', spellcheck: 'false' }, row);
+    const button = (label, action) => {
+      const b = el('button', { type: 'button', text: label }, g);
+      b.addEventListener('click', () => access.act(() => action(state.current)));
+      return b;
+    };
+    // Moves to item i as the card's Previous/Next/list do; an explore item counts as viewed.
+    const go = (i) => {
+      if (state.submitted || i < 0 || i >= state.items.length) return;  // aria-disabled: nothing to do
+      call('assignment_go', { index: i });
+      if (state.items[i].kind === 'explore') call('assignment_answer', { index: i });
+    };
+    const check = button('Check', (i) => call('assignment_answer', { index: i, answer: input.value }));
+    input.addEventListener('keydown', (e) => { if (e.key === 'Enter') check.click(); });
+    const open = button('Open in the lab', go);
+    const lab = button('Check my lab', (i) => call('assignment_answer', { index: i }));
+    const prev = button('Previous', (i) => go(i - 1));
+    const next = button('Next', (i) => go(i + 1));
+    // Submit asks first, as the card's button does: a second button confirms and takes the focus.
+    const submit = button('Submit...', () => { sure.hidden = false; sure.focus(); });
+    const sure = button('Yes, submit my answers (they become final)', () => call('assignment_submit'));
+    const feedback = el('p', { 'aria-live': 'polite' }, g);
+    const review = el('ol', {}, g);
+
+    function show(st) {
+      state = st;
+      g.hidden = !st;
+      if (!st) return;
+      const done = st.items.filter((it) => it.status !== 'open').length;
+      title.textContent = 'Assignment: ' + st.title;
+      progress.textContent = `${done} of ${st.items.length} done, score ${st.grade.raw} of ${st.grade.max}` +
+        (st.submitted ? (st.grade.passed ? ': submitted, passed' : ': submitted, not passed') : '');
+      if (items.children.length !== st.items.length) {
+        items.textContent = '';
+        for (const it of st.items) {
+          const b = el('button', { type: 'button' }, el('li', {}, items));
+          b.addEventListener('click', () => access.act(() => go(it.index)));
+        }
+      }
+      st.items.forEach((it, i) => {
+        const b = items.children[i].firstChild;
+        b.textContent = `${it.title} (${it.points} points): ${WORDS[it.status]}`;
+        if (i === st.current) b.setAttribute('aria-current', 'true');
+        else b.removeAttribute('aria-current');
+        b.setAttribute('aria-disabled', String(st.submitted));
+      });
+      const cur = st.items[st.current];
+      const kind = st.submitted ? '' : cur.kind;
+      prompt.textContent = st.submitted ? '' : `${st.current + 1}. ${cur.title}: ${cur.prompt}` +
+        (cur.format_hint ? ` Answer: ${cur.format_hint}.` : '') + (cur.check_text ? ` What counts: ${cur.check_text}.` : '');
+      row.hidden = check.hidden = kind !== 'exercise';
+      // The field keeps what the student types until they move to another item.
+      if (kind === 'exercise' && shownItem !== st.current) input.value = cur.answer || '';
+      shownItem = st.current;
+      lab.hidden = kind !== 'task';
+      open.hidden = !kind;
+      prev.hidden = next.hidden = submit.hidden = st.submitted;
+      sure.hidden = true;
+      prev.setAttribute('aria-disabled', String(st.current === 0));
+      next.setAttribute('aria-disabled', String(st.current + 1 >= st.items.length));
+      feedback.textContent = [cur.feedback, st.note].filter(Boolean).join(' ');
+      review.textContent = '';
+      for (const it of st.submitted ? st.items : []) {
+        const answer = it.kind === 'exercise' ? ` Your answer: ${it.answer === null ? '(none)' : it.answer}. ` +
+          `The right answer: ${it.expected}.` : '';
+        el('li', { text: `${it.title}: ${it.score} of ${it.max} (${WORDS[it.status]}).${answer} ${it.explanation || ''}` }, review);
+      }
+    }
+
+    access.root.addEventListener('cspacelab:assignment', (e) => show(e.detail));
+    try {
+      show(call('assignment_state'));
+    } catch {
+      // none open yet: the first event shows it
+    }
+  }
+
+  global.CSpaceLabAssignmentAccess = mirrorAssignment;
+})(typeof window !== 'undefined' ? window : globalThis);
