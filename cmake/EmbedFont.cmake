@@ -1,6 +1,7 @@
 # The UI font: DejaVu Sans from Debian's fonts-dejavu-core, cut at build time to the glyphs the
 # lab shows (Latin, Greek letters, arrows, maths, geometric shapes, the homework map's check
-# mark) with pyftsubset, and compiled into the program as a byte array. 757 KB -> about 80 KB of wasm; nothing of it is committed.
+# mark) with pyftsubset, and compiled into the program as a byte array. 757 KB -> about 80 KB
+# of wasm; nothing of it is committed.
 #
 # The one list of Unicode ranges below feeds both pyftsubset and ImGui's glyph ranges.
 set(CSPACELAB_FONT_RANGES
