@@ -31,7 +31,7 @@ test('two labs on a course page work and do not interfere', () => withBrowser(as
   assert.equal((await call(page, A, 'status')).lesson, 'collision');
   assert.equal((await call(page, A, 'state')).grid_n, 4);
   assert.equal((await call(page, B, 'status')).lesson, 'step-prm');
-  assert.deepEqual((await call(page, B, 'state')).params, { checker: 'bisection', neighbors: 'k:8', samples: 80, seed: 3 });
+  assert.deepEqual((await call(page, B, 'state')).params, { checker: 'bisection', neighbors: 'k:8', sampler: 'uniform', samples: 80, seed: 3 });
   assert.equal((await call(page, B, 'getScene')).name, 'P9: a wall with a gap');
   assert.equal((await call(page, A, 'status')).notice, '');
   assert.equal((await call(page, B, 'status')).notice, '');
