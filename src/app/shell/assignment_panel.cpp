@@ -299,25 +299,11 @@ void AssignmentPanel::current_item() {
   ImGui::TextWrapped("%s (%s %s)", item.title.c_str(), points_text(item.points).c_str(), item.points == 1 ? "point" : "points");
   card::paragraphs(st["prompt"].get<std::string>());
   if (item.kind == AssignmentItemKind::Exercise) {
-    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    ImGui::TextWrapped("Answer: %s", st["format_hint"].get<std::string>().c_str());
-    ImGui::PopStyleColor();
-    const float check_w = ui::button_width("Check");
-    ImGui::PushItemWidth(-check_w - ImGui::GetStyle().ItemSpacing.x);
-    if (focus_answer_) {
-      ImGui::SetKeyboardFocusHere();
-      focus_answer_ = false;
-    }
-    const bool enter = ImGui::InputTextWithHint("##assignment-answer", "your answer", answer_, sizeof answer_,
-                                                ImGuiInputTextFlags_EnterReturnsTrue);
-    web::record_control("assignment-answer");
-    ImGui::PopItemWidth();
-    ImGui::SameLine();
-    if (ImGui::Button("Check") || enter) {
+    if (card::answer_row("##assignment-answer", st["format_hint"].get<std::string>(), answer_, sizeof answer_,
+                         focus_answer_, "assignment-answer", "assignment-check")) {
       act([&] { answer(i, std::string(answer_)); });
       focus_answer_ = true;  // correct it and press Enter again
     }
-    web::record_control("assignment-check");
     if (ImGui::SmallButton("Open the tool")) visit(i);
     web::record_control("assignment-open-item");
   } else {

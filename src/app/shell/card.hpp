@@ -5,6 +5,7 @@
 
 #include "app/shell/theme.hpp"
 #include "app/shell/ui.hpp"
+#include "app/shell/web_bridge.hpp"
 #include "imgui.h"
 
 namespace csl::app::card {
@@ -43,6 +44,31 @@ void boxed(ImU32 colour, Body body) {
   // High contrast: the tint is gone (white or black), an edge marks the card instead.
   if (theme::look().high_contrast) dl->AddRect(ImVec2(left, lo.y - pad), ImVec2(right, hi.y + pad), theme::kInk, 4.0f);
   dl->ChannelsMerge();
+}
+
+/// An exercise's answer row, the homework card's and the assignment card's: the format hint, a
+/// field and Check beside it (`field_control` and `check_control` for the page's buttons map).
+/// The field takes the keyboard when `focus` is set, which this clears. True when Check is
+/// pressed or Enter typed in the field: the caller checks `buffer` (and sets `focus` again, so
+/// that a wrong answer is corrected and Enter pressed again at once).
+inline bool answer_row(const char* id, const std::string& hint, char* buffer, std::size_t size, bool& focus,
+                       const char* field_control, const char* check_control) {
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextWrapped("Answer: %s", hint.c_str());
+  ImGui::PopStyleColor();
+  const float check_w = ui::button_width("Check");
+  ImGui::PushItemWidth(-check_w - ImGui::GetStyle().ItemSpacing.x);
+  if (focus) {
+    ImGui::SetKeyboardFocusHere();
+    focus = false;
+  }
+  const bool enter = ImGui::InputTextWithHint(id, "your answer", buffer, size, ImGuiInputTextFlags_EnterReturnsTrue);
+  web::record_control(field_control);
+  ImGui::PopItemWidth();
+  ImGui::SameLine();
+  const bool checked = ImGui::Button("Check") || enter;
+  web::record_control(check_control);
+  return checked;
 }
 
 }  // namespace csl::app::card

@@ -214,25 +214,10 @@ void HomeworkPanel::problem_body(const HomeworkProblem& problem) {
   const Exercise& e = *exercise_;
   ImGui::TextDisabled("Exercise %s, numbers no. %llu", e.id.c_str(), static_cast<unsigned long long>(e.seed));
   card::paragraphs(e.prompt);
-  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-  ImGui::TextWrapped("Answer: %s", e.format_hint.c_str());
-  ImGui::PopStyleColor();
-  const float check_w = ui::button_width("Check");
-  ImGui::PushItemWidth(-check_w - ImGui::GetStyle().ItemSpacing.x);
-  if (focus_answer_) {
-    ImGui::SetKeyboardFocusHere();
-    focus_answer_ = false;
-  }
-  const bool enter = ImGui::InputTextWithHint("##homework-answer", "your answer", answer_, sizeof answer_,
-                                              ImGuiInputTextFlags_EnterReturnsTrue);
-  web::record_control("answer");
-  ImGui::PopItemWidth();
-  ImGui::SameLine();
-  if (ImGui::Button("Check") || enter) {
+  if (card::answer_row("##homework-answer", e.format_hint, answer_, sizeof answer_, focus_answer_, "answer", "check")) {
     check(answer_);
     focus_answer_ = true;  // correct it and press Enter again
   }
-  web::record_control("check");
   if (checked_) {
     ImGui::PushStyleColor(ImGuiCol_Text, checked_->correct ? theme::vec4(theme::kTextGood) : theme::vec4(theme::kTextBad));
     ImGui::TextWrapped("%s", checked_->correct ? "Right." : "Not right yet.");
