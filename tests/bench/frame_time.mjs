@@ -139,7 +139,7 @@ try {
     }
   } else if (scenario === 'cspace-3d') {
     await api(page, 'select_lesson', { id: 'cspace-3d' });
-    if (process.argv[3] === 'arm')
+    if (/^(robot=)?arm$/.test(process.argv[3] || ''))
       await api(page, 'set_scene', { scene: (await api(page, 'bundled_scenes'))['arm-3link'] });
     await api(page, 'set_params', { params: { samples: 1000, neighbors: 'k:10', seed: 2 } });
     await api(page, 'run');
