@@ -13,6 +13,8 @@
 #include "core/checking/collision.hpp"
 #include "core/teaching/cspace_map.hpp"
 
+#include "random_polygon.hpp"
+
 using csl::AngleInterval;
 using csl::config;
 using csl::kPi;
@@ -36,22 +38,10 @@ bool in_intervals(const std::vector<AngleInterval>& v, double t) {
   return false;
 }
 
-// A simple polygon, star-shaped about c (so often concave): 3 to 8 vertices at sorted random
-// angles, radii in [0.35, 1] * size. (det:: functions: the same scenes natively and in wasm.)
+// A simple star-shaped polygon about c (random_polygon.hpp), kept only above 1e-4 * size² in
+// twice its area.
 csl::Polygon random_polygon(csl::Rng& rng, const csl::Vec2& c, double size) {
-  for (;;) {
-    const int n = 3 + static_cast<int>(rng.below(6));
-    std::vector<double> angles;
-    for (int k = 0; k < n; ++k) angles.push_back(rng.uniform(-kPi, kPi));
-    std::sort(angles.begin(), angles.end());
-    csl::Polygon poly;
-    for (double a : angles) {
-      const double r = size * rng.uniform(0.35, 1.0);
-      poly.push_back(c + r * csl::Vec2(csl::det::cos(a), csl::det::sin(a)));
-    }
-    if (std::string(csl::polygon_problem(poly)).empty() && std::fabs(csl::polygon_twice_signed_area(poly)) > 1e-4 * size * size)
-      return poly;
-  }
+  return csl::test::random_star_polygon_about(rng, c, size, 1e-4);
 }
 
 struct RandomScene {

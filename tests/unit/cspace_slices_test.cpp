@@ -15,28 +15,18 @@
 #include "core/checking/collision.hpp"
 #include "core/teaching/cspace_volume.hpp"
 
+#include "random_polygon.hpp"
+
 using csl::config;
 using csl::kPi;
 using csl::Vec2;
 
 namespace {
 
-// A simple polygon star-shaped about c (often concave): 3 to 8 vertices at sorted random
-// angles, radii in [0.35, 1] * size. One draw per statement: the same scenes in every build.
+// A simple star-shaped polygon about c (random_polygon.hpp), kept only above 1e-3 * size² in
+// twice its area.
 csl::Polygon random_polygon(csl::Rng& rng, const Vec2& c, double size) {
-  for (;;) {
-    const int n = 3 + static_cast<int>(rng.below(6));
-    std::vector<double> angles;
-    for (int k = 0; k < n; ++k) angles.push_back(rng.uniform(-kPi, kPi));
-    std::sort(angles.begin(), angles.end());
-    csl::Polygon poly;
-    for (double a : angles) {
-      const double r = size * rng.uniform(0.35, 1.0);
-      poly.push_back(c + r * Vec2(csl::det::cos(a), csl::det::sin(a)));
-    }
-    if (std::string(csl::polygon_problem(poly)).empty() && std::fabs(csl::polygon_twice_signed_area(poly)) > 1e-3 * size * size)
-      return poly;
-  }
+  return csl::test::random_star_polygon_about(rng, c, size, 1e-3);
 }
 
 // 2 to 3 of each kind in [0, 1]^2: disks, polygons (convex or not), walls.
