@@ -376,7 +376,8 @@ class CompareLesson : public Lesson, private Stepper {
 
   static bool same_choice(const PlannerChoice& a, const PlannerChoice& b) {
     return a.kind == b.kind && a.samples == b.samples && a.goal_bias == b.goal_bias && a.step == b.step &&
-           a.seed == b.seed && a.sampler.kind == b.sampler.kind && a.sampler.sigma == b.sampler.sigma;
+           a.seed == b.seed && a.sampler.kind == b.sampler.kind && a.sampler.sigma == b.sampler.sigma &&
+           a.sampler.uniform_share == b.sampler.uniform_share;
   }
 
   // What PRM's budgets say of `c` in `scene` (the tree planners check one edge a sample: their

@@ -29,32 +29,58 @@ std::vector<int> first_primes(int count) {
   return primes;
 }
 
+/// The shortest of %.15g..%.17g that reads back as v (0.05, not 0.050000000000000003).
+std::string shortest_decimal(double v) {
+  char text[48];
+  for (int digits = 15; digits <= 17; ++digits) {
+    std::snprintf(text, sizeof text, "%.*g", digits, v);
+    if (std::strtod(text, nullptr) == v) break;
+  }
+  return text;
+}
+
 }  // namespace
 
 SamplerSpec SamplerSpec::parse(const std::string& text) {
   SamplerSpec s;
+  // "+uniform:W" after gaussian:S or bridge:S: the hybrid's uniform share.
+  std::string head = text;
+  const std::size_t plus = text.find('+');
+  if (plus != std::string::npos) {
+    head = text.substr(0, plus);
+    const std::string tail = text.substr(plus + 1);
+    if (tail.rfind("uniform:", 0) != 0)
+      throw std::invalid_argument("sampler '" + printable(text, 40) + "': after '+' only uniform:W (the uniform share)");
+    const auto w = parse_decimal(std::string_view(tail).substr(8));
+    if (!w || !std::isfinite(*w) || !(*w >= 0.0 && *w < 1.0))
+      throw std::invalid_argument("sampler '" + printable(text, 40) + "': the uniform share W must be a number in [0, 1)");
+    s.uniform_share = *w + 0.0;
+  }
   const auto sigma_after = [&](std::size_t prefix) {
-    const auto v = parse_decimal(std::string_view(text).substr(prefix));
+    const auto v = parse_decimal(std::string_view(head).substr(prefix));
     if (!v) throw std::invalid_argument("sampler '" + printable(text, 40) + "': not a number after ':'");
     if (!std::isfinite(*v) || !(*v > 0.0))
       throw std::invalid_argument("sampler '" + printable(text, 40) + "': sigma must be a finite number > 0");
     return *v;
   };
-  if (text == "uniform") {
+  if (head == "uniform") {
     s.kind = Kind::Uniform;
-  } else if (text == "halton") {
+  } else if (head == "halton") {
     s.kind = Kind::Halton;
-  } else if (text.rfind("gaussian:", 0) == 0) {
+  } else if (head.rfind("gaussian:", 0) == 0) {
     s.kind = Kind::Gaussian;
     s.sigma = sigma_after(9);
-  } else if (text.rfind("bridge:", 0) == 0) {
+  } else if (head.rfind("bridge:", 0) == 0) {
     s.kind = Kind::Bridge;
     s.sigma = sigma_after(7);
-  } else if (text == "gaussian" || text == "bridge") {
-    throw std::invalid_argument("sampler '" + text + "' needs its sigma: " + text + ":S, e.g. " + text + ":0.05");
+  } else if (head == "gaussian" || head == "bridge") {
+    throw std::invalid_argument("sampler '" + printable(text, 40) + "' needs its sigma: " + head + ":S, e.g. " + head + ":0.05");
   } else {
-    throw std::invalid_argument("unknown sampler '" + printable(text, 40) + "' (uniform, gaussian:S, bridge:S or halton)");
+    throw std::invalid_argument("unknown sampler '" + printable(text, 40) +
+                                "' (uniform, gaussian:S, bridge:S or halton; gaussian and bridge may add +uniform:W)");
   }
+  if (plus != std::string::npos && s.kind != Kind::Gaussian && s.kind != Kind::Bridge)
+    throw std::invalid_argument("sampler '" + printable(text, 40) + "': only gaussian:S and bridge:S take +uniform:W");
   return s;
 }
 
@@ -65,17 +91,8 @@ std::string SamplerSpec::name() const {
     case Kind::Gaussian:
     case Kind::Bridge: break;
   }
-  char text[80];
-  std::snprintf(text, sizeof text, "%s:%.17g", kind == Kind::Gaussian ? "gaussian" : "bridge", sigma);
-  // The shortest of %.15g..%.17g that reads back as sigma (0.05, not 0.050000000000000003).
-  for (int digits = 15; digits <= 17; ++digits) {
-    char shorter[48];
-    std::snprintf(shorter, sizeof shorter, "%.*g", digits, sigma);
-    if (std::strtod(shorter, nullptr) == sigma) {
-      std::snprintf(text, sizeof text, "%s:%s", kind == Kind::Gaussian ? "gaussian" : "bridge", shorter);
-      break;
-    }
-  }
+  std::string text = std::string(kind == Kind::Gaussian ? "gaussian:" : "bridge:") + shortest_decimal(sigma);
+  if (uniform_share > 0.0) text += "+uniform:" + shortest_decimal(uniform_share);
   return text;
 }
 
@@ -151,6 +168,20 @@ SamplerDraw Sampler::draw(Rng& rng, int index) const {
       out.kept = out.q_free = world_->is_free(out.q);
       return out;
     }
+    case SamplerSpec::Kind::Gaussian:
+    case SamplerSpec::Kind::Bridge:
+      if (spec_.uniform_share > 0.0 && rng.uniform01() < spec_.uniform_share) {
+        out.q = space.sample(rng);
+        out.tested = 1;
+        out.kept = out.q_free = world_->is_free(out.q);
+        return out;
+      }
+      break;
+  }
+  switch (spec_.kind) {
+    case SamplerSpec::Kind::Uniform:
+    case SamplerSpec::Kind::Halton:
+      break;  // drawn above
     case SamplerSpec::Kind::Gaussian: {
       Config q1 = space.sample(rng);
       Config q2 = gaussian_partner(rng, q1);

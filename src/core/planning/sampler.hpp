@@ -13,6 +13,11 @@
 // - bridge:S (Hsu et al. 2003): q1 uniform; q1 free: nothing kept (one tested); else q2 as for
 //   gaussian; q2 free: nothing kept (two tested); else the midpoint of q1 and q2 (the shorter way
 //   round on S^1), kept if free (three tested).
+// - gaussian:S+uniform:W and bridge:S+uniform:W, W in (0, 1) (the hybrids of Hsu et al. 2003):
+//   with chance W a draw is a uniform one, otherwise the sampler's own. A bridge alone keeps points
+//   in passages only, which start and goal out in the open rarely see; the uniform share covers
+//   the open space. (One more random number per draw, taken only when W > 0: the plain samplers
+//   keep their bits.)
 // - halton: the i-th point of the Halton sequence (bases 2, 3, 5, ... per coordinate, i = 1, 2,
 //   ... the draw's number) scaled to the bounds (S^1 over [-pi, pi)); kept if free. It takes no
 //   random number: the seed plays no part in it.
@@ -33,10 +38,12 @@ namespace csl {
 struct SamplerSpec {
   enum class Kind { Uniform, Gaussian, Bridge, Halton } kind = Kind::Uniform;
   double sigma = 0.0;  ///< gaussian and bridge: the standard deviation, in the space's metric
-  /// "uniform", "gaussian:S", "bridge:S" or "halton" (S a finite number > 0); throws
-  /// std::invalid_argument with a one-line reason.
+  double uniform_share = 0.0;  ///< gaussian and bridge: the chance that a draw is a uniform one
+  /// "uniform", "gaussian:S", "bridge:S" or "halton" (S a finite number > 0), gaussian and bridge
+  /// optionally followed by "+uniform:W" (W in [0, 1)); throws std::invalid_argument with a
+  /// one-line reason.
   static SamplerSpec parse(const std::string& text);
-  /// The text parse() reads back to the same spec ("gaussian:0.05").
+  /// The text parse() reads back to the same spec ("gaussian:0.05", "bridge:0.05+uniform:0.3").
   std::string name() const;
 };
 
