@@ -145,6 +145,26 @@ test('exercises answered by typing: right and wrong, checked against numbers com
   assert.equal((await api(page, 'status')).lesson, 'cspace-3d');
   assert.equal((await api(page, 'state')).robot, 'polygon');
 
+  // P5's arm varies with the seed (the joints from `cspacelab exercise P5 --seed S`): the button
+  // opens the space the student just named, and is absent where the lesson has no picture of it.
+  const p5 = [[1, 'R^2 x S^1', 'prismatic, then prismatic, then revolute', 'polygon'],  // like SE(2)
+              [2, 'T^3', 'revolute, then revolute, then revolute', 'arm3'],
+              [3, 'T^2 x R', 'revolute, then revolute, then prismatic', null]];            // not drawn
+  for (const [seed, typed, joints, robot] of p5) {
+    await page.evaluate((s) => window.cspacelab.openProblem('P5', s), seed);
+    await waitFrames(page, 2);
+    assert.ok((await api(page, 'homework_state')).exercise.prompt.includes(joints), `P5 seed ${seed}: ${joints}`);
+    c = await answer(page, typed);
+    assert.equal(c.correct, true, `P5 seed ${seed}: ${typed}: ${c.explanation}`);
+    if (robot === null) {
+      assert.equal(await pageButton(page, 'see-in-3d'), null, `P5 seed ${seed}: no 3-D picture of T^2 x R`);
+      continue;
+    }
+    await press(page, 'see-in-3d');
+    assert.equal((await api(page, 'status')).lesson, 'cspace-3d');
+    assert.equal((await api(page, 'state')).robot, robot, `P5 seed ${seed}`);
+  }
+
   // A reload of the problem link: the saved work stands and the problem's card comes back.
   await page.evaluate(() => window.cspacelab.shell.saveNow && window.cspacelab.shell.saveNow());
   await page.reload();

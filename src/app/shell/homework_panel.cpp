@@ -1,5 +1,6 @@
 #include "app/shell/homework_panel.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <stdexcept>
 
@@ -16,6 +17,25 @@ namespace csl::app {
 using json = nlohmann::json;
 
 namespace {
+
+// Which of the 3-D lesson's two spaces an answered notation exercise's robot has: SE(2) (P1's
+// robot that slides and turns, and an arm of two prismatic joints and one revolute, R^2 x S^1
+// like it) or the revolute 3-link arm's T^3. Other arms (T^2 x R, R^3) the lesson does not draw,
+// so no button rather than the picture of another space.
+struct Space3d {
+  const char* scene = nullptr;  ///< the bundled scene the lesson opens with
+  const char* label = "";
+};
+Space3d space_in_3d(const Exercise& e) {
+  if (e.robot == "base=planar") return {"polygon-robot", "See SE(2) in 3-D"};
+  const std::string prefix = "joints=";
+  if (e.robot.rfind(prefix, 0) != 0 || e.robot.size() != prefix.size() + 3) return {};
+  const std::string joints = e.robot.substr(prefix.size());
+  const auto revolute = std::count(joints.begin(), joints.end(), 'R');
+  if (revolute == 3) return {"arm-3link", "See this arm's T\xc2\xb3 in 3-D"};
+  if (revolute == 1) return {"polygon-robot", "See R\xc2\xb2 \xc3\x97 S\xc2\xb9 in 3-D (as SE(2))"};
+  return {};
+}
 
 std::uint64_t seed_arg(const json& args) {
   const json& v = args["seed"];
@@ -240,17 +260,20 @@ void HomeworkPanel::problem_body(const HomeworkProblem& problem) {
     }
   }
   // P1, P2 and P5 are answered in notation; once answered (the lesson's title would give the
-  // answer away before), the C-space itself: SE(2) as a theta-stack, a revolute 3-link arm's T^3.
-  if (checked_ && (e.id == "P1" || e.id == "P2" || e.id == "P5")) {
-    if (ImGui::SmallButton(e.id == "P1" ? "See SE(2) in 3-D" : "See a 3-link arm's T\xc2\xb3 in 3-D")) {
-      try {
-        show_("cspace-3d", {{"scene", scene_to_json(bundled_scene(e.id == "P1" ? "polygon-robot" : "arm-3link"))}});
-        error_.clear();
-      } catch (const std::exception& x) {
-        error_ = std::string("The 3-D lesson did not open: ") + x.what();  // an instructor's lock=lesson, say
+  // answer away before), the C-space itself, when the 3-D lesson has this robot's space.
+  if (checked_) {
+    const Space3d view = space_in_3d(e);
+    if (view.scene) {
+      if (ImGui::SmallButton(view.label)) {
+        try {
+          show_("cspace-3d", {{"scene", scene_to_json(bundled_scene(view.scene))}});
+          error_.clear();
+        } catch (const std::exception& x) {
+          error_ = std::string("The 3-D lesson did not open: ") + x.what();  // an instructor's lock=lesson, say
+        }
       }
+      web::record_control("see-in-3d");
     }
-    web::record_control("see-in-3d");
   }
   if (ImGui::SmallButton("New numbers")) set_exercise(e.id, fresh_seed());
   web::record_control("new-numbers");
