@@ -393,3 +393,17 @@ test('by keyboard in the accessible DOM: a lab opened with assignment= mirrors t
     fs.rmSync(site, { recursive: true, force: true });
   }
 });
+
+test('the built site carries the example assignment: examples/assignment-example.json opens as a student sees it',
+  () => withPage({ open: 'index.html?assignment=examples/assignment-example.json' }, async ({ page, url }) => {
+  // An instructor who puts the lab on a server tries assignment mode with this link first.
+  const served = await page.evaluate(async (u) => (await fetch(u)).text(), url + 'examples/assignment-example.json');
+  assert.equal(served, fs.readFileSync(FILE, 'utf8'), 'the file is docs/assignment-example.json as it is');
+  await page.waitForFunction(() => {
+    try { return typeof window.cspacelab.call('assignment_state', {}).title === 'string'; } catch { return false; }
+  }, null, { timeout: 30000 });
+  const st = await api(page, 'assignment_state');
+  assert.equal(st.title, ASSIGNMENT.title);
+  assert.equal(st.items.length, ASSIGNMENT.items.length);
+  assert.equal(st.submitted, false);
+}));
