@@ -65,7 +65,8 @@ test('Step PRM: the bridge test fills the narrow passage that uniform sampling s
   await api(page, 'set_params', { params: { sampler: 'bridge:0.05', samples: 400, seed: 3 } });
   await api(page, 'finish_phase');
   await api(page, 'finish_phase');
-  assert.match(await api(page, 'describe'), /sampler bridge:0\.05: Bridge test: .* \d+ draws were thrown away so far\./);
+  assert.match(await api(page, 'describe'),
+               /sampler bridge:0\.05: Bridge test alone: .*start and goal.* \d+ draws were thrown away so far\./);
   await waitFrames(page, 3);
   await screenshot(page, 'step-prm-bridge.png');
 }));
@@ -100,6 +101,9 @@ test('Step PRM: the sampler survives a share link, refuses a bad sigma, and lock
     assert.equal(now.roadmap_hash, original.roadmap_hash);
   }
   assert.equal(await refusal(page, 'setParams', { sampler: 'bridge:2' }), 'sampler: sigma: a number in [0.001, 1] in the lab');
+  assert.equal(await refusal(page, 'setParams', { sampler: 'bridge:0.05+uniform:0.95' }),
+               'sampler: uniform share: a number in [0, 0.9]');
+  assert.match(await refusal(page, 'setParams', { sampler: 'halton+uniform:0.3' }), /only gaussian:S and bridge:S take \+uniform:W/);
   // A link with a bad sigma: the notice names it, the rest of the link applies.
   const bad = await browser.newPage({ viewport: { width: 1280, height: 800 } });
   await openLab(bad, link.replace('gaussian%3A0.037', 'bridge%3A1e9').replace('gaussian:0.037', 'bridge:1e9'));
@@ -190,3 +194,28 @@ for (const [name, viewport] of [['phone', { width: 390, height: 844 }], ['deskto
       console.log(name, 'panel', JSON.stringify(panel));
     }));
 }
+
+test('Compare planners: a bridge alone leaves start and goal apart; with a uniform share it joins them',
+  () => withPage({ open: '?lesson=compare' }, async ({ page }) => {
+  // The lesson's passage (gap 0.08): nothing in the gap is in sight of start (0.1, 0.8) or goal
+  // (0.9, 0.2), so a roadmap of bridge points alone stays in pieces (0 of 20 seeds at 1000 draws,
+  // sampler_test.cpp); Hsu et al.'s hybrid adds uniform draws for the open space.
+  await api(page, 'set_params', { params: { planner_a: 'prm', sampler_a: 'bridge:0.05', samples_a: 1000,
+                                            planner_b: 'prm', sampler_b: 'bridge:0.05+uniform:0.3', samples_b: 1000,
+                                            seed: 1 } });
+  await api(page, 'run');
+  const s = await api(page, 'state', { roadmap: true });
+  const [alone, hybrid] = s.planners;
+  assert.equal(s.params.sampler_b, 'bridge:0.05+uniform:0.3', 'the hybrid is named as the CLI names it');
+  assert.equal(alone.solved, false, 'a bridge alone: no path');
+  assert.ok(alone.nodes <= 12, `a bridge alone keeps a handful of gap points (${alone.nodes} vertices)`);
+  assert.equal(hybrid.solved, true, 'the hybrid finds the passage');
+  // A free path from one side to the other crosses the wall's line x = 0.5 in the gap.
+  const crossing = hybrid.path.findIndex(([x], i) => i > 0 && (hybrid.path[i - 1][0] - 0.5) * (x - 0.5) <= 0);
+  assert.ok(crossing > 0, 'the path crosses the wall\'s line');
+  const [[x0, y0], [x1, y1]] = [hybrid.path[crossing - 1], hybrid.path[crossing]];
+  const yAt = x1 === x0 ? y0 : y0 + (y1 - y0) * (0.5 - x0) / (x1 - x0);
+  assert.ok(Math.abs(yAt - 0.5) <= 0.04, `through the gap (y = ${yAt} at x = 0.5)`);
+  await waitFrames(page, 3);
+  await screenshot(page, 'compare-bridge-hybrid.png');
+}));
