@@ -14,16 +14,18 @@
 // The 1.2 manifest sets adlcp:masteryscore (the assignment's pass as a percentage; the lab reports
 // 1.2's raw score as a percentage); 2004 (4th edition) a primary objective satisfied by measure
 // with minNormalizedMeasure = pass, which the LMS gives the lab as cmi.scaled_passing_score.
+// All of that is web/lab-scorm-package.js, shared with the page's Author view.
 import fs from 'node:fs';
 import path from 'node:path';
 import { spawnSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
+import { createRequire } from 'node:module';
 import { writeZip } from './zip.mjs';
 
 const HERE = path.dirname(fileURLToPath(import.meta.url));
-const LAUNCH = 'launch.html';
-const ASSIGNMENT = 'assignment.json';
-const LEFT_OUT = new Set(['cspacelab-single.html']);
+// The manifests, the launch page and the entries' order: the same code as the page's Author
+// view (web/lab-author.js) packages with.
+const P = createRequire(import.meta.url)('../web/lab-scorm-package.js');
 
 const USAGE = 'usage: node scripts/scorm-package.mjs ASSIGNMENT.json --dist DIST --out DIR [--version 1.2|2004|both]';
 const HELP = `${USAGE}
@@ -93,123 +95,26 @@ function listFiles(dir, prefix = '') {
   return out.sort();
 }
 
-const xml = (s) => String(s).replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;').replace(/"/g, '&quot;');
-
-/** The launch page: the site's index.html with its lab in assignment mode for SCORM `version`. */
-function launchPage(indexHtml, title, version) {
-  const main = /<main class="lab"[^>]*>/;
-  if (!main.test(indexHtml)) throw new Error('the site\'s index.html has no <main class="lab"> to configure');
-  return indexHtml
-    // Replaced by functions: in a replacement string, $' $& $1 in a title would be patterns.
-    .replace(main, () => `<main class="lab" id="assignment" data-lab="assignment=${ASSIGNMENT}" data-lab-scorm="${version}">`)
-    .replace(/<title>[^<]*<\/title>/, () => `<title>${xml(title)} - C-Space Lab</title>`)
-    .replace(/\n\s*<meta name="description"[^>]*>/, '');
-}
-
-function fileList(files) {
-  return files.map((f) => `      <file href="${xml(f)}"/>`).join('\n');
-}
-
-function manifest12(id, title, pass, files) {
-  const mastery = typeof pass === 'number' ? `\n        <adlcp:masteryscore>${Math.round(pass * 10000) / 100}</adlcp:masteryscore>` : '';
-  return `<?xml version="1.0" encoding="UTF-8"?>
-<manifest identifier="${id}" version="1"
-    xmlns="http://www.imsproject.org/xsd/imscp_rootv1p1p2"
-    xmlns:adlcp="http://www.adlnet.org/xsd/adlcp_rootv1p2"
-    xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance"
-    xsi:schemaLocation="http://www.imsproject.org/xsd/imscp_rootv1p1p2 imscp_rootv1p1p2.xsd http://www.imsglobal.org/xsd/imsmd_rootv1p2p1 imsmd_rootv1p2p1.xsd http://www.adlnet.org/xsd/adlcp_rootv1p2 adlcp_rootv1p2.xsd">
-  <metadata>
-    <schema>ADL SCORM</schema>
-    <schemaversion>1.2</schemaversion>
-  </metadata>
-  <organizations default="org">
-    <organization identifier="org">
-      <title>${xml(title)}</title>
-      <item identifier="item" identifierref="sco" isvisible="true">
-        <title>${xml(title)}</title>${mastery}
-      </item>
-    </organization>
-  </organizations>
-  <resources>
-    <resource identifier="sco" type="webcontent" adlcp:scormtype="sco" href="${LAUNCH}">
-${fileList(files)}
-    </resource>
-  </resources>
-</manifest>
-`;
-}
-
-function manifest2004(id, title, pass, files) {
-  const sequencing = typeof pass === 'number' ? `
-        <imsss:sequencing>
-          <imsss:objectives>
-            <imsss:primaryObjective objectiveID="pass" satisfiedByMeasure="true">
-              <imsss:minNormalizedMeasure>${pass}</imsss:minNormalizedMeasure>
-            </imsss:primaryObjective>
-          </imsss:objectives>
-        </imsss:sequencing>` : '';
-  return `<?xml version="1.0" encoding="UTF-8"?>
-<manifest identifier="${id}" version="1"
-    xmlns="http://www.imsglobal.org/xsd/imscp_v1p1"
-    xmlns:adlcp="http://www.adlnet.org/xsd/adlcp_v1p3"
-    xmlns:adlseq="http://www.adlnet.org/xsd/adlseq_v1p3"
-    xmlns:adlnav="http://www.adlnet.org/xsd/adlnav_v1p3"
-    xmlns:imsss="http://www.imsglobal.org/xsd/imsss"
-    xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance"
-    xsi:schemaLocation="http://www.imsglobal.org/xsd/imscp_v1p1 imscp_v1p1.xsd http://www.adlnet.org/xsd/adlcp_v1p3 adlcp_v1p3.xsd http://www.adlnet.org/xsd/adlseq_v1p3 adlseq_v1p3.xsd http://www.adlnet.org/xsd/adlnav_v1p3 adlnav_v1p3.xsd http://www.imsglobal.org/xsd/imsss imsss_v1p0.xsd">
-  <metadata>
-    <schema>ADL SCORM</schema>
-    <schemaversion>2004 4th Edition</schemaversion>
-  </metadata>
-  <organizations default="org">
-    <organization identifier="org">
-      <title>${xml(title)}</title>
-      <item identifier="item" identifierref="sco" isvisible="true">
-        <title>${xml(title)}</title>${sequencing}
-      </item>
-    </organization>
-  </organizations>
-  <resources>
-    <resource identifier="sco" type="webcontent" adlcp:scormType="sco" href="${LAUNCH}">
-${fileList(files)}
-    </resource>
-  </resources>
-</manifest>
-`;
-}
-
-function main() {
+async function main() {
   const opts = parseArgs(process.argv.slice(2));
   if (!fs.existsSync(opts.assignment)) fail(`${opts.assignment}: no such file`);
   if (!fs.existsSync(path.join(opts.dist, 'cspacelab.wasm')) || !fs.existsSync(path.join(opts.dist, 'index.html')))
     fail(`${opts.dist} is not the built site (no cspacelab.wasm or index.html): build cspacelab_app and cspacelab_web for wasm`);
   const checked = validate(opts.assignment);
-  const title = checked.title || 'C-Space Lab assignment';
-  const pass = typeof checked.pass === 'number' ? checked.pass : undefined;
   const name = path.basename(opts.assignment).replace(/\.json$/i, '') || 'assignment';
-  // An XML ID: starts with a letter, then letters, digits, '-', '_', '.'.
-  const id = 'cspacelab-' + name.replace(/[^A-Za-z0-9_.-]/g, '-');
-
-  const site = listFiles(opts.dist).filter((f) => !LEFT_OUT.has(f) && f !== LAUNCH && f !== ASSIGNMENT && f !== 'imsmanifest.xml');
-  const index = fs.readFileSync(path.join(opts.dist, 'index.html'), 'utf8');
+  const site = listFiles(opts.dist).filter(P.packaged).map((f) => ({ name: f, data: fs.readFileSync(path.join(opts.dist, f)) }));
+  const indexHtml = fs.readFileSync(path.join(opts.dist, 'index.html'), 'utf8');
   const assignmentBytes = fs.readFileSync(opts.assignment);
   fs.mkdirSync(opts.out, { recursive: true });
   const packages = [];
   for (const version of opts.version === 'both' ? ['1.2', '2004'] : [opts.version]) {
-    const entries = [
-      { name: LAUNCH, data: Buffer.from(launchPage(index, title, version)) },
-      { name: ASSIGNMENT, data: assignmentBytes },
-      ...site.map((f) => ({ name: f, data: fs.readFileSync(path.join(opts.dist, f)) })),
-    ];
-    const files = entries.map((e) => e.name);
-    const text = version === '1.2' ? manifest12(id, title, pass, files) : manifest2004(id, title, pass, files);
-    entries.unshift({ name: 'imsmanifest.xml', data: Buffer.from(text) });
-    const file = path.join(opts.out, `${name}-scorm${version === '1.2' ? '12' : '2004'}.zip`);
-    const zip = writeZip(entries);
+    const entries = P.packageEntries({ version, checked, name, assignmentBytes, indexHtml, site });
+    const file = path.join(opts.out, P.zipName(name, version));
+    const zip = await writeZip(entries);
     fs.writeFileSync(file, zip);
     packages.push({ version, file, bytes: zip.length, files: entries.length });
   }
   process.stdout.write(JSON.stringify({ packages }, null, 2) + '\n');
 }
 
-main();
+main().catch((e) => fail(e && e.message ? e.message : String(e), 1));

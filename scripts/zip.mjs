@@ -1,81 +1,21 @@
 // A small zip writer and reader (PKWARE APPNOTE: local headers, central directory, end record;
 // deflate or stored, CRC-32, no zip64, no encryption) for the SCORM packages
 // (scripts/scorm-package.mjs) and their tests. node's zlib does the deflating: no dependency.
-// Every entry gets the same fixed time, so the same files make the same bytes.
+// The writer itself is web/lab-scorm-package.js's, shared with the page's Author view.
 import zlib from 'node:zlib';
+import { createRequire } from 'node:module';
 
-const CRC_TABLE = (() => {
-  const t = new Uint32Array(256);
-  for (let n = 0; n < 256; ++n) {
-    let c = n;
-    for (let k = 0; k < 8; ++k) c = c & 1 ? 0xedb88320 ^ (c >>> 1) : c >>> 1;
-    t[n] = c >>> 0;
-  }
-  return t;
-})();
+const P = createRequire(import.meta.url)('../web/lab-scorm-package.js');
 
-export function crc32(bytes) {
-  let c = 0xffffffff;
-  for (let i = 0; i < bytes.length; ++i) c = CRC_TABLE[(c ^ bytes[i]) & 0xff] ^ (c >>> 8);
-  return (c ^ 0xffffffff) >>> 0;
-}
+export const crc32 = P.crc32;
 
-const DOS_TIME = 0;            // 00:00:00
-const DOS_DATE = (0 << 9) | (1 << 5) | 1;  // 1980-01-01, the format's first day
-const UTF8_FLAG = 0x0800;
-
-/** The bytes of a zip of `entries` ([{name, data: Buffer}]; names with '/' only, no leading '/'). */
-export function writeZip(entries) {
-  const locals = [];
-  const centrals = [];
-  let offset = 0;
-  for (const { name, data } of entries) {
-    if (!name || name.startsWith('/') || name.includes('\\') || name.split('/').includes('..'))
-      throw new Error(`zip: bad entry name '${name}'`);
-    const nameBytes = Buffer.from(name, 'utf8');
-    const deflated = zlib.deflateRawSync(data, { level: 9 });
-    const stored = deflated.length >= data.length;  // already compressed (or tiny): store it
-    const body = stored ? data : deflated;
-    const crc = crc32(data);
-    const local = Buffer.alloc(30);
-    local.writeUInt32LE(0x04034b50, 0);
-    local.writeUInt16LE(20, 4);  // version needed: 2.0 (deflate)
-    local.writeUInt16LE(UTF8_FLAG, 6);
-    local.writeUInt16LE(stored ? 0 : 8, 8);
-    local.writeUInt16LE(DOS_TIME, 10);
-    local.writeUInt16LE(DOS_DATE, 12);
-    local.writeUInt32LE(crc, 14);
-    local.writeUInt32LE(body.length, 18);
-    local.writeUInt32LE(data.length, 22);
-    local.writeUInt16LE(nameBytes.length, 26);
-    local.writeUInt16LE(0, 28);
-    const central = Buffer.alloc(46);
-    central.writeUInt32LE(0x02014b50, 0);
-    central.writeUInt16LE((3 << 8) | 20, 4);  // made by: Unix, 2.0
-    central.writeUInt16LE(20, 6);
-    central.writeUInt16LE(UTF8_FLAG, 8);
-    central.writeUInt16LE(stored ? 0 : 8, 10);
-    central.writeUInt16LE(DOS_TIME, 12);
-    central.writeUInt16LE(DOS_DATE, 14);
-    central.writeUInt32LE(crc, 16);
-    central.writeUInt32LE(body.length, 20);
-    central.writeUInt32LE(data.length, 24);
-    central.writeUInt16LE(nameBytes.length, 28);
-    central.writeUInt32LE((0o100644 << 16) >>> 0, 38);  // a regular file, rw-r--r--
-    central.writeUInt32LE(offset, 42);
-    locals.push(local, nameBytes, body);
-    centrals.push(central, nameBytes);
-    offset += local.length + nameBytes.length + body.length;
-    if (offset > 0xffffffff) throw new Error('zip: more than 4 GB (no zip64)');
-  }
-  const dir = Buffer.concat(centrals);
-  const end = Buffer.alloc(22);
-  end.writeUInt32LE(0x06054b50, 0);
-  end.writeUInt16LE(entries.length, 8);
-  end.writeUInt16LE(entries.length, 10);
-  end.writeUInt32LE(dir.length, 12);
-  end.writeUInt32LE(offset, 16);
-  return Buffer.concat([...locals, dir, end]);
+/**
+ * A promise of the bytes (Buffer) of a zip of `entries` ([{name, data}]; names with '/' only, no
+ * leading '/'), deflated by node's zlib at level 9: web/lab-scorm-package.js's writer, which the
+ * page's Author view runs with the browser's deflater.
+ */
+export async function writeZip(entries) {
+  return Buffer.from(await P.writeZip(entries, (data) => zlib.deflateRawSync(data, { level: 9 })));
 }
 
 /** The entries of a zip ([{name, data}]) from its central directory; checks each CRC-32. */
