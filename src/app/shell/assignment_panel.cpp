@@ -171,6 +171,24 @@ void AssignmentPanel::register_api(JsApi& api) {
             open(args);
             return state_json();
           });
+  // The Author view (web/lab-author.js) checks its draft with this: the same parser as
+  // assignment_open and the CLI's validate, so the page repeats none of the rules.
+  api.add("assignment_validate",
+          "check an assignment file without opening it: {assignment: object or JSON text} -> {valid, errors: [one "
+          "line each, naming the item and field], assignment?: the file normalised, max_points?}",
+          [](const json& args) {
+            for (auto it = args.begin(); it != args.end(); ++it)
+              if (it.key() != "assignment") throw ApiError("unknown field \"" + printable(it.key(), 40) + "\" (assignment)");
+            if (!args.contains("assignment")) throw ApiError("assignment: required, an assignment file (an object or its JSON text)");
+            const json& file = args["assignment"];
+            const AssignmentParse parsed = file.is_string() ? parse_assignment_text(file.get<std::string>()) : parse_assignment(file);
+            json out = {{"valid", parsed.assignment.has_value()}, {"errors", parsed.errors}};
+            if (parsed.assignment) {
+              out["assignment"] = assignment_to_json(*parsed.assignment);
+              out["max_points"] = parsed.assignment->max_points();
+            }
+            return out;
+          });
   api.add("assignment_state",
           "the open assignment: {title, description, learner, pass, current, submitted, note, items: [{index, id, kind, "
           "title, prompt, points, problem?, status: open|answered|correct|incorrect|viewed, score, max, answer, feedback, "

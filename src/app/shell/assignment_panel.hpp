@@ -34,7 +34,7 @@ class AssignmentPanel {
   using StateOf = std::function<nlohmann::json(const std::string&)>;
   AssignmentPanel(Show show, StateOf state_of);
 
-  /// assignment_open, assignment_state, assignment_go, assignment_answer, assignment_submit,
+  /// assignment_validate, assignment_open, assignment_state, assignment_go, assignment_answer, assignment_submit,
   /// assignment_close.
   void register_api(JsApi& api);
   /// The card, above the lesson's panel, while an assignment is open.
