@@ -1102,6 +1102,7 @@
           case 'reset': return this.resetLesson();
           case 'restore-previous': return await this.restorePrevious();
           case 'open-full': return await this.openFull();
+          case 'author': return this.openAuthor ? await this.openAuthor() : undefined;  // set by lab.js
           default: return undefined;
         }
       } catch (e) {

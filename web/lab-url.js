@@ -21,6 +21,7 @@
 //            this site ("assignment.json", "week3/a.json"; another origin, a scheme or "//host"
 //            is refused). lab.js then loads lab-assignment.js, which checks the URL, opens the
 //            file and reports to an LMS (SCORM) in a parent frame. Not part of the state.
+//   author   1: opens the instructor's Author view (docs/web.md, Authoring). Not state.
 //   and the lesson's own parameters (whatever its params() reports: samples, neighbors,
 //   checker, seed, sampler for Step PRM; grid_n, p, q for Collision checking; …).
 //   lock     scene, params, lesson or a parameter's name: what the student cannot change
@@ -48,10 +49,10 @@
     depth: 64,               // levels of JSON nesting (the app's kMaxJsonDepth, src/core/scene/scene.hpp)
   });
   const RESERVED = new Set(['lesson', 'scene', 'steps', 'ui', 'id', 'problem', 'task', 'scheme', 'contrast',
-                            'camera', 'lock', 'hide', 'reveal', 'assignment']);
+                            'camera', 'lock', 'hide', 'reveal', 'assignment', 'author']);
   // Keys that say how to show the lab, not what it shows: they are not part of its state. (lock,
   // hide and reveal are: a link that adds a lock applies again, so the lock holds the link's scene.)
-  const PRESENTATION = new Set(['ui', 'id', 'task', 'scheme', 'contrast', 'assignment']);
+  const PRESENTATION = new Set(['ui', 'id', 'task', 'scheme', 'contrast', 'assignment', 'author']);
   const RESTRICTION_KEYS = ['lock', 'hide', 'reveal'];
   const WORDS = /^[a-z0-9_,-]*$/;
   const KEY = /^[a-z][a-z0-9_]{0,31}$/;

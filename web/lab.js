@@ -17,6 +17,8 @@
 // element.cspacelabAssignment is then a promise of its CSpaceLabAssignment (.state null if the
 // file was refused; null if the mode could not start at all).
 //
+// author=1 opens the instructor's Author view (lab-author.js, loaded only then).
+//
 // This script loads the rest (cspacelab.js, lab-api.js, lab-url.js, lab-shell.js, lab-access.js,
 // lab-task.js, lab-print.js) from its own folder unless the page already has them. From a course
 // page of another origin that works when the lab's server sends Access-Control-Allow-Origin (the
@@ -278,6 +280,11 @@
     status.hidden = true;
     if (fromUrl && ui === 'full' && window.top === window) canvas.focus({ preventScroll: true });
     if (values.has('assignment')) root.cspacelabAssignment = startAssignment(root, api, values.get('assignment'), single);
+    shell.openAuthor = () => openAuthor(root, api, single);
+    if (values.has('author')) {
+      if (values.get('author') === '1') root.cspacelabAuthor = openAuthor(root, api, single);
+      else api.notify(`author: 1 opens the Author view, not ${U.excerpt(values.get('author'))}`);
+    }
     root.dispatchEvent(new CustomEvent('cspacelab-ready', { detail: api, bubbles: true }));
     return api;
   }
@@ -300,6 +307,25 @@
         api.notify('No assignment: ' + (err && err.message ? err.message : err));
       } catch {
         // the lab has stopped; its crash panel says so
+      }
+      return null;
+    }
+  }
+
+  /** The Author view (author=1, File menu): its scripts load only now. Resolves to it or null. */
+  async function openAuthor(root, api, single) {
+    try {
+      if (single) throw new Error('the single-file lab cannot package the site');
+      for (const [name, file] of [['CSpaceLabAuthor', 'lab-author.js'], ['CSpaceLabScormPackage', 'lab-scorm-package.js']])
+        if (typeof window[name] === 'undefined') await load(file);
+      const view = root.cspacelabAuthorView = root.cspacelabAuthorView || new window.CSpaceLabAuthor(root, api, { base, load });
+      view.open();
+      return view;
+    } catch (err) {
+      try {
+        api.notify('No Author view: ' + (err && err.message ? err.message : err));
+      } catch {
+        // the lab has stopped
       }
       return null;
     }

@@ -224,6 +224,16 @@ test('lock, hide and reveal: reserved keys, read as words, written again by buil
   assert.deepEqual(problems, ['the parameter lock cannot be written in a link']);
 });
 
+test('author= is a key of its own, not part of the state', () => {
+  // author=1 opens the Author view (lab.js); it must not become a lesson parameter or change the autosave slot.
+  assert.ok(U.RESERVED.has('author') && U.PRESENTATION.has('author'));
+  assert.equal(U.hasState(U.parseConfig('author=1').values), false);
+  const { values, problems } = U.parseConfig('lesson=step-prm&author=1');
+  assert.equal(values.get('author'), '1');
+  assert.deepEqual(problems, []);
+  assert.equal(U.stateKey(values), U.stateKey(U.parseConfig('lesson=step-prm').values));
+});
+
 test('assignment= is a key of its own, not part of the state', () => {
   // An assignment lab's autosave slot does not depend on it; the shell does not take it for a parameter.
   assert.ok(U.RESERVED.has('assignment') && U.PRESENTATION.has('assignment'));

@@ -98,6 +98,12 @@ void file_menu(const std::string& lesson_name) {
   record("export-state");
   tooltip("the lesson's state at this step: vertices, edges and path of a roadmap, or an edge check's trace");
   ImGui::Separator();
+  // The instructor's Author view (web/lab-author.js): an assignment from this lab's states.
+  if (!s.minimal) {
+    if (ImGui::MenuItem("Author an assignment...")) page_action("author");
+    record("author");
+    tooltip("build an assignment (exercises, lab states, tasks), preview it as a student, export it and its SCORM zips");
+  }
   if (s.minimal && ImGui::MenuItem("Open in the full lab")) page_action("open-full");
   if (ImGui::MenuItem(("Reset " + lesson_name + " to its default...").c_str())) want_reset = true;
   record("reset");
