@@ -15,8 +15,10 @@
 //   camera   where the views look, each view name:numbers, views joined by "~":
 //              camera=workspace:0.31,0.62,4~torus:1.2,0.4
 //            a plane's centre x, y and zoom (1: Fit, 0.5 to 200), a 3-D view's yaw and pitch
-//            (radians); only views the user zoomed, panned or turned are written; the app
-//            checks names and ranges. Part of the state, as a snapshot holds it.
+//            (radians) and, for one that zooms (volume:0.8,0.5,1.44), its zoom (0.5 to 4; left
+//            out when 1, and a link without it means 1); only views the user zoomed, panned or
+//            turned are written; the app checks names and ranges. Part of the state, as a
+//            snapshot holds it.
 //   assignment  an assignment file to work through (docs/web.md, Assignments): a relative URL of
 //            this site ("assignment.json", "week3/a.json"; another origin, a scheme or "//host"
 //            is refused). lab.js then loads lab-assignment.js, which checks the URL, opens the
@@ -201,7 +203,7 @@
         throw new Error(`${name}: ${excerpt(list)} is not comma-separated numbers`);
       }
       if (numbers.length !== 2 && numbers.length !== 3)
-        throw new Error(`${name}: x,y,zoom (a plane) or yaw,pitch (a 3-D view), not ${numbers.length} numbers`);
+        throw new Error(`${name}: x,y,zoom (a plane) or yaw,pitch[,zoom] (a 3-D view), not ${numbers.length} numbers`);
       out[name] = numbers;
     }
     return out;

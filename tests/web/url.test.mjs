@@ -161,7 +161,7 @@ test('camera: its syntax is checked strictly, each fault named', () => {
   assert.equal(fault('workspace:1,x,3'), 'workspace: "1,x,3" is not comma-separated numbers');
   assert.equal(fault('workspace:1,Infinity,3'), 'workspace: "1,Infinity,3" is not comma-separated numbers');
   assert.equal(fault('workspace:1e999,1,3'), 'workspace: "1e999,1,3" is not comma-separated numbers');
-  assert.equal(fault('workspace:1,2,3,4'), 'workspace: x,y,zoom (a plane) or yaw,pitch (a 3-D view), not 4 numbers');
+  assert.equal(fault('workspace:1,2,3,4'), 'workspace: x,y,zoom (a plane) or yaw,pitch[,zoom] (a 3-D view), not 4 numbers');
   assert.equal(fault('workspace:'), 'workspace: "" is not comma-separated numbers');
   assert.equal(fault(Array.from({ length: 9 }, (_, i) => `v${i}:1,2`).join('~')), 'more than 8 views');
   // The app knows which view is a plane: it refuses a plane given two numbers ("is a plane").

@@ -75,9 +75,11 @@ json cameras_json(Lesson& lesson, bool all) {
       out[v.name] = numbers({round_within(c.center.x(), d, lo.x(), hi.x()), round_within(c.center.y(), d, lo.y(), hi.y()),
                              six_digits(c.zoom)});
     } else if (v.surface) {
-      const double yaw = v.surface->yaw(), pitch = v.surface->pitch();
-      if (!all && yaw == SurfaceView::kDefaultYaw && pitch == SurfaceView::kDefaultPitch) continue;
+      const double yaw = v.surface->yaw(), pitch = v.surface->pitch(), zoom = v.surface->zoom();
+      if (!all && yaw == SurfaceView::kDefaultYaw && pitch == SurfaceView::kDefaultPitch && zoom == 1.0) continue;
       out[v.name] = numbers({round_within(yaw, 4, -kPi, kPi), round_within(pitch, 4, -SurfaceView::kMaxPitch, SurfaceView::kMaxPitch)});
+      // The zoom only where it is not 1: a turned view's link stays as it was before views zoomed.
+      if (zoom != 1.0) out[v.name].push_back(six_digits(zoom));
     }
   }
   return out;
@@ -102,15 +104,20 @@ void set_cameras(Lesson& lesson, const json& cameras) {
     }
     if (!view) refuse("this lesson has no view \"%s\" (its views: %s)", name, known.empty() ? "none" : known.c_str());
     const json& j = *it;
-    const std::size_t count = view->plane ? 3 : 2;
+    // A plane: x, y, zoom; a 3-D view: yaw, pitch, and its zoom if it zooms (1 when left out).
+    const bool zooms = !view->plane && view->surface->zooms();
+    const std::size_t count = view->plane ? 3 : zooms && j.is_array() && j.size() == 3 ? 3 : 2;
     bool ok = j.is_array() && j.size() == count;
-    Change c{view, {0, 0, 0}};
+    Change c{view, {0, 0, 1}};
     for (std::size_t i = 0; ok && i < count; ++i) {
       ok = j[i].is_number() && std::isfinite(j[i].get<double>());
       if (ok) c.n[i] = j[i].get<double>();
     }
     if (!ok)
-      refuse(view->plane ? "%s is a plane: [x, y, zoom], finite numbers" : "%s is a 3-D view: [yaw, pitch] in radians, finite numbers", name);
+      refuse(view->plane ? "%s is a plane: [x, y, zoom], finite numbers"
+             : zooms     ? "%s is a 3-D view: [yaw, pitch] in radians and an optional zoom, finite numbers"
+                         : "%s is a 3-D view: [yaw, pitch] in radians, finite numbers",
+             name);
     if (view->plane) {
       if (c.n[2] < WorkspaceView::kMinZoom || c.n[2] > WorkspaceView::kMaxZoom)
         refuse("%s's zoom %g is outside [%g, %g] (1: the whole view)", name, c.n[2], WorkspaceView::kMinZoom, WorkspaceView::kMaxZoom);
@@ -124,12 +131,19 @@ void set_cameras(Lesson& lesson, const json& cameras) {
       if (std::fabs(c.n[0]) > kPi) refuse("%s's yaw %g is outside [-pi, pi]", name, c.n[0]);
       if (std::fabs(c.n[1]) > SurfaceView::kMaxPitch)
         refuse("%s's pitch %g is outside [%g, %g]", name, c.n[1], -SurfaceView::kMaxPitch, SurfaceView::kMaxPitch);
+      if (c.n[2] < SurfaceView::kMinZoom || c.n[2] > SurfaceView::kMaxZoom)
+        refuse("%s's zoom %g is outside [%g, %g] (1: the whole block)", name, c.n[2], SurfaceView::kMinZoom,
+               SurfaceView::kMaxZoom);
     }
     changes.push_back(c);
   }
   for (const Change& c : changes) {
-    if (c.view->plane) c.view->plane->set_camera(c.view->min, c.view->max, {Vec2(c.n[0], c.n[1]), c.n[2]});
-    else c.view->surface->set_angles(wrap_angle(c.n[0]), c.n[1]);
+    if (c.view->plane) {
+      c.view->plane->set_camera(c.view->min, c.view->max, {Vec2(c.n[0], c.n[1]), c.n[2]});
+    } else {
+      c.view->surface->set_angles(wrap_angle(c.n[0]), c.n[1]);
+      c.view->surface->set_zoom(c.n[2]);
+    }
   }
 }
 

@@ -55,6 +55,16 @@ class SurfaceView {
   }
   double yaw() const { return yaw_; }
   double pitch() const { return pitch_; }
+  /// How far a view that zooms (zooms(): the volume view's wheel) is zoomed in, 1 as it starts,
+  /// within [kMinZoom, kMaxZoom]; a view that does not zoom stays at 1 (the camera link's third
+  /// number is refused for it).
+  static constexpr double kMinZoom = 0.5;
+  static constexpr double kMaxZoom = 4.0;
+  bool zooms() const { return zooms_; }
+  double zoom() const { return zoom_; }
+  void set_zoom(double zoom) {
+    if (zooms_) zoom_ = zoom;
+  }
 
   /// Screen position of a 3-D point; depth > 0 is nearer the viewer.
   ImVec2 project(const Vec3& p, double* depth = nullptr) const;
@@ -75,6 +85,9 @@ class SurfaceView {
   /// View coordinates of a point: x to the right, z up the screen, y away from the viewer
   /// (the volume view, app/views/volume_view.*, draws with the same turn and projection).
   Vec3 rotate(const Vec3& p) const;
+  /// Set by a view that zooms (its constructor).
+  bool zooms_ = false;
+  double zoom_ = 1.0;
 
  private:
   ImVec2 centre_{0, 0};

@@ -52,7 +52,7 @@ bool VolumeView::begin(const char* id, ImVec2 size, double& cut) {
   SurfaceView::begin(id, ImVec2(size.x - kStripWidth, size.y), half_.norm() * 1.05 / zoom_);
   const ImGuiIO& io = ImGui::GetIO();
   if (hovered()) {
-    if (io.MouseWheel != 0.0f) zoom_ = std::clamp(zoom_ * std::pow(1.2, static_cast<double>(io.MouseWheel)), 0.5, 4.0);
+    if (io.MouseWheel != 0.0f) zoom_ = std::clamp(zoom_ * std::pow(1.2, static_cast<double>(io.MouseWheel)), kMinZoom, kMaxZoom);
     const auto key = [](ImGuiKey k) { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(k), true); };
     double turn = yaw(), tilt = pitch();
     if (key(ImGuiKey_LeftArrow)) turn -= 0.1;

@@ -1,6 +1,6 @@
 #pragma once
 // A 3-D C-space as a block of voxels, seen with SurfaceView's turn and projection (a drag turns
-// it, and the camera link key carries the turn as for the torus): the boundary faces between
+// it, the wheel zooms, and the camera link key carries both): the boundary faces between
 // blocked and free cells of a coarse CSpaceVolume, shaded and painter-sorted, cut by a plane
 // across the third axis (theta, or theta1) that the lesson fills with the exact slice there.
 // The half of the block beyond the plane (as the viewer sees it) is drawn faint, so the plane's
@@ -17,6 +17,7 @@ namespace csl::app {
 
 class VolumeView : public SurfaceView {
  public:
+  VolumeView() { zooms_ = true; }
   /// The cells to draw; `half` is the block's half size in view units (x, y, z).
   void set_volume(const CSpaceVolume& volume, const Vec3& half);
   /// The block's faces (after set_volume), for the API's counts.
@@ -27,7 +28,6 @@ class VolumeView : public SurfaceView {
   /// in the strip, or Page Up / Page Down over the view, moves `cut` (in [0, 1]). True if the
   /// cut moved.
   bool begin(const char* id, ImVec2 size, double& cut);
-  double zoom() const { return zoom_; }
 
   /// View coordinates of a unit point.
   Vec3 point(const Vec3& u) const;
@@ -68,7 +68,6 @@ class VolumeView : public SurfaceView {
   std::vector<Face> faces_;
   int nz_ = 1;
   Vec3 half_{1, 1, 1};
-  double zoom_ = 1.0;
   ImVec2 strip_min_{0, 0}, strip_max_{0, 0};
 };
 
