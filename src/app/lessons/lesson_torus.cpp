@@ -212,15 +212,14 @@ class TorusLesson : public Lesson {
 
   void set_params(const json& j) override {
     if (!j.is_object()) throw ApiError("params must be an object");
-    json prm_part = json::object();
+    json rest = j;
+    const json prm_part = take_prm_params(rest);
     std::optional<Config> q;
     int view = right_view_;
     std::optional<Exercise> ex;
-    for (auto it = j.begin(); it != j.end(); ++it) {
+    for (auto it = rest.begin(); it != rest.end(); ++it) {
       const std::string& k = it.key();
-      if (k == "samples" || k == "neighbors" || k == "checker" || k == "seed") {
-        prm_part[k] = *it;
-      } else if (k == "q") {
+      if (k == "q") {
         if (!it->is_array() || it->size() != 2 || !(*it)[0].is_number() || !(*it)[1].is_number())
           throw ApiError("q: [theta1, theta2]");
         q = config({(*it)[0].get<double>(), (*it)[1].get<double>()});

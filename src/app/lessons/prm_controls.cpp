@@ -167,6 +167,16 @@ nlohmann::json prm_params_json(const PrmParams& p) {
   return {{"samples", p.samples}, {"neighbors", p.neighbors.name()}, {"checker", p.checker.name()}, {"seed", p.seed}};
 }
 
+nlohmann::json take_prm_params(nlohmann::json& j) {
+  nlohmann::json out = nlohmann::json::object();
+  for (const char* key : {"samples", "neighbors", "checker", "seed"})
+    if (j.contains(key)) {
+      out[key] = j.at(key);
+      j.erase(key);
+    }
+  return out;
+}
+
 PrmParams prm_params_from_json(const nlohmann::json& j, PrmParams p, const CollisionWorld& world,
                                const ParamSpec& samples) {
   if (!j.is_object()) throw ApiError("params must be an object");

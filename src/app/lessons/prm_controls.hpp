@@ -48,6 +48,10 @@ nlohmann::json prm_params_json(const PrmParams& params);
 PrmParams prm_params_from_json(const nlohmann::json& j, PrmParams params, const CollisionWorld& world,
                                const ParamSpec& samples = kLabPrmSamples);
 
+/// Moves the four PRM keys (samples, neighbors, checker, seed) that `j` has out of it, into the
+/// object returned (for prm_params_from_json): a lesson's set_params() reads the rest itself.
+nlohmann::json take_prm_params(nlohmann::json& j);
+
 /// The four PRM parameters for the page's controls: samples (the lesson's budget spec), the
 /// neighbour rule and the checker (their syntax), the seed.
 std::vector<ParamField> prm_param_fields(const ParamSpec& samples);
