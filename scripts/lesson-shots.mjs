@@ -56,8 +56,11 @@ const LESSONS = {
     teaches: 'Three-dimensional C-spaces as pictures (homework P1, P2, P5): the polygon robot that slides and ' +
              'turns (SE(2) = R² × S¹, θ up, top and bottom glued) or the 3-link arm (T³, a cube with opposite ' +
              'faces glued) beside a block of its C-obstacles, cut by a plane at the robot\'s θ (θ₁) that shows ' +
-             'the exact slice there; scrub the plane to turn the robot, drag the robot to move its point; PRM ' +
-             'in 3-D, edges through a glued face coming back through its twin.',
+             'the exact slice there; scrub the plane to turn the robot, drag the robot to move its point; a ' +
+             'planner in 3-D (PRM, PRM*, Lazy PRM, RRT or RRT-Connect, as `cspacelab plan --planner` names ' +
+             'them), its roadmap or trees drawn in the block, edges through a glued face coming back through ' +
+             'its twin; checked questions on what the block shows (Q\'s name and dimension, the glued faces, a ' +
+             'way through a seam, the free share of Q), each answer checked and explained by the core.',
   },
   potential: {
     link: '',

@@ -3,11 +3,15 @@
 // volume (volume_view.*): a coarse voxel block for the shape, cut by a plane across the third
 // coordinate (theta, or theta1) that shows the exact slice there (se2_slice, arm3_slice).
 // Scrubbing the plane turns the robot in the workspace; moving the robot moves its point in the
-// block. PRM runs in the 3-D space and its roadmap is drawn in the block, edges that leave
-// through a glued face coming back through its twin.
+// block. A planner (PRM, PRM*, Lazy PRM, RRT, RRT-Connect: the CLI's --planner) runs in the 3-D
+// space and its roadmap or tree is drawn in the block, edges that leave through a glued face
+// coming back through its twin. Checked questions (core/teaching/volume_questions.hpp) ask what
+// the picture shows: the space's name and dimension, its glued faces, a way through a seam, the
+// free share.
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <optional>
 
@@ -20,6 +24,7 @@
 #include "app/shell/panel.hpp"
 #include "app/shell/theme.hpp"
 #include "app/shell/ui.hpp"
+#include "app/shell/web_bridge.hpp"
 #include "app/views/draw.hpp"
 #include "app/views/scene_editor.hpp"
 #include "app/views/split.hpp"
@@ -28,9 +33,11 @@
 #include "core/base/text.hpp"
 #include "core/checking/scene_text.hpp"
 #include "core/geometry/geometry.hpp"
+#include "core/planning/planner_choice.hpp"
 #include "core/planning/planner_json.hpp"
 #include "core/planning/planner_text.hpp"
 #include "core/teaching/cspace_volume.hpp"
+#include "core/teaching/volume_questions.hpp"
 
 namespace csl::app {
 namespace {
@@ -75,8 +82,11 @@ class Cspace3dLesson : public Lesson {
       q_[cut_axis()] = wrap_angle(static_cast<double>(cut));
     ImGui::Text("q = %s  %s", config_text(q_).c_str(), world().is_free(q_) ? "free" : "in collision");
     ImGui::TextWrapped("free: %.1f%% of Q (%s cells)", 100.0 * fine_free_, fine_text().c_str());
-    if (panel::fold("PRM in 3-D")) {
-      if (prm_controls(params_, world(), ctx, kLabTorusSamples)) rebuild(0);
+    if (panel::fold("Planning in 3-D")) {
+      if (planner_combo()) rebuild(0);
+      // The trees and PRM* choose their own neighbours: no rule to set for them.
+      const bool rule = kind_ == PlannerChoice::Kind::Prm || kind_ == PlannerChoice::Kind::LazyPrm;
+      if (prm_controls(params_, world(), ctx, kLabTorusSamples, false, rule)) rebuild(0);
       ui::text_flow(ui::format("|V| = %zu  |E| = %ld, %d across a glued face", prm().roadmap().vertices.size(),
                                prm().edges_alive(), seam_edges()));
       if (prm().solved() && instructor::hidden("path_length"))
@@ -85,6 +95,7 @@ class Cspace3dLesson : public Lesson {
         ImGui::TextColored(theme::vec4(theme::kTextGood), "path found, length %.3f", prm().path_length());
       else if (prm().done()) ImGui::TextColored(theme::vec4(theme::kTextBad), "no path found");
     }
+    if (panel::fold("Questions")) questions_panel();
     if (panel::fold("Reading the picture", false))
       ImGui::TextWrapped(arm() ? "Each cut fixes θ₁: links 2 and 3 are then a 2-link arm from the end of link 1, "
                                  "so the cut is a square with glued edges like the torus lesson's. Where link 1 "
@@ -160,7 +171,16 @@ class Cspace3dLesson : public Lesson {
              {"drawn", {{"cells", {kDrawXY, kDrawXY, kDrawZ}}, {"faces", volume_view_.faces()},
                         {"yaw", volume_view_.yaw()}, {"pitch", volume_view_.pitch()}, {"zoom", volume_view_.zoom()}}},
              {"prm", planner_state_json(prm(), args.value("roadmap", false))}};
+    out["prm"]["planner"] = planner_kind_info(kind_).name;
     out["prm"]["params"] = prm_params_json(params_);
+    const VolumeQuestion q = volume_question(question_, scene_);
+    json choices = json::array();
+    for (const auto& c : q.choices) choices.push_back({{"key", c.first}, {"text", c.second}});
+    out["question"] = {{"id", q.id}, {"prompt", q.prompt}, {"answer_format", q.answer_format}, {"choices", choices},
+                       {"answer", answer_}, {"check", nullptr}};
+    if (check_)
+      out["question"]["check"] = {{"correct", check_->correct}, {"readable", check_->readable},
+                                  {"explanation", check_->explanation}};
     out["prm"]["seam_crossing_edges"] = seam_edges();
     out["prm"]["running"] = running_json(session_);
     return out;
@@ -168,13 +188,34 @@ class Cspace3dLesson : public Lesson {
 
   void set_params(const json& j) override {
     if (!j.is_object()) throw ApiError("params must be an object");
-    json prm_part = json::object();
+    json rest = j;
+    const json prm_part = take_prm_params(rest);
     std::optional<Config> q;
     std::optional<double> cut;
-    for (auto it = j.begin(); it != j.end(); ++it) {
+    std::optional<PlannerChoice::Kind> kind;
+    std::optional<std::string> question, answer;
+    bool check = false;
+    for (auto it = rest.begin(); it != rest.end(); ++it) {
       const std::string& k = it.key();
-      if (k == "samples" || k == "neighbors" || k == "checker" || k == "seed") {
-        prm_part[k] = *it;
+      if (k == "planner") {
+        try {
+          if (!it->is_string()) throw std::invalid_argument("a planner's name (" + planner_names(", ") + ")");
+          kind = parse_planner_kind(it->get<std::string>());
+        } catch (const std::invalid_argument& e) {
+          throw ApiError(std::string("planner: ") + e.what());
+        }
+      } else if (k == "question") {
+        const auto& ids = volume_question_ids();
+        if (!it->is_string() || std::find(ids.begin(), ids.end(), it->get<std::string>()) == ids.end())
+          throw ApiError("question: name, dimension, glued, seam or free");
+        question = it->get<std::string>();
+      } else if (k == "answer") {
+        if (!it->is_string() || it->get<std::string>().size() > sizeof answer_buffer_ - 1)
+          throw ApiError("answer: a string (at most " + std::to_string(sizeof answer_buffer_ - 1) + " bytes)");
+        answer = it->get<std::string>();
+      } else if (k == "check") {
+        if (!it->is_boolean()) throw ApiError("check: true or false");
+        check = it->get<bool>();
       } else if (k == "q") {
         // Angles wrap, within the range `cut` takes (beyond it a double wraps to noise); x and y
         // must be in the workspace box, the space the volume and the planner cover.
@@ -202,20 +243,31 @@ class Cspace3dLesson : public Lesson {
     const PrmParams p = prm_params_from_json(prm_part, params_, world(), kLabTorusSamples);
     if (q) q_ = world().space().wrap(*q);
     if (cut) q_[cut_axis()] = wrap_angle(*cut);
-    if (!prm_part.empty()) {
+    if (!prm_part.empty() || (kind && *kind != kind_)) {
       params_ = p;
+      if (kind) kind_ = *kind;
       rebuild(0);
     }
+    // After the rebuild, which forgets a verdict: the answer is checked on the lesson as it is now.
+    if (question && *question != question_) open_question(*question);
+    if (answer) set_answer(*answer);
+    if (check) run_check();
   }
 
   json params() const override {
     json p = prm_params_json(params_);
+    p["planner"] = planner_kind_info(kind_).name;
     p["q"] = config_to_json(q_);
     p["cut"] = q_[cut_axis()];
+    p["question"] = question_;
     return p;
   }
   std::vector<ParamField> param_fields() const override {
     std::vector<ParamField> f = prm_param_fields(kLabTorusSamples);
+    std::vector<std::string> planners;
+    for (const PlannerKindInfo& k : planner_kinds()) planners.emplace_back(k.name);
+    f.push_back({"planner", "planner", nullptr, planners, "as cspacelab plan --planner names it"});
+    f.push_back({"question", "question", nullptr, volume_question_ids(), "the question the panel asks"});
     f.push_back({"q", "configuration",
                  nullptr, {}, "x, y, theta (polygon; x, y in the workspace box) or theta1, theta2, theta3 (arm)"});
     f.push_back({"cut", "cut plane", nullptr, {},
@@ -238,7 +290,89 @@ class Cspace3dLesson : public Lesson {
   bool arm() const { return std::holds_alternative<ArmRobot>(scene_.robot); }
   // The coordinate the plane cuts: theta (the polygon's third) or theta1 (the arm's first).
   int cut_axis() const { return arm() ? 0 : 2; }
-  const Prm& prm() const { return session_.shown_as<Prm>(); }
+  // The planner on screen, whichever kind_ is (the trees are a Roadmap of child-parent edges).
+  const Planner& prm() const { return session_.shown(); }
+  PlannerFactory factory() const {
+    if (kind_ == PlannerChoice::Kind::Prm) return prm_factory(params_);
+    PlannerChoice c;
+    c.kind = kind_;
+    c.samples = params_.samples;
+    c.neighbors = params_.neighbors;
+    c.checker = params_.checker;
+    c.seed = params_.seed;
+    return make_planner_factory(c);
+  }
+  // The planner's combo (PRM's controls below it set n, the checker and the seed of any; the
+  // neighbour rule of the roadmap planners). True if the choice changed.
+  bool planner_combo() {
+    instructor::FixedParam fixed("planner");
+    bool changed = false;
+    ImGui::SetNextItemWidth(ui::toggle_width("RRT-Connect") * 1.6f);
+    if (ImGui::BeginCombo("planner", planner_kind_info(kind_).name)) {
+      for (const PlannerKindInfo& k : planner_kinds()) {
+        if (ImGui::Selectable(k.name, k.kind == kind_) && k.kind != kind_) {
+          kind_ = k.kind;
+          changed = true;
+        }
+        web::record_control((std::string("c3d-planner:") + k.name).c_str());
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", k.summary);
+      }
+      ImGui::EndCombo();
+    }
+    web::record_control("c3d-planner");
+    return changed;
+  }
+
+  // --- the questions: one at a time, answered by a choice or typed, checked by the core.
+  void open_question(const std::string& id) {
+    question_ = id;
+    set_answer("");
+  }
+  void set_answer(const std::string& a) {
+    answer_ = a;
+    std::snprintf(answer_buffer_, sizeof answer_buffer_, "%s", a.c_str());
+    check_.reset();
+  }
+  void run_check() { check_ = check_volume_question(question_, scene_, fine_free_, answer_); }
+  void questions_panel() {
+    const std::vector<std::string>& ids = volume_question_ids();
+    const auto at = std::find(ids.begin(), ids.end(), question_);
+    const int index = static_cast<int>(at - ids.begin());
+    const VolumeQuestion q = volume_question(question_, scene_);
+    ImGui::TextDisabled("question %d of %zu", index + 1, ids.size());
+    ImGui::TextWrapped("%s", q.prompt.c_str());
+    if (q.answer_format == "choice") {
+      for (const auto& c : q.choices) {
+        if (ImGui::RadioButton(c.second.c_str(), answer_ == c.first)) set_answer(c.first);
+        web::record_control(("c3d-choice:" + c.first).c_str());
+      }
+    } else {
+      ImGui::SetNextItemWidth(-FLT_MIN);
+      ImGui::PushID(question_.c_str());
+      const bool enter = ImGui::InputTextWithHint("##answer", q.format_hint.c_str(), answer_buffer_,
+                                                  sizeof answer_buffer_, ImGuiInputTextFlags_EnterReturnsTrue);
+      ImGui::PopID();
+      web::record_control("c3d-answer");
+      if (answer_ != answer_buffer_) {
+        answer_ = answer_buffer_;
+        check_.reset();
+      }
+      if (enter) run_check();
+    }
+    if (ImGui::Button("Check")) run_check();
+    web::record_control("c3d-check");
+    ui::flow(ui::button_width("Next question"));
+    {
+      instructor::FixedParam fixed("question");
+      if (ImGui::Button("Next question")) open_question(ids[static_cast<std::size_t>(index + 1) % ids.size()]);
+      web::record_control("c3d-next-question");
+    }
+    if (check_) {
+      ImGui::PushStyleColor(ImGuiCol_Text, theme::vec4(check_->correct ? theme::kTextGood : theme::kTextBad));
+      ImGui::TextWrapped("%s%s", check_->readable ? "" : "not an answer: ", check_->explanation.c_str());
+      ImGui::PopStyleColor();
+    }
+  }
   const CollisionWorld& world() const { return session_.world(); }
   std::string fine_text() const {
     return ui::format("%d × %d × %d", fine_cells_[0], fine_cells_[1], fine_cells_[2]);
@@ -274,7 +408,8 @@ class Cspace3dLesson : public Lesson {
 
   void rebuild(long steps) {
     keep_within_budget(params_, robot_space(scene_.robot, scene_.workspace_min, scene_.workspace_max));
-    session_.rebuild(scene_, params_, steps);
+    session_.rebuild(scene_, factory(), steps);
+    check_.reset();  // a verdict on another scene
     // Both robots have three coordinates: an undo across the robot choice starts at the start.
     if (q_.size() != robot_dof(scene_.robot) || arm() != q_arm_) q_ = scene_.start;
     q_arm_ = arm();
@@ -504,6 +639,11 @@ class Cspace3dLesson : public Lesson {
   VolumeView volume_view_;
   PrmParams params_;
   PlannerSession session_;  // after scene_ and params_, from which it starts
+  PlannerChoice::Kind kind_ = PlannerChoice::Kind::Prm;
+  std::string question_ = volume_question_ids().front();
+  std::string answer_;
+  char answer_buffer_[64] = "";
+  std::optional<ExerciseCheck> check_;
   std::unique_ptr<Se2CObstacles> se2_;
   std::unique_ptr<Arm3Slices> arm3_;
   std::optional<Arm3Slices::Slice> arm_slice_;  // the arm's slice at the cut, kept while it stays

@@ -86,7 +86,7 @@ std::string scene_budget_problem(PrmParams params, const Scene& scene) {
 }
 
 bool prm_controls(PrmParams& p, const CollisionWorld& world, LabContext& ctx, const ParamSpec& samples,
-                  bool with_sampler) {
+                  bool with_sampler, bool with_neighbors) {
   const Space& space = world.space();
   const PrmParams before = p;
   bool changed = false;
@@ -99,36 +99,38 @@ bool prm_controls(PrmParams& p, const CollisionWorld& world, LabContext& ctx, co
   if (with_sampler) changed |= sampler_controls(p.sampler, "sampler");
   // Each parameter's widgets disabled while the instructor fixed it (instructor.hpp).
   std::optional<instructor::FixedParam> fixed;
-  fixed.emplace("neighbors");
-  int rule = static_cast<int>(p.neighbors.kind);
-  const char* rules[] = {"k nearest", "within radius r", "PRM*: k(n)"};
-  if (ImGui::Combo("close =", &rule, rules, 3)) {
-    p.neighbors.kind = static_cast<NeighborRule::Kind>(rule);
-    changed = true;
-  }
-  if (p.neighbors.kind == NeighborRule::Kind::Nearest)
-    changed |= param_slider(kNeighborK, "k", p.neighbors.k, static_cast<int>(kNeighborK.min), kSliderMaxK);
-  if (p.neighbors.kind == NeighborRule::Kind::Radius) {
-    // The slider ends where the pairs budget does; a float rounded up must not pass it.
-    // (A workspace so small that the float is 0 still gets a slider with a positive range.)
-    const float most = std::clamp(std::nextafter(static_cast<float>(max_radius(space, p.samples)), 0.0f),
-                                  std::numeric_limits<float>::min(), 1.0f);
-    const float least = std::min(0.01f, most / 10.0f);
-    float r = static_cast<float>(p.neighbors.radius);
-    if (ImGui::SliderFloat("r", &r, least, most, "%.3f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) {
-      p.neighbors.radius = static_cast<double>(r);
+  if (with_neighbors) {
+    fixed.emplace("neighbors");
+    int rule = static_cast<int>(p.neighbors.kind);
+    const char* rules[] = {"k nearest", "within radius r", "PRM*: k(n)"};
+    if (ImGui::Combo("close =", &rule, rules, 3)) {
+      p.neighbors.kind = static_cast<NeighborRule::Kind>(rule);
       changed = true;
     }
-    if (most < 1.0f) {
-      ImGui::TextDisabled("r ≤ %.3f at n = %d (the lab's limit)", static_cast<double>(most), p.samples);
-      if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Pairs within r grow with n^2. The lab checks at most about %.0f pairs per run,\n"
-                          "so that a run takes seconds, not minutes and gigabytes.",
-                          kLabMaxPairs);
+    if (p.neighbors.kind == NeighborRule::Kind::Nearest)
+      changed |= param_slider(kNeighborK, "k", p.neighbors.k, static_cast<int>(kNeighborK.min), kSliderMaxK);
+    if (p.neighbors.kind == NeighborRule::Kind::Radius) {
+      // The slider ends where the pairs budget does; a float rounded up must not pass it.
+      // (A workspace so small that the float is 0 still gets a slider with a positive range.)
+      const float most = std::clamp(std::nextafter(static_cast<float>(max_radius(space, p.samples)), 0.0f),
+                                    std::numeric_limits<float>::min(), 1.0f);
+      const float least = std::min(0.01f, most / 10.0f);
+      float r = static_cast<float>(p.neighbors.radius);
+      if (ImGui::SliderFloat("r", &r, least, most, "%.3f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) {
+        p.neighbors.radius = static_cast<double>(r);
+        changed = true;
+      }
+      if (most < 1.0f) {
+        ImGui::TextDisabled("r ≤ %.3f at n = %d (the lab's limit)", static_cast<double>(most), p.samples);
+        if (ImGui::IsItemHovered())
+          ImGui::SetTooltip("Pairs within r grow with n^2. The lab checks at most about %.0f pairs per run,\n"
+                            "so that a run takes seconds, not minutes and gigabytes.",
+                            kLabMaxPairs);
+      }
     }
+    if (p.neighbors.kind == NeighborRule::Kind::PrmStar)
+      ImGui::TextDisabled("k(n) = ceil(e (1 + 1/d) ln n)");
   }
-  if (p.neighbors.kind == NeighborRule::Kind::PrmStar)
-    ImGui::TextDisabled("k(n) = ceil(e (1 + 1/d) ln n)");
   fixed.emplace("checker");
 
   // The three checkers of the CLI (a share link or the page's API may set any of them).

@@ -36,9 +36,10 @@ std::string scene_budget_problem(PrmParams params, const Scene& scene);
 /// Draws the controls for planning in `world`; returns true if `params` changed. A change past
 /// the lab's budgets is undone, and the notice says why. `samples`: the lesson's budget for n
 /// (kLabPrmSamples, or the torus's kLabTorusSamples). `with_sampler`: the sampler's choice too
-/// (sampler_controls.hpp; Step PRM's, under the parameter "sampler").
+/// (sampler_controls.hpp; Step PRM's, under the parameter "sampler"). `with_neighbors` false:
+/// no neighbour rule (a planner that has none of its own: the trees, PRM*'s k(n)).
 bool prm_controls(PrmParams& params, const CollisionWorld& world, LabContext& ctx,
-                  const ParamSpec& samples = kLabPrmSamples, bool with_sampler = false);
+                  const ParamSpec& samples = kLabPrmSamples, bool with_sampler = false, bool with_neighbors = true);
 
 nlohmann::json prm_params_json(const PrmParams& params);
 /// Applies {"samples", "neighbors", "checker", "seed"} (any subset) to a copy of `params` and

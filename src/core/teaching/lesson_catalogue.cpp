@@ -46,9 +46,11 @@ const CataloguedLesson kLessons[] = {
       {"neighbors", K::Text, nullptr, {}, -kInf, kInf, LessonParamSyntax::NeighborRule},
       {"checker", K::Text, nullptr, {}, -kInf, kInf, LessonParamSyntax::EdgeChecker},
       {"seed", K::Integer, nullptr, {}, 0, kInf},
+      {"planner", K::Text, nullptr, {}, -kInf, kInf, LessonParamSyntax::Planner},
       // Both of its robots have three coordinates; their ranges depend on the scene (the lab checks).
       {"q", K::NumberList, nullptr, {}, -kInf, kInf, LessonParamSyntax::None, 3},
-      {"cut", K::Number, nullptr, {}, -1000, 1000}},
+      {"cut", K::Number, nullptr, {}, -1000, 1000},
+      {"question", K::Choice, nullptr, {"name", "dimension", "glued", "seam", "free"}}},
      {"polygon", "arm"}},
     {"collision",
      "Collision checking",
