@@ -166,6 +166,11 @@ double CollisionWorld::clearance_to(const Obstacle& o) const {
 }
 
 CollisionWorld::Nearest CollisionWorld::nearest(const Config& q) const {
+  ++tested_;
+  return nearest_of(q);
+}
+
+CollisionWorld::Nearest CollisionWorld::nearest_of(const Config& q) const {
   pose(q);
   Nearest best{std::numeric_limits<double>::infinity(), -1};
   auto consider = [&best](double d, int index) {
@@ -207,10 +212,11 @@ CollisionWorld::Nearest CollisionWorld::nearest(const Config& q) const {
 }
 
 double CollisionWorld::clearance(const Config& q) const {
+  ++tested_;
   switch (kind_) {
     case RobotKind::Arm:
     case RobotKind::RigidPolygon:
-      return nearest(q).clearance;
+      return nearest_of(q).clearance;
     case RobotKind::Point:
       break;
   }
@@ -244,10 +250,11 @@ double CollisionWorld::clearance(const Config& q) const {
     if (cannot_beat(box_gap2(robot_box_, s.box), kWallTolerance, best)) continue;
     best = least(best, clearance_to(obstacles_[static_cast<std::size_t>(s.index)]));
   }
-  return best == 0.0 ? nearest(q).clearance : best;
+  return best == 0.0 ? nearest_of(q).clearance : best;
 }
 
 bool CollisionWorld::is_free(const Config& q) const {
+  ++tested_;
   pose(q);
   // Disks, one loop per robot kind (this is the innermost loop of every planner). Each computes
   // exactly what disk_clearance() computes, so is_free(q) == (clearance(q) > 0) bit for bit.

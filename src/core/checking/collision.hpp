@@ -27,6 +27,10 @@ class CollisionWorld {
     int obstacle;
   };
   Nearest nearest(const Config& q) const;
+  /// nearest(q).obstacle, not counted in configurations_tested(): for naming the obstacle of a
+  /// configuration is_free() or clearance() refused already (the event log's words), which
+  /// tests nothing new.
+  int obstacle_hit(const Config& q) const { return nearest_of(q).obstacle; }
 
   /// eta(q): the least distance from the robot at q to any obstacle (+infinity with none).
   /// <= 0 means collision; negative values, where cheap to know, tell how deep.
@@ -35,6 +39,13 @@ class CollisionWorld {
   /// Whether q is collision-free: exactly clearance(q) > 0, but faster (it stops at the first
   /// hit and mostly compares squared distances).
   bool is_free(const Config& q) const;
+
+  /// Configurations given to this world's checker so far: every is_free(), clearance() and
+  /// nearest() call (clearance() that asks nearest() counts once; obstacle_hit() not at all).
+  /// The one place the
+  /// planners' "configurations tested" is counted, so that it means the same for every planner
+  /// (Planner::configurations_tested() takes its differences). Counts only: no answer changes.
+  long configurations_tested() const { return tested_; }
 
   /// The largest coordinate magnitude the scene reaches (workspace, obstacles, the arm's reach):
   /// rounding errors in poses and distances scale with it.
@@ -69,6 +80,8 @@ class CollisionWorld {
     Box box;
     int index;
   };
+  // nearest(), uncounted (clearance() and obstacle_hit() call it).
+  Nearest nearest_of(const Config& q) const;
   // The robot's shape at q, in scratch storage (the world is not for concurrent use).
   void pose(const Config& q) const;
   // Point robot and arm: squared distance from c to the robot (its point or its links).
@@ -94,6 +107,7 @@ class CollisionWorld {
   mutable Vec2 joints_[ArmRobot::kMaxLinks + 1];  // arm: base, the end of each link
   mutable Polygon polygon_;      // polygon robot
   mutable Box robot_box_;
+  mutable long tested_ = 0;  // see configurations_tested()
 };
 
 }  // namespace csl

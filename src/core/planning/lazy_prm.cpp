@@ -30,6 +30,7 @@ LazyPrm::LazyPrm(const CollisionWorld& world, Config start, Config goal, PrmPara
 }
 
 void LazyPrm::reset() {
+  reset_tested();
   rng_.reseed(params_.seed);
   phase_ = LazyPrmPhase::Endpoints;
   event_ = PlannerEvent{};
@@ -56,6 +57,7 @@ void LazyPrm::reset() {
 }
 
 void LazyPrm::finish_phase() {
+  const TestTally tally(*this);
   if (done()) return;
   const LazyPrmPhase phase = phase_;
   // As Prm::finish_phase(): the bulk of the building phases without events, the last unit by
@@ -84,6 +86,7 @@ void LazyPrm::finish_phase() {
 }
 
 const PlannerEvent& LazyPrm::step() {
+  const TestTally tally(*this);
   if (done()) throw std::logic_error("LazyPrm::step() after done()");
   PlannerEvent& e = event_;
   e = PlannerEvent{};
@@ -156,7 +159,7 @@ void LazyPrm::draw_sample() {
       e.vertex = static_cast<int>(roadmap_.vertices.size()) - 1;
     } else {
       e.kind = PlannerEvent::Kind::SampleRejected;
-      if (!d.q_free) e.obstacle = world_->nearest(d.q).obstacle;
+      if (!d.q_free) e.obstacle = world_->obstacle_hit(d.q);
     }
     e.q = std::move(d.q);
   }

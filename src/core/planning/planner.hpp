@@ -123,6 +123,14 @@ class Planner {
   virtual long edge_checks() const = 0;
   /// Configurations the collision checker evaluated.
   virtual long evaluations() const = 0;
+  /// Configurations given to the collision checker by this planner's steps: every is_free()
+  /// and clearance() of world() (CollisionWorld::configurations_tested()): samples, the
+  /// bridge and Gaussian samplers' partner draws, endpoints, edge checks' points, bisection's
+  /// midpoints, the ends' clearances and the path's exact re-check. The same measure for every
+  /// planner (evaluations() is each planner's own: PRM's leaves its samples out), taken at one
+  /// place, the world, by TestTally around step() and finish_phase(). Virtual only so that a
+  /// wrapper passes its inner planner's on.
+  virtual long configurations_tested() const { return tested_; }
   virtual int samples_drawn() const = 0;
   /// For a planner that puts edges into its roadmap on trust (Lazy PRM checks one only when a
   /// shortest path uses it): per entry of roadmap().edges, 1 once the exact check examined it.
@@ -135,6 +143,33 @@ class Planner {
   /// What replaying to the current step costs, in samples drawn plus edges checked: the app
   /// replays on every frame of a drag only while this is small (app/views/drag_replay.hpp).
   long replay_work() const { return static_cast<long>(samples_drawn()) + edge_checks(); }
+
+ protected:
+  /// Adds to configurations_tested() what world() counts while it lives: a planner makes one
+  /// at the top of step() and finish_phase(). Nested ones (finish_phase() ending in step())
+  /// count once, by the outermost. Differences of the world's counter, so that planners
+  /// sharing a world (the compare lesson's two, an experiment's trials) each count their own.
+  class TestTally {
+   public:
+    explicit TestTally(Planner& p) : p_(p) {
+      if (p_.tally_depth_++ == 0) p_.tally_from_ = p_.world().configurations_tested();
+    }
+    ~TestTally() {
+      if (--p_.tally_depth_ == 0) p_.tested_ += p_.world().configurations_tested() - p_.tally_from_;
+    }
+    TestTally(const TestTally&) = delete;
+    TestTally& operator=(const TestTally&) = delete;
+
+   private:
+    Planner& p_;
+  };
+  /// For reset(): back to nothing tested.
+  void reset_tested() { tested_ = 0; }
+
+ private:
+  long tested_ = 0;
+  int tally_depth_ = 0;
+  long tally_from_ = 0;
 };
 
 /// Makes a planner from start to goal in `world` (which must outlive it), with parameters the

@@ -130,6 +130,7 @@ Prm::Prm(const CollisionWorld& world, Config start, Config goal, PrmParams param
 }
 
 void Prm::reset() {
+  reset_tested();
   rng_.reseed(params_.seed);
   phase_ = PrmPhase::Endpoints;
   event_ = PrmEvent{};
@@ -153,6 +154,7 @@ void Prm::reset() {
 }
 
 void Prm::finish_phase() {
+  const TestTally tally(*this);
   if (done()) return;
   const PrmPhase phase = phase_;
   // The bulk of the phase without events (the same units, in the same order, counted as
@@ -181,6 +183,7 @@ void Prm::finish_phase() {
 }
 
 const PrmEvent& Prm::step() {
+  const TestTally tally(*this);
   if (done()) throw std::logic_error("Prm::step() after done()");
   PrmEvent& e = event_;
   e = PrmEvent{};
@@ -259,7 +262,7 @@ void Prm::draw_sample() {
       e.vertex = static_cast<int>(roadmap_.vertices.size()) - 1;
     } else {
       e.kind = PrmEvent::Kind::SampleRejected;
-      e.obstacle = world_->nearest(q).obstacle;
+      e.obstacle = world_->obstacle_hit(q);
     }
   }
 }
@@ -287,7 +290,7 @@ void Prm::draw_from_sampler() {
     } else {
       e.kind = PrmEvent::Kind::SampleRejected;
       // A free q rejected (no obstacle near it): obstacle stays -1.
-      if (!d.q_free) e.obstacle = world_->nearest(d.q).obstacle;
+      if (!d.q_free) e.obstacle = world_->obstacle_hit(d.q);
     }
     e.q = std::move(d.q);
   }

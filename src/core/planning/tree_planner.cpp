@@ -53,6 +53,7 @@ TreePlanner::TreePlanner(const CollisionWorld& world, Config start, Config goal,
 }
 
 void TreePlanner::reset() {
+  reset_tested();
   rng_.reseed(params_.seed);
   phase_ = TreePhase::Endpoints;
   event_ = PlannerEvent{};
@@ -90,6 +91,7 @@ void TreePlanner::reset() {
 }
 
 const PlannerEvent& TreePlanner::step() {
+  const TestTally tally(*this);
   if (done()) throw std::logic_error("TreePlanner::step() after done()");
   event_ = PlannerEvent{};
   event_.step = ++steps_;
@@ -111,6 +113,7 @@ const PlannerEvent& TreePlanner::step() {
 }
 
 void TreePlanner::finish_phase() {
+  const TestTally tally(*this);
   if (done()) return;
   const TreePhase phase = phase_;
   // The bulk of growing without events: no unit before the last sample can spend the budget,
@@ -264,7 +267,7 @@ TreePlanner::Extension TreePlanner::extend(int tree, int near, const Config& tar
       event_.vertex = near;
       event_.sample = sample;
       event_.q = q;
-      event_.obstacle = world_->nearest(q).obstacle;
+      event_.obstacle = world_->obstacle_hit(q);
     }
     return Extension::Trapped;
   }

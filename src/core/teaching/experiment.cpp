@@ -207,6 +207,7 @@ void Experiment::step() {
   planner->run();
   ++row.trials;
   row.failures += !planner->solved();
+  row.configurations_tested += planner->configurations_tested();
   row.failure_rate = wilson_interval(row.failures, row.trials);
   if (++next_trial_ == params_.trials) {
     next_trial_ = 0;
