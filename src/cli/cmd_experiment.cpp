@@ -151,6 +151,8 @@ int run_experiment(Args& args, std::ostream& os) {
     rows.push_back({{"samples", row.samples},
                     {"trials", row.trials},
                     {"failures", row.failures},
+                    {"configurations_tested",
+                     row.trials > 0 ? json(static_cast<double>(row.configurations_tested) / row.trials) : json(nullptr)},
                     {"failure_rate", row.failure_rate.estimate},
                     {"ci_low", row.failure_rate.low},
                     {"ci_high", row.failure_rate.high},
@@ -201,7 +203,8 @@ const Command kExperimentCommand{
     "below the truth at most), divided by the robot's Lipschitz constant (a C-space clearance).\n"
     "  -> {\"reference\": {\"path_exists\", \"samples\", \"path_length\", \"workspace_clearance\",\n"
     "      \"clearance\", \"free_fraction\", \"free_volume\", \"dimension\"},\n"
-    "      \"rows\": [{\"samples\": n, \"trials\": T, \"failures\", \"failure_rate\", \"ci_low\",\n"
+    "      \"rows\": [{\"samples\": n, \"trials\": T, \"failures\", \"configurations_tested\" (the mean\n"
+    "      per run of `cspacelab help plan`'s configurations_tested), \"failure_rate\", \"ci_low\",\n"
     "      \"ci_high\" (95% Wilson interval), \"bound\" (null without a reference path),\n"
     "      \"bound_vacuous\"}], \"planner\", \"neighbors\" (null for a tree planner), \"checker\",\n"
     "      \"sampler\" (null for a tree planner), \"seed\", \"goal_bias\" (rrt's B, else null), \"step\"\n"

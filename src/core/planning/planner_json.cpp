@@ -18,6 +18,7 @@ json planner_state_json(const Planner& planner, bool roadmap) {
            {"components", planner.components()},
            {"edge_checks", planner.edge_checks()},
            {"evaluations", planner.evaluations()},
+           {"configurations_tested", planner.configurations_tested()},
            {"samples_drawn", planner.samples_drawn()},
            {"solved", planner.solved()},
            {"path", path},
