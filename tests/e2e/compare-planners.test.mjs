@@ -71,6 +71,12 @@ test('Compare planners: step both, step back, run to the end, the passage, the e
   // PRM's first steps draw samples: each is a vertex (after the two endpoints) or rejected.
   const prm = s30.planners[0];
   assert.equal(prm.samples, prm.nodes - 2 + prm.rejected);
+  // Its collision checks so far, counted by hand from what it drew: the two endpoints' tests,
+  // one test per uniform sample, and each kept sample's clearance (the exact checker keeps
+  // every vertex's). Its own "evaluations" (the CLI's) leave all of these out.
+  assert.equal(prm.configurations_tested, 2 + prm.samples + (prm.nodes - 2));
+  assert.equal(prm.evaluations, 0);
+  assert.ok(s30.planners[1].configurations_tested >= s30.planners[1].evaluations);
   // More steps, then back: the state at 30 exactly, for both.
   await api(page, 'step', { count: 12 });
   assert.equal((await api(page, 'state')).steps, 42);
@@ -97,7 +103,12 @@ test('Compare planners: step both, step back, run to the end, the passage, the e
     assert.ok(Math.abs(p.path_length - length) < 1e-9, `${p.planner}: its length is the sum of its edges`);
   }
   await waitFrames(page, 3);
+  // The table's "collision checks" column shows configurations_tested (compare-run.png).
   await screenshot(page, 'compare-run.png');
+  // PRM's counts its samples' tests beside its edge checks'; RRT-Connect's evaluations count
+  // each new end already.
+  assert.ok(end.planners[0].configurations_tested >= end.planners[0].evaluations + end.planners[0].samples);
+  assert.ok(end.planners[1].configurations_tested >= end.planners[1].evaluations);
   // The two ran on the same scene with the same seed: a second run gives the same numbers.
   await api(page, 'reset');
   await api(page, 'run');
@@ -160,6 +171,8 @@ test('Compare planners: step both, step back, run to the end, the passage, the e
     assert.deepEqual(p.rates.map((r) => r.samples), [20, 60, 200]);
     for (const r of p.rates) {
       assert.equal(r.trials, 6);
+      // The mean collision checks per run: at least one test per sample drawn.
+      assert.ok(r.configurations_tested >= 1, `${p.planner} at ${r.samples}: checks counted`);
       assert.ok(r.success_rate >= 0 && r.success_rate <= 1, `${p.planner} at ${r.samples}: a rate`);
       assert.ok(Math.abs(r.success_rate - r.successes / r.trials) < 1e-12);
     }
@@ -182,5 +195,21 @@ test('Compare planners: step both, step back, run to the end, the passage, the e
       const { points: [[x, y]] } = await api(page, 'view', { view: 'success', points: [[r.samples, r.success_rate]] });
       const around = [(canvas.x + x - 4) * dpr, (canvas.y + y - 4) * dpr, (canvas.x + x + 4) * dpr, (canvas.y + y + 4) * dpr];
       assert.ok(await changedPixels(browser, before, after, around) > 0, `${p.planner} at ${r.samples}: drawn`);
+    }
+  // Against collision checks: each point moves to its runs' mean configurations_tested.
+  assert.equal((await api(page, 'state')).params.axis, 'samples');
+  assert.match(await refusal(page, 'setParams', { axis: 'time' }), /axis: "samples" or "checks"/);
+  await api(page, 'set_params', { params: { axis: 'checks' } });
+  assert.equal((await api(page, 'state')).params.axis, 'checks');
+  await waitFrames(page, 3);
+  const { png: checks } = await screenshot(page, 'compare-plot-checks.png');
+  for (const p of st.experiment.planners)
+    for (const r of p.rates) {
+      const { points: [[x, y]] } =
+        await api(page, 'view', { view: 'success', points: [[r.configurations_tested, r.success_rate]] });
+      assert.ok(x >= box.x && x <= box.x + box.w, `${p.planner} at ${r.samples}: on the plot's x range`);
+      const around = [(canvas.x + x - 4) * dpr, (canvas.y + y - 4) * dpr, (canvas.x + x + 4) * dpr, (canvas.y + y + 4) * dpr];
+      assert.ok(await changedPixels(browser, before, checks, around) > 0,
+                `${p.planner} at ${r.configurations_tested.toFixed(0)} checks: drawn`);
     }
 }));

@@ -149,12 +149,14 @@ class CompareLesson : public Lesson, private Stepper {
     }
     ImGui::Separator();
     if (mode_ == kExperimentMode) experiment_panel(ctx);
-    // The planners count differently, and the table shows their own counts (the CLI's
-    // "evaluations"): say what is in it, so that 2000 bridge draws over 4 checks is not a riddle.
-    if (mode_ != kExperimentMode) {
+    // The table's and the plot's collision checks are one measure for every planner
+    // (Planner::configurations_tested(), the CLI's configurations_tested): say what is in it, so
+    // that a bridge sampler's 3 tests per draw are not a riddle.
+    {
       ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-      ImGui::TextWrapped("Collision checks: the configurations the edge checks tested, and each new tree end; a "
-                         "PRM's samples are tested too (1 to 3 per draw), not counted there.");
+      ImGui::TextWrapped("Collision checks: every configuration given to the collision checker, counted alike for "
+                         "each planner: samples (a bridge or Gaussian draw tests 1 to 3), the edge checks' points, "
+                         "the ends' clearances and the path's re-check.");
       ImGui::PopStyleColor();
     }
   }
@@ -220,7 +222,7 @@ class CompareLesson : public Lesson, private Stepper {
     std::array<PlannerChoice, 2> choice = {sides_[0].choice, sides_[1].choice};
     double passage = passage_;
     std::uint64_t seed = seed_;
-    int mode = mode_, trials = trials_;
+    int mode = mode_, trials = trials_, axis = axis_;
     std::vector<int> budgets = budgets_;
     bool run = false, cancel = false;
     std::array<bool, 2> sampler_given = {false, false};
@@ -253,6 +255,9 @@ class CompareLesson : public Lesson, private Stepper {
       } else if (k == "mode") {
         if (v != "step" && v != "experiment") throw ApiError("mode: \"step\" or \"experiment\"");
         mode = v == "step" ? kStepMode : kExperimentMode;
+      } else if (k == "axis") {
+        if (v != "samples" && v != "checks") throw ApiError("axis: \"samples\" or \"checks\"");
+        axis = v == "samples" ? kSamplesAxis : kChecksAxis;
       } else if (k == "trials") {
         trials = static_cast<int>(api_param(kCompareTrials, v));
       } else if (k == "budgets") {
@@ -297,6 +302,7 @@ class CompareLesson : public Lesson, private Stepper {
     scene_ = scene;
     seed_ = seed;
     mode_ = mode;
+    axis_ = axis;
     trials_ = trials;
     budgets_ = budgets;
     if (changed) rebuild_all(0);
@@ -305,7 +311,8 @@ class CompareLesson : public Lesson, private Stepper {
   }
 
   json params() const override {
-    json out{{"passage", passage_}, {"seed", seed_}, {"mode", mode_name(mode_)}, {"trials", trials_}, {"budgets", budgets_}};
+    json out{{"passage", passage_}, {"seed", seed_},        {"mode", mode_name(mode_)},
+             {"axis", axis_name(axis_)}, {"trials", trials_}, {"budgets", budgets_}};
     for (int i = 0; i < 2; ++i) {
       const PlannerChoice& c = sides_[i].choice;
       const std::string key = kSideKeys[i];
@@ -333,6 +340,7 @@ class CompareLesson : public Lesson, private Stepper {
             {"seed", "seed", &kSeed},
             {"passage", "passage width", &kPassageWidth},
             {"mode", "mode", nullptr, {"step", "experiment"}},
+            {"axis", "plot against", nullptr, {"samples", "checks"}},
             {"trials", "runs per budget", &kCompareTrials},
             {"budgets", "sample budgets", &kLabExperimentSamples}};
   }
@@ -361,6 +369,10 @@ class CompareLesson : public Lesson, private Stepper {
  private:
   enum Mode { kStepMode = 0, kExperimentMode = 1 };
   static const char* mode_name(int m) { return m == kExperimentMode ? "experiment" : "step"; }
+  // The experiment plot's x axis: the sample budget, or the collision checks the runs made (their
+  // mean per run at each budget: Planner::configurations_tested()).
+  enum Axis { kSamplesAxis = 0, kChecksAxis = 1 };
+  static const char* axis_name(int a) { return a == kChecksAxis ? "checks" : "samples"; }
 
   struct Side {
     PlannerChoice choice;
@@ -522,6 +534,8 @@ class CompareLesson : public Lesson, private Stepper {
         rates.push_back({{"samples", r.samples},
                          {"trials", r.trials},
                          {"successes", r.trials - r.failures},
+                         {"configurations_tested", r.trials > 0 ? json(static_cast<double>(r.configurations_tested) / r.trials)
+                                                                : json(nullptr)},
                          {"success_rate", r.trials > 0 ? json(1.0 - r.failure_rate.estimate) : json(nullptr)}});
       planners.push_back({{"planner", planner_kind_info(s.choice.kind).name}, {"rates", rates}});
     }
@@ -674,7 +688,7 @@ class CompareLesson : public Lesson, private Stepper {
       ImGui::TableNextColumn();
       ImGui::Text("%d (%zu rejected)", p.samples_drawn(), recording(i).rejected().size());
       ImGui::TableNextColumn();
-      ImGui::Text("%ld", p.evaluations());
+      ImGui::Text("%ld", p.configurations_tested());
       ImGui::TableNextColumn();
       ImGui::Text("%ld", p.edge_checks());
       ImGui::TableNextColumn();
@@ -703,6 +717,15 @@ class CompareLesson : public Lesson, private Stepper {
       param_slider(kCompareTrials, "runs per budget", trials_, static_cast<int>(kCompareTrials.min),
                    static_cast<int>(kCompareTrials.max), ImGuiSliderFlags_AlwaysClamp);
     }
+    {
+      instructor::FixedParam fixed("axis");
+      int axis = axis_;
+      ImGui::TextUnformatted("plot against");
+      ui::flow(ui::toggle_width("samples"));
+      if (ImGui::RadioButton("samples", &axis, kSamplesAxis)) axis_ = kSamplesAxis;
+      ui::flow(ui::toggle_width("collision checks"));
+      if (ImGui::RadioButton("collision checks", &axis, kChecksAxis)) axis_ = kChecksAxis;
+    }
     std::string text;
     for (int n : budgets_) text += (text.empty() ? "" : ", ") + std::to_string(n);
     ImGui::TextWrapped("budgets (samples): %s", text.c_str());
@@ -714,19 +737,33 @@ class CompareLesson : public Lesson, private Stepper {
     }
   }
 
+  // A row's x: its budget, or the mean collision checks of its runs so far (0 before any).
+  double row_x(const ExperimentRow& r) const {
+    if (axis_ == kSamplesAxis) return r.samples;
+    return r.trials > 0 ? static_cast<double>(r.configurations_tested) / r.trials : 0.0;
+  }
   void experiment_plot(ImVec2 size) {
     double lo = 1e9, hi = 1;
-    for (int n : budgets_) lo = std::min(lo, static_cast<double>(std::max(n, 1))), hi = std::max(hi, static_cast<double>(n));
+    if (axis_ == kSamplesAxis || !sides_[0].experiment) {
+      for (int n : budgets_) lo = std::min(lo, static_cast<double>(std::max(n, 1))), hi = std::max(hi, static_cast<double>(n));
+    } else {
+      for (const Side& s : sides_)
+        for (const ExperimentRow& r : s.experiment->rows())
+          if (r.trials > 0 && row_x(r) >= 1.0) lo = std::min(lo, row_x(r)), hi = std::max(hi, row_x(r));
+      if (lo > hi) lo = hi = 1.0;
+    }
     lo = std::pow(10.0, std::floor(std::log10(lo)));
     hi = std::pow(10.0, std::ceil(std::log10(std::max(hi, 1.5 * lo))));
-    plot_.begin("##compare-plot", size, {lo, hi, true, "samples (log scale)"}, {0.0, 1.0, false, "success rate"});
+    const char* x_label = axis_ == kSamplesAxis ? "samples (log scale)"
+                                                : "collision checks per run: configurations tested (log scale)";
+    plot_.begin("##compare-plot", size, {lo, hi, true, x_label}, {0.0, 1.0, false, "success rate"});
     const ImU32 colours[2] = {theme::kBlue, theme::kVermillion};
     if (sides_[0].experiment) {
       for (int i = 0; i < 2; ++i) {
         std::vector<double> xs, ys, los, his;
         for (const ExperimentRow& r : sides_[static_cast<std::size_t>(i)].experiment->rows()) {
-          if (r.trials == 0 || r.samples <= 0) continue;
-          xs.push_back(r.samples);
+          if (r.trials == 0 || r.samples <= 0 || !(row_x(r) >= 1.0)) continue;
+          xs.push_back(row_x(r));
           ys.push_back(1.0 - r.failure_rate.estimate);
           los.push_back(1.0 - r.failure_rate.high);
           his.push_back(1.0 - r.failure_rate.low);
@@ -747,6 +784,7 @@ class CompareLesson : public Lesson, private Stepper {
   std::array<Side, 2> sides_;
   int mode_ = kStepMode;
   int trials_ = static_cast<int>(kCompareTrials.def);
+  int axis_ = kSamplesAxis;
   std::vector<int> budgets_ = {25, 50, 100, 200, 400};
   bool experiment_done_now_ = false;
   Plot plot_;  // a member: the JS API maps points through it

@@ -71,6 +71,7 @@ const CataloguedLesson kLessons[] = {
       {"seed", K::Integer, &kSeed},
       {"passage", K::Number, &kPassageWidth},
       {"mode", K::Choice, nullptr, {"step", "experiment"}},
+      {"axis", K::Choice, nullptr, {"samples", "checks"}},
       {"trials", K::Integer, nullptr, {}, 1, 100},
       {"budgets", K::IntegerList, &kLabExperimentSamples, {}, -kInf, kInf, LessonParamSyntax::None, 6}},
      {"point"}},
