@@ -77,8 +77,9 @@ Result ours(const csl::CollisionWorld& world, const csl::Config& start, const cs
   r.seconds = timer.seconds();
   r.runs = 1;
   r.solved = lazy.solved() ? 1 : 0;
-  // Samples tested (each uniform draw tests one) and the edge checks' configurations and clearances.
-  r.checks = lazy.samples_drawn() + lazy.evaluations();
+  // Every configuration given to the checker (samples, the edge checks' points, clearances,
+  // the endpoints): what OMPL's validity checker counts of its own.
+  r.checks = lazy.configurations_tested();
   r.milestones = static_cast<long>(lazy.roadmap().vertices.size());
   return r;
 }

@@ -5,8 +5,8 @@
 // CollisionWorld::is_free) and sample budget (OMPL's planners stopped by a termination
 // condition that counts their iterations: one sample each, never time). Each planner answers the
 // same queries (start and goal pairs), a fresh seed per query. Reported per planner: the time
-// per solved query, and per collision check (configurations evaluated: ours count their own,
-// OMPL's are counted in its validity checker), and the ratio OMPL / ours of each: medians over
+// per solved query, and per collision check (configurations given to the checker: ours
+// Planner::configurations_tested(), OMPL's counted in its validity checker), and the ratio OMPL / ours of each: medians over
 // `repeats` batches, ours and OMPL's taken in turns. Scenes: bench_common.hpp's planner_scenes()
 // (R^2, T^2, SE(2), T^4); OMPL's spaces and checker: bench_ompl.hpp.
 // Built for wasm (without OMPL) it reports our figures alone, for the wasm/native ratio
@@ -127,7 +127,7 @@ Result ours(const Scene& s, bool connect, int samples) {
       planner = std::make_unique<csl::Rrt>(world, s.queries[i].start, s.queries[i].goal, p);
     planner->run();
     r.solved += planner->solved();
-    r.checks += planner->evaluations();
+    r.checks += planner->configurations_tested();  // as OMPL's validity checker counts
     ++r.queries;
   }
   r.seconds = timer.seconds();
