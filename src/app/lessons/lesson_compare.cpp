@@ -654,10 +654,18 @@ class CompareLesson : public Lesson, private Stepper {
     view.draw_marker(Vec2(scene_.start[0], scene_.start[1]), theme::kStart, "S", !s.session->world().is_free(scene_.start));
     view.draw_marker(Vec2(scene_.goal[0], scene_.goal[1]), theme::kGoal, "G", !s.session->world().is_free(scene_.goal));
     view.pop_clip();
-    std::string title = std::string(kSideNames[i]) + ": " + planner_kind_info(s.choice.kind).name;
-    if (s.choice.sampler.kind != SamplerSpec::Kind::Uniform) title += ", " + s.choice.sampler.name();
+    const std::string title = side_label(i);
     view.draw_label(Vec2(scene_.workspace_min.x(), scene_.workspace_max.y()), title.c_str(), theme::kLabel,
                     ImVec2(16, -22));
+  }
+
+  // "A: prm", or "B: prm, bridge:0.05+uniform:0.3": the view's title, the table's row and the
+  // plot's legend name the sampler too, since two PRMs differ only there.
+  std::string side_label(int i) const {
+    const PlannerChoice& c = sides_[static_cast<std::size_t>(i)].choice;
+    std::string label = std::string(kSideNames[i]) + ": " + planner_kind_info(c.kind).name;
+    if (c.sampler.kind != SamplerSpec::Kind::Uniform) label += ", " + c.sampler.name();
+    return label;
   }
 
   // The last step's sample, ringed (free) or crossed (in collision), as Step PRM shows it.
@@ -682,7 +690,7 @@ class CompareLesson : public Lesson, private Stepper {
       const Planner& p = shown(i);
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
-      ImGui::Text("%s: %s", kSideNames[i], planner_kind_info(sides_[static_cast<std::size_t>(i)].choice.kind).name);
+      ImGui::TextUnformatted(side_label(i).c_str());
       ImGui::TableNextColumn();
       ImGui::Text("%ld", p.steps());
       ImGui::TableNextColumn();
@@ -768,8 +776,7 @@ class CompareLesson : public Lesson, private Stepper {
           los.push_back(1.0 - r.failure_rate.high);
           his.push_back(1.0 - r.failure_rate.low);
         }
-        const std::string legend = std::string(kSideNames[i]) + ": " +
-                                   planner_kind_info(sides_[static_cast<std::size_t>(i)].choice.kind).name;
+        const std::string legend = side_label(i);
         plot_.line(xs, ys, colours[i], 2.5f, legend.c_str());
         plot_.points(xs, ys, los, his, colours[i], nullptr);
       }
