@@ -21,6 +21,7 @@ import { spawnSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 import { createRequire } from 'node:module';
 import { writeZip } from './zip.mjs';
+import { listFiles } from './list-files.mjs';
 
 const HERE = path.dirname(fileURLToPath(import.meta.url));
 // The manifests, the launch page and the entries' order: the same code as the page's Author
@@ -82,17 +83,6 @@ function validate(file) {
   if (run.error) fail(`could not run ${cli}: ${run.error.message}`);
   if (run.status !== 0) fail(`the assignment is not valid: ${(run.stderr || run.stdout).trim().replace(/^cspacelab: /, '')}`);
   return JSON.parse(run.stdout);
-}
-
-/** Every file under `dir`, as paths relative to it with '/', sorted. */
-function listFiles(dir, prefix = '') {
-  const out = [];
-  for (const e of fs.readdirSync(path.join(dir, prefix), { withFileTypes: true })) {
-    const rel = prefix ? prefix + '/' + e.name : e.name;
-    if (e.isDirectory()) out.push(...listFiles(dir, rel));
-    else if (e.isFile()) out.push(rel);
-  }
-  return out.sort();
 }
 
 async function main() {

@@ -7,18 +7,9 @@
 import fs from 'node:fs';
 import path from 'node:path';
 import { createRequire } from 'node:module';
+import { listFiles } from './list-files.mjs';
 
 const P = createRequire(import.meta.url)('../web/lab-scorm-package.js');
-
-function listFiles(dir, prefix = '') {
-  const out = [];
-  for (const e of fs.readdirSync(path.join(dir, prefix), { withFileTypes: true })) {
-    const rel = prefix ? prefix + '/' + e.name : e.name;
-    if (e.isDirectory()) out.push(...listFiles(dir, rel));
-    else if (e.isFile()) out.push(rel);
-  }
-  return out;
-}
 
 const dist = process.argv[2];
 if (!dist || !fs.existsSync(path.join(dist, 'index.html'))) {

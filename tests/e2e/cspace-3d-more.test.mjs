@@ -4,11 +4,11 @@
 // trees, through links, Share and lock), and the volume's zoom travelling in camera=.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import fs from 'node:fs';
 import {
-  withPage, withBrowser, openLab, collectErrors, click, chord, waitFrames, screenshot, inspectPng, api, refusal, cli, tempJson,
+  withPage, withBrowser, openLab, collectErrors, click, chord, waitFrames, screenshot, inspectPng, api, refusal,
   pageButton,
 } from './lib/harness.mjs';
+import { cliFreeFraction } from './lib/cspace-volume.mjs';
 
 const TWO_PI = 2 * Math.PI;
 const wrap = (a) => a - TWO_PI * Math.floor((a + Math.PI) / TWO_PI);
@@ -60,18 +60,6 @@ async function verdictPixels(page, browser, rgb) {
   const probes = [];
   for (let y = r.y + r.h + 2; y < r.y + r.h + 60; y += 1) for (let x = r.x; x < r.x + 300; x += 2) probes.push([x, y]);
   return (await inspectPng(browser, png, probes)).at.filter((c) => close(c, rgb, 30)).length;
-}
-
-// The free share of the scene's exact volume at R x R x K cells, as the CLI's file has it.
-function cliFreeFraction(scene, [r, , k]) {
-  const file = tempJson(scene);
-  const out = file.replace(/scene\.json$/, 'volume.bin');
-  cli('cspace', file, '--resolution', String(r), '--slices', String(k), '--out', out);
-  const bytes = fs.readFileSync(out);
-  assert.equal(bytes.length, r * r * k);
-  let free = 0;
-  for (const b of bytes) free += b === 255;
-  return free / bytes.length;
 }
 
 test('questions: answered right and wrong by mouse and keyboard, each verdict shown',

@@ -5,10 +5,10 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import zlib from 'node:zlib';
-import fs from 'node:fs';
 import {
-  withPage, withBrowser, openLab, collectErrors, worldToPage, drag, keys, waitFrames, screenshot, inspectPng, api, refusal, cli, tempJson,
+  withPage, withBrowser, openLab, collectErrors, worldToPage, drag, keys, waitFrames, screenshot, inspectPng, api, refusal,
 } from './lib/harness.mjs';
+import { cliFreeFraction } from './lib/cspace-volume.mjs';
 
 const TWO_PI = 2 * Math.PI;
 const wrap = (a) => a - TWO_PI * Math.floor((a + Math.PI) / TWO_PI);
@@ -31,19 +31,6 @@ async function countNear(browser, png, box, rgb, tolerance = 40) {
   for (let y = box.y; y < box.y + box.h; y += 2) for (let x = box.x; x < box.x + box.w; x += 2) probes.push([x, y]);
   const { at } = await inspectPng(browser, png, probes);
   return at.filter((c) => Math.abs(c[0] - rgb[0]) + Math.abs(c[1] - rgb[1]) + Math.abs(c[2] - rgb[2]) <= tolerance).length;
-}
-
-// The free fraction of the scene's exact volume at R x R x K cells as the CLI computes it: the
-// share of 255 bytes (free cells) in the file it writes.
-function cliFreeFraction(scene, [r, , k]) {
-  const file = tempJson(scene);
-  const out = file.replace(/scene\.json$/, 'volume.bin');
-  cli('cspace', file, '--resolution', String(r), '--slices', String(k), '--out', out);
-  const bytes = fs.readFileSync(out);
-  assert.equal(bytes.length, r * r * k);
-  let free = 0;
-  for (const b of bytes) free += b === 255;
-  return free / bytes.length;
 }
 
 // Roadmap edges whose short way round crosses +-pi on a glued angle (`glued`: which coordinates
