@@ -76,7 +76,7 @@ inline const std::string kSamplerHelp =
     "midpoint of q1 and q2 when both are in collision and it is free (Hsu et al. 2003: samples\n"
     "inside narrow passages); halton takes the Halton sequence (bases 2, 3, 5, ...; the seed plays\n"
     "no part). S > 0, in the units of the space's metric. q2 is clamped into the bounds.\n"
-    "gaussian:S+uniform:W and bridge:S+uniform:W (W in [0, 1)) are Hsu et al.'s hybrids: a\n"
+    "gaussian:S,uniform:W and bridge:S,uniform:W (W in [0, 1)) are Hsu et al.'s hybrids: a\n"
     "draw is a uniform one with chance W. A bridge alone keeps points in passages only, which a\n"
     "start and goal out in the open rarely see.\n"
     "Gaussian and bridge need obstacles with an inside: a wall (a segment) has none, and\n"

@@ -133,6 +133,12 @@ test('bad input: one line naming what is wrong, exit 2', () => {
   fails(/--params: sampler: sigma: a number in \[0\.001, 1\] in the lab/, 'link', p12, '--lesson', 'step-prm',
         '--params', '{"sampler": "bridge:5"}');
   fails(/--params: sampler_b: unknown sampler 'sobol'/, 'link', p12, '--lesson', 'compare', '--params', '{"sampler_b": "sobol"}');
+  // A hybrid's uniform share within the lab's 0 to 0.9, and the link spells it so that the page
+  // reads it back (a ',' survives a query; a '+' would become a space).
+  fails(/--params: sampler: uniform share: a number in \[0, 0\.9\]/, 'link', p12, '--lesson', 'step-prm',
+        '--params', '{"sampler": "bridge:0.05,uniform:0.95"}');
+  assert.equal(query(json('link', p12, '--lesson', 'step-prm', '--params', '{"sampler": "bridge:0.05,uniform:0.3"}').url)
+    .get('sampler'), 'bridge:0.05,uniform:0.3');
   fails(/--params: the parameters must be a JSON object/, 'link', p12, '--lesson', 'collision', '--params', '[4]');
   fails(/SCENE\.json: the step-prm lesson takes scenes with robot point; this one has 'arm2'/, 'link', scene('arm-2link.json'), '--lesson', 'step-prm');
   fails(/missing SCENE\.json/, 'link', '--lesson', 'collision');

@@ -19,7 +19,7 @@ test('plan --sampler: uniform is the default to the bit; each sampler is named i
   const uniform = json('plan', GAP, '--samples', '200', '--seed', '4', '--sampler', 'uniform');
   assert.equal(plain.sampler, 'uniform');
   assert.equal(uniform.roadmap_hash, plain.roadmap_hash);
-  for (const s of ['gaussian:0.05', 'bridge:0.1', 'bridge:0.1+uniform:0.3', 'halton']) {
+  for (const s of ['gaussian:0.05', 'bridge:0.1', 'bridge:0.1,uniform:0.3', 'halton']) {
     const r = json('plan', PASSAGE, '--samples', '400', '--seed', '4', '--sampler', s);
     assert.equal(r.sampler, s);
     assert.equal(r.samples_drawn, 400, s);  // n counts the sampler's draws
@@ -28,7 +28,7 @@ test('plan --sampler: uniform is the default to the bit; each sampler is named i
   assert.equal(json('plan', GAP, '--sampler', 'gaussian:1e-1').sampler, 'gaussian:0.1');
   // A uniform share of 0 is the plain sampler, to the bit.
   const pure = json('plan', PASSAGE, '--samples', '400', '--seed', '4', '--sampler', 'bridge:0.1');
-  const zero = json('plan', PASSAGE, '--samples', '400', '--seed', '4', '--sampler', 'bridge:0.1+uniform:0');
+  const zero = json('plan', PASSAGE, '--samples', '400', '--seed', '4', '--sampler', 'bridge:0.1,uniform:0');
   assert.equal(zero.sampler, 'bridge:0.1');
   assert.equal(zero.roadmap_hash, pure.roadmap_hash);
 });
@@ -69,10 +69,10 @@ test('bad --sampler values: one line each, naming the problem', () => {
     fails(/--sampler: sampler 'bridge:-1': sigma must be a finite number > 0/, ...cmd, '--sampler', 'bridge:-1');
     fails(/--sampler: sampler 'gaussian:nan': not a number after ':'/, ...cmd, '--sampler', 'gaussian:nan');
     fails(/--sampler: sampler 'gaussian' needs its sigma: gaussian:S/, ...cmd, '--sampler', 'gaussian');
-    fails(/--sampler: unknown sampler 'sobol' \(uniform, gaussian:S, bridge:S or halton; gaussian and bridge may add \+uniform:W\)/,
+    fails(/--sampler: unknown sampler 'sobol' \(uniform, gaussian:S, bridge:S or halton; a hybrid adds a uniform share: bridge:S,uniform:W\)/,
           ...cmd, '--sampler', 'sobol');
-    fails(/--sampler: sampler 'bridge:0.1\+uniform:1': the uniform share W must be a number in \[0, 1\)/, ...cmd,
-          '--sampler', 'bridge:0.1+uniform:1');
+    fails(/--sampler: sampler 'bridge:0.1,uniform:1': the uniform share W must be a number in \[0, 1\)/, ...cmd,
+          '--sampler', 'bridge:0.1,uniform:1');
   }
 });
 
@@ -82,7 +82,7 @@ test('--help documents --sampler for plan and experiment', () => {
     assert.equal(r.status, 0);
     assert.match(r.stdout, /--sampler uniform\|gaussian:S\|bridge:S\|halton/);
     assert.match(r.stdout, /Boor et al\. 1999/);
-    assert.match(r.stdout, /bridge:S\+uniform:W/);
+    assert.match(r.stdout, /bridge:S,uniform:W/);
     assert.match(r.stdout, /"sampler"/);
   }
 });

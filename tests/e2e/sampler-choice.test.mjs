@@ -101,9 +101,9 @@ test('Step PRM: the sampler survives a share link, refuses a bad sigma, and lock
     assert.equal(now.roadmap_hash, original.roadmap_hash);
   }
   assert.equal(await refusal(page, 'setParams', { sampler: 'bridge:2' }), 'sampler: sigma: a number in [0.001, 1] in the lab');
-  assert.equal(await refusal(page, 'setParams', { sampler: 'bridge:0.05+uniform:0.95' }),
+  assert.equal(await refusal(page, 'setParams', { sampler: 'bridge:0.05,uniform:0.95' }),
                'sampler: uniform share: a number in [0, 0.9]');
-  assert.match(await refusal(page, 'setParams', { sampler: 'halton+uniform:0.3' }), /only gaussian:S and bridge:S take \+uniform:W/);
+  assert.match(await refusal(page, 'setParams', { sampler: 'halton,uniform:0.3' }), /only gaussian:S and bridge:S take a uniform share/);
   // A link with a bad sigma: the notice names it, the rest of the link applies.
   const bad = await browser.newPage({ viewport: { width: 1280, height: 800 } });
   await openLab(bad, link.replace('gaussian%3A0.037', 'bridge%3A1e9').replace('gaussian:0.037', 'bridge:1e9'));
@@ -112,6 +112,13 @@ test('Step PRM: the sampler survives a share link, refuses a bad sigma, and lock
   assert.equal(badState.params.sampler, 'uniform', 'the default stands in');
   assert.equal(badState.params.seed, 11, 'the rest of the link applies');
   await bad.close();
+
+  // A hybrid typed by hand into a link, its comma unescaped, reads back as written.
+  const typed = await browser.newPage({ viewport: { width: 1280, height: 800 } });
+  const site = new URL(link);
+  await openLab(typed, `${site.origin}${site.pathname}?lesson=step-prm&sampler=bridge:0.05,uniform:0.3&samples=50`);
+  assert.equal((await api(typed, 'state')).params.sampler, 'bridge:0.05,uniform:0.3');
+  await typed.close();
 
   // lock=sampler: fixed by name, the other parameters free.
   const locked = await browser.newPage({ viewport: { width: 1280, height: 800 } });
@@ -201,12 +208,12 @@ test('Compare planners: a bridge alone leaves start and goal apart; with a unifo
   // (0.9, 0.2), so a roadmap of bridge points alone stays in pieces (0 of 20 seeds at 1000 draws,
   // sampler_test.cpp); Hsu et al.'s hybrid adds uniform draws for the open space.
   await api(page, 'set_params', { params: { planner_a: 'prm', sampler_a: 'bridge:0.05', samples_a: 1000,
-                                            planner_b: 'prm', sampler_b: 'bridge:0.05+uniform:0.3', samples_b: 1000,
+                                            planner_b: 'prm', sampler_b: 'bridge:0.05,uniform:0.3', samples_b: 1000,
                                             seed: 1 } });
   await api(page, 'run');
   const s = await api(page, 'state', { roadmap: true });
   const [alone, hybrid] = s.planners;
-  assert.equal(s.params.sampler_b, 'bridge:0.05+uniform:0.3', 'the hybrid is named as the CLI names it');
+  assert.equal(s.params.sampler_b, 'bridge:0.05,uniform:0.3', 'the hybrid is named as the CLI names it');
   assert.equal(alone.solved, false, 'a bridge alone: no path');
   assert.ok(alone.nodes <= 12, `a bridge alone keeps a handful of gap points (${alone.nodes} vertices)`);
   assert.equal(hybrid.solved, true, 'the hybrid finds the passage');

@@ -70,24 +70,28 @@ TEST_CASE("the sampler's text: the four kinds, read back, and clear errors") {
     CHECK_THROWS_AS(SamplerSpec::parse(bad), std::invalid_argument);
   }
   CHECK_THROWS_WITH(SamplerSpec::parse("sobol"),
-                    "unknown sampler 'sobol' (uniform, gaussian:S, bridge:S or halton; gaussian and bridge may add "
-                    "+uniform:W)");
-  // The hybrids: +uniform:W after gaussian or bridge, W in [0, 1); W = 0 is the plain sampler.
-  const SamplerSpec h = SamplerSpec::parse("bridge:0.05+uniform:0.3");
+                    "unknown sampler 'sobol' (uniform, gaussian:S, bridge:S or halton; a hybrid adds a uniform share: "
+                    "bridge:S,uniform:W)");
+  // The hybrids: ,uniform:W after gaussian or bridge, W in [0, 1); W = 0 is the plain sampler.
+  const SamplerSpec h = SamplerSpec::parse("bridge:0.05,uniform:0.3");
   CHECK(h.kind == SamplerSpec::Kind::Bridge);
   CHECK(h.sigma == 0.05);
   CHECK(h.uniform_share == 0.3);
-  CHECK(h.name() == "bridge:0.05+uniform:0.3");
-  CHECK(SamplerSpec::parse("gaussian:0.1+uniform:0.25").name() == "gaussian:0.1+uniform:0.25");
-  CHECK(SamplerSpec::parse("bridge:0.1+uniform:0").name() == "bridge:0.1");
-  for (const char* bad : {"bridge:0.1+uniform:1", "bridge:0.1+uniform:-0.1", "bridge:0.1+uniform:", "bridge:0.1+uniform",
-                          "bridge:0.1+gaussian:0.1", "uniform+uniform:0.3", "halton+uniform:0.3", "bridge+uniform:0.3",
-                          "bridge:0.1+uniform:nan", "+uniform:0.3"}) {
+  CHECK(h.name() == "bridge:0.05,uniform:0.3");
+  CHECK(SamplerSpec::parse("gaussian:0.1,uniform:0.25").name() == "gaussian:0.1,uniform:0.25");
+  CHECK(SamplerSpec::parse("bridge:0.1,uniform:0").name() == "bridge:0.1");
+  // A sigma in exponent form, with its sign, stays readable, alone and in a hybrid.
+  CHECK(SamplerSpec::parse("gaussian:1e+2").sigma == 100.0);
+  CHECK(SamplerSpec::parse("gaussian:1e+0,uniform:0.3").name() == "gaussian:1,uniform:0.3");
+  CHECK(SamplerSpec::parse(SamplerSpec::parse("bridge:1e16").name()).sigma == 1e16);
+  for (const char* bad : {"bridge:0.1,uniform:1", "bridge:0.1,uniform:-0.1", "bridge:0.1,uniform:", "bridge:0.1,uniform",
+                          "bridge:0.1+gaussian:0.1", "uniform,uniform:0.3", "halton,uniform:0.3", "bridge,uniform:0.3",
+                          "bridge:0.1,uniform:nan", ",uniform:0.3", "bridge:0.1+uniform:0.3", "bridge:0.1 uniform:0.3"}) {
     CAPTURE(bad);
     CHECK_THROWS_AS(SamplerSpec::parse(bad), std::invalid_argument);
   }
-  CHECK_THROWS_WITH(SamplerSpec::parse("halton+uniform:0.3"),
-                    "sampler 'halton+uniform:0.3': only gaussian:S and bridge:S take +uniform:W");
+  CHECK_THROWS_WITH(SamplerSpec::parse("halton,uniform:0.3"),
+                    "sampler 'halton,uniform:0.3': only gaussian:S and bridge:S take a uniform share (S,uniform:W)");
   CHECK_THROWS_WITH(SamplerSpec::parse("gaussian"), "sampler 'gaussian' needs its sigma: gaussian:S, e.g. gaussian:0.05");
 }
 
@@ -308,10 +312,10 @@ TEST_CASE("the bridge test alone leaves start and goal apart; its hybrid finds t
     CHECK(u.vertices == doctest::Approx(t.vertices).epsilon(0.1));
     return u;
   };
-  // Measured, 20 seeds of 2000 draws: bridge:0.1 alone 0 solved; bridge:0.1+uniform:0.1 8 of 20
+  // Measured, 20 seeds of 2000 draws: bridge:0.1 alone 0 solved; bridge:0.1,uniform:0.1 8 of 20
   // with 162 vertices, uniform with as many 2; gaussian:0.05 16 with 170, uniform 2.
   CHECK(tally("bridge:0.1", 2000).solved == 0);
-  const Tally hybrid = tally("bridge:0.1+uniform:0.1", 2000);
+  const Tally hybrid = tally("bridge:0.1,uniform:0.1", 2000);
   CHECK(hybrid.solved >= uniform_like(hybrid).solved + 4);
   const Tally gaussian = tally("gaussian:0.05", 2000);
   CHECK(gaussian.solved >= uniform_like(gaussian).solved + 8);

@@ -47,7 +47,7 @@ bool sampler_controls(SamplerSpec& spec, const char* key) {
 
 SamplerSpec sampler_from_json(const std::string& key, const nlohmann::json& v) {
   if (!v.is_string())
-    throw ApiError(key + ": \"uniform\", \"gaussian:S\", \"bridge:S\" or \"halton\" (gaussian and bridge may add \"+uniform:W\")");
+    throw ApiError(key + ": \"uniform\", \"gaussian:S\", \"bridge:S\" or \"halton\" (a hybrid adds a uniform share: \"bridge:S,uniform:W\")");
   SamplerSpec spec;
   try {
     spec = SamplerSpec::parse(v.get<std::string>());
@@ -64,7 +64,7 @@ SamplerSpec sampler_from_json(const std::string& key, const nlohmann::json& v) {
 ParamField sampler_field(const char* key, const char* label) {
   static const std::string help =
       "uniform, gaussian:S, bridge:S or halton (S, sigma: " + range_text(kLabSamplerSigma) +
-      " in the lab); gaussian and bridge may add +uniform:W (W, the share of uniform draws: " +
+      " in the lab); a hybrid adds a uniform share, gaussian:S,uniform:W or bridge:S,uniform:W (W: " +
       range_text(kLabSamplerUniformShare) + ")";
   return {key, label, nullptr, {}, help.c_str()};
 }

@@ -102,7 +102,7 @@ inline constexpr ParamSpec kSamplerSigma{"sigma", "", false, 0, kInf, 0.05, 0.00
                                          "the first (one standard deviation, in the space's metric)",
                                          true, true};
 inline constexpr ParamSpec kLabSamplerSigma = kSamplerSigma.in_lab(0.001, 1, 0.05);
-/// W of the hybrids gaussian:S+uniform:W and bridge:S+uniform:W: the chance that a draw is a
+/// W of the hybrids gaussian:S,uniform:W and bridge:S,uniform:W: the chance that a draw is a
 /// uniform one. The text's parser takes [0, 1); the lab's slider stops at 0.9, past which the
 /// sampler is nearly uniform. The lab's default is for the bridge test, which alone keeps points
 /// in passages only (start and goal rarely see one); Gaussian starts at 0, which works alone.

@@ -43,14 +43,15 @@ std::string shortest_decimal(double v) {
 
 SamplerSpec SamplerSpec::parse(const std::string& text) {
   SamplerSpec s;
-  // "+uniform:W" after gaussian:S or bridge:S: the hybrid's uniform share.
+  // ",uniform:W" after gaussian:S or bridge:S: the hybrid's uniform share. A comma, not a '+':
+  // a link's query turns '+' into a space, and a sigma may be written 1e+2.
   std::string head = text;
-  const std::size_t plus = text.find('+');
-  if (plus != std::string::npos) {
-    head = text.substr(0, plus);
-    const std::string tail = text.substr(plus + 1);
+  const std::size_t comma = text.find(',');
+  if (comma != std::string::npos) {
+    head = text.substr(0, comma);
+    const std::string tail = text.substr(comma + 1);
     if (tail.rfind("uniform:", 0) != 0)
-      throw std::invalid_argument("sampler '" + printable(text, 40) + "': after '+' only uniform:W (the uniform share)");
+      throw std::invalid_argument("sampler '" + printable(text, 40) + "': after ',' only uniform:W (the uniform share)");
     const auto w = parse_decimal(std::string_view(tail).substr(8));
     if (!w || !std::isfinite(*w) || !(*w >= 0.0 && *w < 1.0))
       throw std::invalid_argument("sampler '" + printable(text, 40) + "': the uniform share W must be a number in [0, 1)");
@@ -77,10 +78,10 @@ SamplerSpec SamplerSpec::parse(const std::string& text) {
     throw std::invalid_argument("sampler '" + printable(text, 40) + "' needs its sigma: " + head + ":S, e.g. " + head + ":0.05");
   } else {
     throw std::invalid_argument("unknown sampler '" + printable(text, 40) +
-                                "' (uniform, gaussian:S, bridge:S or halton; gaussian and bridge may add +uniform:W)");
+                                "' (uniform, gaussian:S, bridge:S or halton; a hybrid adds a uniform share: bridge:S,uniform:W)");
   }
-  if (plus != std::string::npos && s.kind != Kind::Gaussian && s.kind != Kind::Bridge)
-    throw std::invalid_argument("sampler '" + printable(text, 40) + "': only gaussian:S and bridge:S take +uniform:W");
+  if (comma != std::string::npos && s.kind != Kind::Gaussian && s.kind != Kind::Bridge)
+    throw std::invalid_argument("sampler '" + printable(text, 40) + "': only gaussian:S and bridge:S take a uniform share (S,uniform:W)");
   return s;
 }
 
@@ -92,7 +93,7 @@ std::string SamplerSpec::name() const {
     case Kind::Bridge: break;
   }
   std::string text = std::string(kind == Kind::Gaussian ? "gaussian:" : "bridge:") + shortest_decimal(sigma);
-  if (uniform_share > 0.0) text += "+uniform:" + shortest_decimal(uniform_share);
+  if (uniform_share > 0.0) text += ",uniform:" + shortest_decimal(uniform_share);
   return text;
 }
 

@@ -13,7 +13,7 @@
 // - bridge:S (Hsu et al. 2003): q1 uniform; q1 free: nothing kept (one tested); else q2 as for
 //   gaussian; q2 free: nothing kept (two tested); else the midpoint of q1 and q2 (the shorter way
 //   round on S^1), kept if free (three tested).
-// - gaussian:S+uniform:W and bridge:S+uniform:W, W in (0, 1) (the hybrids of Hsu et al. 2003):
+// - gaussian:S,uniform:W and bridge:S,uniform:W, W in (0, 1) (the hybrids of Hsu et al. 2003):
 //   with chance W a draw is a uniform one, otherwise the sampler's own. A bridge alone keeps points
 //   in passages only, which start and goal out in the open rarely see; the uniform share covers
 //   the open space. (One more random number per draw, taken only when W > 0: the plain samplers
@@ -40,10 +40,10 @@ struct SamplerSpec {
   double sigma = 0.0;  ///< gaussian and bridge: the standard deviation, in the space's metric
   double uniform_share = 0.0;  ///< gaussian and bridge: the chance that a draw is a uniform one
   /// "uniform", "gaussian:S", "bridge:S" or "halton" (S a finite number > 0), gaussian and bridge
-  /// optionally followed by "+uniform:W" (W in [0, 1)); throws std::invalid_argument with a
+  /// optionally followed by ",uniform:W" (W in [0, 1)); throws std::invalid_argument with a
   /// one-line reason.
   static SamplerSpec parse(const std::string& text);
-  /// The text parse() reads back to the same spec ("gaussian:0.05", "bridge:0.05+uniform:0.3").
+  /// The text parse() reads back to the same spec ("gaussian:0.05", "bridge:0.05,uniform:0.3").
   std::string name() const;
 };
 

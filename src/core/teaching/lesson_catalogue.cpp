@@ -203,6 +203,9 @@ std::string lesson_param_problem(const LessonParam& p, const json& v) {
             const SamplerSpec spec = SamplerSpec::parse(text);
             const bool spread = spec.kind == SamplerSpec::Kind::Gaussian || spec.kind == SamplerSpec::Kind::Bridge;
             if (spread && !in_range(kLabSamplerSigma, spec.sigma)) return name + ": " + param_error(kLabSamplerSigma);
+            // The lab's slider and set_params stop at 0.9 (sampler_controls.cpp): a link must too.
+            if (!in_range(kLabSamplerUniformShare, spec.uniform_share))
+              return name + ": " + param_error(kLabSamplerUniformShare);
             break;
           }
           case LessonParamSyntax::None: break;
