@@ -84,11 +84,11 @@ TEST_CASE("configurations_tested is every test the planner gave the world, howev
       CAPTURE(c.choice.sampler.name());
       // Run to the end by phases: the planner's count is the world's counter, read by the test
       // before the planner was made and after it finished (nothing else tests in between).
-      const long before = w.world.configurations_tested();
+      const std::uint64_t before = w.world.configurations_tested();
       auto run = make(c.choice, w);
       run->run();
-      const long tested = run->configurations_tested();
-      CHECK(tested == w.world.configurations_tested() - before);
+      const long long tested = run->configurations_tested();
+      CHECK(tested == static_cast<long long>(w.world.configurations_tested() - before));
       CHECK(tested > 0);
       // What the planner calls evaluations never exceeds it (PRM's leaves its samples out).
       CHECK(run->evaluations() <= tested);
@@ -116,7 +116,7 @@ TEST_CASE("two planners on one world each count their own tests") {
   a_alone->run();
   auto b_alone = make(choice("rrt-connect"), w);
   b_alone->run();
-  const long before = w.world.configurations_tested();
+  const std::uint64_t before = w.world.configurations_tested();
   auto a = make(choice("prm", "bridge:0.1"), w);
   auto b = make(choice("rrt-connect"), w);
   while (!a->done() || !b->done()) {
@@ -125,7 +125,8 @@ TEST_CASE("two planners on one world each count their own tests") {
   }
   CHECK(a->configurations_tested() == a_alone->configurations_tested());
   CHECK(b->configurations_tested() == b_alone->configurations_tested());
-  CHECK(a->configurations_tested() + b->configurations_tested() == w.world.configurations_tested() - before);
+  CHECK(a->configurations_tested() + b->configurations_tested() ==
+        static_cast<long long>(w.world.configurations_tested() - before));
 }
 
 TEST_CASE("on an empty square the count is what a hand count gives") {

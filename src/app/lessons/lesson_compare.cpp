@@ -659,7 +659,7 @@ class CompareLesson : public Lesson, private Stepper {
                     ImVec2(16, -22));
   }
 
-  // "A: prm", or "B: prm, bridge:0.05+uniform:0.3": the view's title, the table's row and the
+  // "A: prm", or "B: prm, bridge:0.05,uniform:0.3": the view's title, the table's row and the
   // plot's legend name the sampler too, since two PRMs differ only there.
   std::string side_label(int i) const {
     const PlannerChoice& c = sides_[static_cast<std::size_t>(i)].choice;
@@ -696,7 +696,7 @@ class CompareLesson : public Lesson, private Stepper {
       ImGui::TableNextColumn();
       ImGui::Text("%d (%zu rejected)", p.samples_drawn(), recording(i).rejected().size());
       ImGui::TableNextColumn();
-      ImGui::Text("%ld", p.configurations_tested());
+      ImGui::Text("%lld", p.configurations_tested());
       ImGui::TableNextColumn();
       ImGui::Text("%ld", p.edge_checks());
       ImGui::TableNextColumn();

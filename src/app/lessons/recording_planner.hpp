@@ -68,7 +68,7 @@ class RecordingPlanner final : public Planner {
   double path_length() const override { return inner_->path_length(); }
   long edge_checks() const override { return inner_->edge_checks(); }
   long evaluations() const override { return inner_->evaluations(); }
-  long configurations_tested() const override { return inner_->configurations_tested(); }
+  long long configurations_tested() const override { return inner_->configurations_tested(); }
   int samples_drawn() const override { return inner_->samples_drawn(); }
   const std::vector<unsigned char>* checked_edge_flags() const override { return inner_->checked_edge_flags(); }
   long edges_unchecked() const override { return inner_->edges_unchecked(); }

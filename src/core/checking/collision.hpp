@@ -1,6 +1,7 @@
 #pragma once
 // Collision queries of one robot among a scene's obstacles: the clearance eta(q), whether q is
 // free, which obstacle is nearest, and the motion bound lambda(p, q).
+#include <cstdint>
 #include <vector>
 
 #include "core/geometry/obstacles.hpp"
@@ -45,7 +46,9 @@ class CollisionWorld {
   /// The one place the
   /// planners' "configurations tested" is counted, so that it means the same for every planner
   /// (Planner::configurations_tested() takes its differences). Counts only: no answer changes.
-  long configurations_tested() const { return tested_; }
+  /// Unsigned and 64-bit: it only grows while the world lives (an experiment's many runs), and
+  /// differences of it stay exact past any wrap, in wasm as natively.
+  std::uint64_t configurations_tested() const { return tested_; }
 
   /// The largest coordinate magnitude the scene reaches (workspace, obstacles, the arm's reach):
   /// rounding errors in poses and distances scale with it.
@@ -107,7 +110,7 @@ class CollisionWorld {
   mutable Vec2 joints_[ArmRobot::kMaxLinks + 1];  // arm: base, the end of each link
   mutable Polygon polygon_;      // polygon robot
   mutable Box robot_box_;
-  mutable long tested_ = 0;  // see configurations_tested()
+  mutable std::uint64_t tested_ = 0;  // see configurations_tested()
 };
 
 }  // namespace csl

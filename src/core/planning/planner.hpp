@@ -130,7 +130,7 @@ class Planner {
   /// planner (evaluations() is each planner's own: PRM's leaves its samples out), taken at one
   /// place, the world, by TestTally around step() and finish_phase(). Virtual only so that a
   /// wrapper passes its inner planner's on.
-  virtual long configurations_tested() const { return tested_; }
+  virtual long long configurations_tested() const { return tested_; }
   virtual int samples_drawn() const = 0;
   /// For a planner that puts edges into its roadmap on trust (Lazy PRM checks one only when a
   /// shortest path uses it): per entry of roadmap().edges, 1 once the exact check examined it.
@@ -155,7 +155,8 @@ class Planner {
       if (p_.tally_depth_++ == 0) p_.tally_from_ = p_.world().configurations_tested();
     }
     ~TestTally() {
-      if (--p_.tally_depth_ == 0) p_.tested_ += p_.world().configurations_tested() - p_.tally_from_;
+      if (--p_.tally_depth_ == 0)
+        p_.tested_ += static_cast<long long>(p_.world().configurations_tested() - p_.tally_from_);
     }
     TestTally(const TestTally&) = delete;
     TestTally& operator=(const TestTally&) = delete;
@@ -167,9 +168,9 @@ class Planner {
   void reset_tested() { tested_ = 0; }
 
  private:
-  long tested_ = 0;
+  long long tested_ = 0;
   int tally_depth_ = 0;
-  long tally_from_ = 0;
+  std::uint64_t tally_from_ = 0;
 };
 
 /// Makes a planner from start to goal in `world` (which must outlive it), with parameters the

@@ -56,7 +56,7 @@ struct ExperimentRow {
   int failures = 0;
   /// Configurations the trials' planners gave the collision checker, summed over the trials
   /// (Planner::configurations_tested(): the same measure for every planner).
-  long configurations_tested = 0;
+  long long configurations_tested = 0;
   Proportion failure_rate;  ///< with its 95% interval
   bool has_bound = false;   ///< the reference found a path with positive clearance
   FailureBound bound;
