@@ -531,6 +531,7 @@ class Cspace3dLesson : public Lesson {
     }
     session_.edited(scene_, dragging);
     rebuild_volumes(!dragging);
+    check_.reset();  // a verdict on the scene before the edit (its free share, its start)
   }
 
   // 1.. the link under the mouse (arm), 1 if on the polygon's body, else 0.

@@ -144,7 +144,7 @@ ExerciseCheck check_volume_question(const std::string& id, const Scene& scene, d
     const std::optional<double> n = parse_answer_number(text);
     if (!n || *n != std::floor(*n)) return unreadable("\"" + printable(text, 40) + "\" is not a whole number");
     c.expected = space.dim();
-    c.correct = static_cast<int>(*n) == space.dim();
+    c.correct = *n == static_cast<double>(space.dim());  // a double: 1e300 typed is no int
     c.explanation = (c.correct ? "Right: " : "No: ") + std::to_string(space.dim()) + " numbers, " +
                     (is_arm(scene) ? "one angle per joint (θ₁, θ₂, θ₃)" : "where it is (x, y) and how it is turned (θ)") +
                     "; the block has one axis for each.";
