@@ -26,7 +26,10 @@
     return !LEFT_OUT.includes(file) && file !== LAUNCH && file !== ASSIGNMENT && file !== MANIFEST;
   }
 
-  const xml = (s) => String(s).replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;').replace(/"/g, '&quot;');
+  // XML 1.0 has no control characters but tab and the line ends: a title pasted with one would
+  // make the LMS refuse the whole manifest, so they are left out.
+  const xml = (s) => String(s).replace(/[\u0000-\u0008\u000B\u000C\u000E-\u001F]/g, '')
+    .replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;').replace(/"/g, '&quot;');
 
   /** The package's identifier from the assignment file's name: an XML ID (a letter first). */
   function packageId(name) {

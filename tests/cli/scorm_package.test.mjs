@@ -193,6 +193,20 @@ test('a title with $\' $& $1 (replacement patterns) is written as it is, in the 
   assert.ok(all(manifest).some((el) => el.name === 'title' && el.text === file.title), 'the manifest\'s title');
 });
 
+test('control characters in a title are left out of the manifest, which XML 1.0 would refuse', () => {
+  const file = JSON.parse(fs.readFileSync(EXAMPLE, 'utf8'));
+  file.title = 'Week\u0001 3\u001f: spaces';
+  const dir = tempDir();
+  const assignment = path.join(dir, 'controls.json');
+  fs.writeFileSync(assignment, JSON.stringify(file));
+  const r = pack(assignment, dist, dir, '--version', '1.2');
+  assert.equal(r.status, 0, r.stderr);
+  const text = readZip(fs.readFileSync(path.join(dir, 'controls-scorm12.zip')))
+    .find((e) => e.name === 'imsmanifest.xml').data.toString('utf8');
+  assert.doesNotMatch(text, /[\u0000-\u0008\u000B\u000C\u000E-\u001F]/);
+  assert.ok(all(parseXml(text)).some((el) => el.name === 'title' && el.text === 'Week 3: spaces'), 'the title, without them');
+});
+
 test('an invalid assignment is refused with each item and field named, and nothing written', () => {
   const bad = JSON.parse(fs.readFileSync(EXAMPLE, 'utf8'));
   bad.items[1].points = -1;
