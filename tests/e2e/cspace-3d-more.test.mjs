@@ -66,6 +66,8 @@ test('questions: answered right and wrong by mouse and keyboard, each verdict sh
   () => withPage({ viewport: { width: 1280, height: 800 } }, async ({ page, browser }) => {
   await api(page, 'select_lesson', { id: 'cspace-3d' });
   await waitFrames(page, 3);
+  await press(page, 'section:Questions');  // folded at first, so that the first state fits the panel
+  await waitFrames(page, 2);
   const texts = (await api(page, 'theme')).text;
   const good = texts.find((t) => t.name === 'a found path, a passed check').fg.slice(0, 3);
   const bad = texts.find((t) => t.name === 'no path, a missed collision').fg.slice(0, 3);
@@ -310,6 +312,8 @@ test('the lesson\'s new panel on a phone and a desktop (pictures to look at)', a
           assert.ok(at, 'the Controls tab is on screen');
           await click(page, { x: at.x + at.w / 2, y: at.y + at.h / 2 });
           await waitFrames(page, 3);
+          await press(page, 'section:Questions');
+          await waitFrames(page, 2);
           await press(page, 'c3d-choice:top-bottom');
           await press(page, 'c3d-check');
           assert.equal((await api(page, 'state')).question.check.correct, true, 'a finger-sized panel answers too');

@@ -95,7 +95,8 @@ class Cspace3dLesson : public Lesson {
         ImGui::TextColored(theme::vec4(theme::kTextGood), "path found, length %.3f", prm().path_length());
       else if (prm().done()) ImGui::TextColored(theme::vec4(theme::kTextBad), "no path found");
     }
-    if (panel::fold("Questions")) questions_panel();
+    // Folded at first: the lesson's first state fits the panel at 1280 x 800 (panel-layout.test).
+    if (panel::fold("Questions", false)) questions_panel();
     if (panel::fold("Reading the picture", false))
       ImGui::TextWrapped(arm() ? "Each cut fixes θ₁: links 2 and 3 are then a 2-link arm from the end of link 1, "
                                  "so the cut is a square with glued edges like the torus lesson's. Where link 1 "
