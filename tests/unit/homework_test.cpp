@@ -1048,3 +1048,23 @@ TEST_CASE("homework: P13, repulsion at the rectangle's vertices: rho, |F_rep|, t
   CHECK(in_influence > 0);
   CHECK(out_of_influence > 0);
 }
+
+TEST_CASE("homework: the answer as the review prints it, never a double's last bits") {
+  // Built by hand, so the numbers are known here and not taken from the code under test.
+  csl::Exercise e;
+  e.answer_format = "number";
+  e.answer = std::nextafter(1.44, 2.0);  // printed raw, this is what the review said: "1.4400000000000002"
+  e.tolerance = 0.005;
+  CHECK(csl::exercise_answer_text(e) == "1.44 (within 0.005)");
+  e.answer = 2.0 / 3.0;
+  e.tolerance = 0.0;
+  CHECK(csl::exercise_answer_text(e) == "0.666667");
+  e.answer = 12345678.0;  // six significant digits: the lab's, not a rounding the student cannot see
+  CHECK(csl::exercise_answer_text(e) == "1.23457e+07");
+  e.answer_format = "integer";
+  e.answer = 6.9999999;
+  CHECK(csl::exercise_answer_text(e) == "7");
+  // Q in the course's notation for P1-P7: the notation checker's canonical form.
+  const csl::Exercise p3 = csl::make_exercise("P3", 1);
+  CHECK(csl::exercise_answer_text(p3) == csl::check_exercise(p3, "").expected.get<std::string>());
+}

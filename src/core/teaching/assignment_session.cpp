@@ -221,6 +221,7 @@ json assignment_session_json(const AssignmentSession& s) {
         interaction["type"] = e.answer_format == "notation" ? "fill-in" : "numeric";
         interaction["learner_response"] = ans ? ans->text : "";
         if (s.submitted) interaction["correct_response"] = expected_text(r.expected);
+        if (s.submitted) j["expected_text"] = exercise_answer_text(e);
         // Before submission: right or not, and why an answer could not be read; never the answer.
         if (ans) feedback = r.correct ? "Right." : r.attempted ? "Not right yet." : r.explanation;
         if (ans) answers.push_back({{"item", i}, {"answer", ans->text}});

@@ -128,6 +128,12 @@ std::optional<double> parse_answer_number(const std::string& text) {
   return v;
 }
 
+std::string exercise_answer_text(const Exercise& e) {
+  if (e.answer_format == "notation") return configuration_space(parse_robot_description(e.robot)).notation;
+  if (e.answer_format == "integer") return std::to_string(std::llround(e.answer));
+  return number_text(e.answer) + (e.tolerance > 0 ? " (within " + number_text(e.tolerance) + ")" : "");
+}
+
 ExerciseCheck check_exercise(const Exercise& e, const std::string& answer) {
   ExerciseCheck c;
   if (e.answer_format == "notation") {

@@ -87,6 +87,11 @@ ExerciseCheck check_exercise(const Exercise& exercise, const std::string& answer
 /// (P1-P7: the tool is a builder; P8 in three dimensions: the lesson's space is the plane).
 nlohmann::json exercise_tool_setup(const Exercise& exercise);
 
+/// The answer as a student reads it: Q in the course's notation, a whole number, or a number to
+/// six significant digits with the tolerance that is accepted ("1.44 (within 0.01)"), never a
+/// double's last bits ("1.4400000000000002").
+std::string exercise_answer_text(const Exercise& exercise);
+
 /// {correct, expected, explanation}.
 nlohmann::json exercise_check_to_json(const ExerciseCheck& check);
 
