@@ -1,8 +1,8 @@
 // The assignment card (the app's, drawn on the canvas) in the lab's accessible DOM (lab-access.js),
 // for a screen reader and the keyboard: the title, progress and score, the items as buttons with
 // their status (the current one aria-current), the current item's prompt, an answer field with
-// Check (Enter too), "Open in the lab", "Check my lab", Previous, Next, Submit with a second
-// button that confirms, the feedback in a polite live region, and the review after submission.
+// Check (Enter too), "Open in the lab", "Check my lab", Previous, Next, Submit with a confirmation
+// (what is still open, Yes or Cancel), the feedback in a polite live region, and the review.
 // Loaded by lab.js with lab-assignment.js, only for a lab in assignment mode, so that no other lab
 // pays for it. It follows the app's cspacelab:assignment events rather than a poll, and makes its
 // elements once (only their text changes), so that the focus stays where the student is.
@@ -17,18 +17,20 @@
     const call = (cmd, args) => access.api.call(cmd, args);
     let state = null, shownItem = null;
 
-    const g = el('div', { className: 'lab-access-assignment', role: 'group' }, access.section);
+    // First in the section, right after its heading: Tab from the canvas reaches the answer field
+    // in a few presses, not after every lesson and parameter (it was 27).
+    const g = el('div', { className: 'lab-access-assignment', role: 'group' });
+    access.section.insertBefore(g, access.title.nextSibling);
     g.hidden = true;
     const title = el('h3', { id: access.id + '-assignment' }, g);
     g.setAttribute('aria-labelledby', title.id);
     const progress = el('p', {}, g);
-    const items = el('ol', {}, g);
     const prompt = el('p', {}, g);
     const row = el('div', { className: 'lab-access-param' }, g);
     el('label', { for: access.id + '-answer', text: 'Your answer' }, row);
     const input = el('input', { id: access.id + '-answer', type: 'text', spellcheck: 'false' }, row);
-    const button = (label, action) => {
-      const b = el('button', { type: 'button', text: label }, g);
+    const button = (label, action, parent = g) => {
+      const b = el('button', { type: 'button', text: label }, parent);
       b.addEventListener('click', () => access.act(() => action(state.current)));
       return b;
     };
@@ -44,10 +46,27 @@
     const lab = button('Check my lab', (i) => call('assignment_answer', { index: i }));
     const prev = button('Previous', (i) => go(i - 1));
     const next = button('Next', (i) => go(i + 1));
-    // Submit asks first, as the card's button does: a second button confirms and takes the focus.
-    const submit = button('Submit...', () => { sure.hidden = false; sure.focus(); });
-    const sure = button('Yes, submit my answers (they become final)', () => call('assignment_submit'));
+    // Submit asks first, as the card's button does: what is still open, then Yes or Cancel; the
+    // focus goes to Yes, and after it to the review (else it would fall to the page's body).
+    const submit = button('Submit...', () => {
+      const left = state.items.filter((it) => it.status === 'open').length;
+      warn.textContent = (left ? `${left} of ${state.items.length} items have no answer yet. ` : '') +
+        'Your answers become final, and the review shows the right ones.';
+      asking.hidden = false;
+      sure.focus();
+    });
+    const asking = el('div', { role: 'group', 'aria-label': 'Submit the assignment?' }, g);
+    const warn = el('p', {}, asking);
+    const sure = button('Yes, submit my answers', () => {
+      call('assignment_submit');
+      show(call('assignment_state'));
+      reviewHead.focus();
+    }, asking);
+    button('Cancel', () => { asking.hidden = true; submit.focus(); }, asking);
     const feedback = el('p', { 'aria-live': 'polite' }, g);
+    el('h4', { text: 'All items' }, g);
+    const items = el('ol', {}, g);
+    const reviewHead = el('h4', { text: 'Review: your answers and the right ones', tabindex: '-1' }, g);
     const review = el('ol', {}, g);
 
     function show(st) {
@@ -56,8 +75,9 @@
       if (!st) return;
       const done = st.items.filter((it) => it.status !== 'open').length;
       title.textContent = 'Assignment: ' + st.title;
-      progress.textContent = `${done} of ${st.items.length} done, score ${st.grade.raw} of ${st.grade.max}` +
-        (st.submitted ? (st.grade.passed ? ': submitted, passed' : ': submitted, not passed') : '');
+      const score = `score ${st.grade.raw} of ${st.grade.max}`;
+      progress.textContent = st.submitted ? `submitted: ${score}, ${st.grade.passed ? '' : 'not '}passed`
+        : `${done} of ${st.items.length} answered, ${score}`;
       if (items.children.length !== st.items.length) {
         items.textContent = '';
         for (const it of st.items) {
@@ -67,7 +87,7 @@
       }
       st.items.forEach((it, i) => {
         const b = items.children[i].firstChild;
-        b.textContent = `${it.title} (${it.points} points): ${WORDS[it.status]}`;
+        b.textContent = `${it.title} (${it.points} point${it.points === 1 ? '' : 's'}): ${WORDS[it.status]}`;
         if (i === st.current) b.setAttribute('aria-current', 'true');
         else b.removeAttribute('aria-current');
         b.setAttribute('aria-disabled', String(st.submitted));
@@ -83,14 +103,15 @@
       lab.hidden = kind !== 'task';
       open.hidden = !kind;
       prev.hidden = next.hidden = submit.hidden = st.submitted;
-      sure.hidden = true;
+      asking.hidden = true;
       prev.setAttribute('aria-disabled', String(st.current === 0));
       next.setAttribute('aria-disabled', String(st.current + 1 >= st.items.length));
       feedback.textContent = [cur.feedback, st.note].filter(Boolean).join(' ');
+      reviewHead.hidden = !st.submitted;
       review.textContent = '';
       for (const it of st.submitted ? st.items : []) {
         const answer = it.kind === 'exercise' ? ` Your answer: ${it.answer === null ? '(none)' : it.answer}. ` +
-          `The right answer: ${it.expected}.` : '';
+          `The right answer: ${it.expected_text}.` : '';
         el('li', { text: `${it.title}: ${it.score} of ${it.max} (${WORDS[it.status]}).${answer} ${it.explanation || ''}` }, review);
       }
     }

@@ -326,7 +326,21 @@ test('with the lesson locked by the instructor (lock=lesson) the assignment stil
   assert.match(st.note, /not open/);
 }));
 
-test('by keyboard in the accessible DOM: a lab opened with assignment= mirrors the card, answers, submits',
+// Presses Tab (Shift+Tab with `back`) until `is(activeElement)` holds, at most `max` times;
+// returns how many presses it took. Only key presses move the focus here, as for a student
+// without a pointer.
+async function tabTo(page, is, max, { back = false, what = 'the control' } = {}) {
+  for (let n = 1; n <= max; ++n) {
+    await page.keyboard.press(back ? 'Shift+Tab' : 'Tab');
+    await waitFrames(page, 1);
+    if (await page.evaluate(is)) return n;
+  }
+  const at = await page.evaluate(() => document.activeElement.outerHTML.slice(0, 120));
+  throw new Error(`${what} not reached in ${max} presses of Tab; the focus is on ${at}`);
+}
+const focusedText = (page) => page.evaluate(() => document.activeElement.textContent);
+
+test('by keyboard alone in the accessible DOM: from the lab to the answer, Cancel, Submit, the review',
   { timeout: 180000 }, async () => {
   // The site with the assignment file beside the page, as a course's site or the SCORM package
   // holds it: the mirror (lab-assignment-access.js) comes only with assignment=.
@@ -348,44 +362,79 @@ test('by keyboard in the accessible DOM: a lab opened with assignment= mirrors t
     assert.equal(await items.count(), ASSIGNMENT.items.length);
     assert.equal(await items.nth(0).getAttribute('aria-current'), 'true');
 
-    // To P10 by the keyboard: focus its button in the list, Enter.
-    await items.nth(1).focus();
+    // The lab has the keyboard when it opens (its canvas, or the text field's proxy). The page's
+    // answer field is one Tab on (it took 27 presses when the card sat after every lesson and parameter).
+    assert.ok(await page.evaluate(() => {
+      const c = window.cspacelab.module.canvas;
+      return document.activeElement === c || document.activeElement === c.cslText;
+    }), 'the lab has the focus');
+    // The card on the canvas says how: Esc leaves its answer field (Tab there steps between the
+    // app's own fields), and then Tab goes on to the page.
+    await page.keyboard.press('Escape');
+    await waitFrames(page, 3);
+    const toAnswer = await tabTo(page, () => document.activeElement.id.endsWith('-answer'), 3, { what: 'the answer field' });
+    assert.ok(toAnswer <= 3, `the answer field is ${toAnswer} presses after the canvas`);
+    assert.equal(await page.evaluate(() => !!document.activeElement.closest('.lab-access:focus-within')), true,
+                 'the section shows while the keyboard is in it');
+    const panel = await page.evaluate(() => document.querySelector('.lab-access').getBoundingClientRect().height);
+    assert.ok(panel > 100, `the section is on screen while the focus is in it (${panel} px high)`);
+
+    // On to item 2 (P10): Tab to Next, Enter. The focus stays on Next; Shift+Tab back to the field.
+    const toNext = await tabTo(page, () => document.activeElement.textContent === 'Next', 5, { what: 'Next' });
     await page.keyboard.press('Enter');
-    await page.waitForFunction(() => document.querySelectorAll('.lab-access-assignment ol button')[1]
-      .getAttribute('aria-current') === 'true');
+    await page.waitForFunction(() => window.cspacelab.call('assignment_state').current === 1);
+    assert.equal(await focusedText(page), 'Next');
     assert.match(await group.locator('p').nth(1).textContent(), /^2\. /);
+    await tabTo(page, () => document.activeElement.id.endsWith('-answer'), toNext, { back: true, what: 'the answer field' });
     const learner = (await api(page, 'assignment_state')).learner;
     const given = cli('assignment', 'exercises', FILE, ...(learner ? ['--learner', learner] : [])).items[1].given;
     const right = s1(given.q1, given.q2);
-    const input = group.locator('input');
     const answerWith = async (text) => {
-      await input.focus();
-      await input.fill('');
+      await page.keyboard.press('Control+A');
+      await page.keyboard.press('Backspace');
       await page.keyboard.type(text);
       await page.keyboard.press('Enter');
       await waitFrames(page, 2);
     };
     await answerWith((right + 0.5).toFixed(4));
     assert.equal((await api(page, 'assignment_state')).items[1].status, 'incorrect');
-    assert.match(await items.nth(1).textContent(), /: not right$/);
+    assert.match(await items.nth(1).textContent(), /^P10.*\(2 points\): not right$/);
     await answerWith(right.toFixed(4));
     assert.equal((await api(page, 'assignment_state')).items[1].status, 'correct');
     assert.match(await items.nth(1).textContent(), /: right$/);
     assert.match(await group.locator('p[aria-live]').textContent(), /right/i, 'the feedback is in the live region');
-    assert.match(await group.locator('p').first().textContent(), /^1 of 5 done, score 2 of 8$/);
+    assert.match(await group.locator('p').first().textContent(), /^1 of 5 answered, score 2 of 8$/);
 
-    // Submit asks first; the confirmation takes the focus, and Enter submits.
-    await group.getByRole('button', { name: 'Submit...' }).focus();
+    // Submit asks first and says what is still open; Cancel gives the focus back to Submit.
+    await tabTo(page, () => document.activeElement.textContent === 'Submit...', 8, { what: 'Submit...' });
     await page.keyboard.press('Enter');
     const sure = group.getByRole('button', { name: /Yes, submit/ });
     assert.equal(await sure.isVisible(), true);
-    assert.equal(await page.evaluate(() => document.activeElement.textContent), await sure.textContent());
+    assert.equal(await focusedText(page), await sure.textContent());
+    const open = (await api(page, 'assignment_state')).items.filter((it) => it.status === 'open').length;
+    assert.equal(open, ASSIGNMENT.items.length - 1);
+    assert.match(await group.getByRole('group', { name: 'Submit the assignment?' }).textContent(),
+                 new RegExp(`^${open} of ${ASSIGNMENT.items.length} items have no answer yet\\.`));
+    await tabTo(page, () => document.activeElement.textContent === 'Cancel', 1, { what: 'Cancel' });
+    await page.keyboard.press('Enter');
+    assert.equal(await sure.isVisible(), false);
+    assert.equal(await focusedText(page), 'Submit...');
+    assert.equal((await api(page, 'assignment_state')).submitted, false, 'Cancel submits nothing');
+
+    // Enter on Submit..., Enter on Yes: submitted, and the focus is on the review's heading.
+    await page.keyboard.press('Enter');
+    assert.equal(await focusedText(page), await sure.textContent());
     await page.keyboard.press('Enter');
     await page.waitForFunction(() => window.cspacelab.call('assignment_state').submitted);
-    assert.match(await group.locator('p').first().textContent(), /submitted, not passed$/);
+    assert.equal(await focusedText(page), 'Review: your answers and the right ones', 'the focus did not fall to the body');
+    assert.equal(await group.locator('p').first().textContent(), 'submitted: score 2 of 8, not passed');
     const review = group.locator('ol').nth(1).locator('li');
     assert.equal(await review.count(), ASSIGNMENT.items.length);
-    assert.match(await review.nth(1).textContent(), new RegExp(`Your answer: ${right.toFixed(4)}\\.`));
+    // The right answer as a person writes it: six significant digits (as C's %.6g, computed
+    // here from the given angles), and the tolerance this assignment accepts.
+    const six = String(Number(right.toPrecision(6)));
+    assert.match(await review.nth(1).textContent(),
+                 new RegExp(`Your answer: ${right.toFixed(4)}\\. The right answer: ${six.replace('.', '\\.')} \\(within 0\\.01\\)\\.`));
     assert.deepEqual(errors, []);
   } finally {
     await browser.close();

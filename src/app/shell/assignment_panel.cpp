@@ -272,9 +272,12 @@ void AssignmentPanel::card() {
     std::size_t done = 0;
     for (const json& it : state_["items"]) done += it["status"] != "open";
     const std::size_t n = state_["items"].size();
-    const std::string progress = std::to_string(done) + " of " + std::to_string(n) + " done, score " +
-                                 points_text(g["raw"].get<double>()) + " of " + points_text(g["max"].get<double>()) +
-                                 (session_->submitted ? g["passed"] == true ? ": submitted, passed" : ": submitted, not passed" : "");
+    // "answered", not "done": a wrong answer is recorded, not finished with. Once submitted the
+    // count says nothing new, and the bar's centred text must fit the panel (it lost its first
+    // characters): the score and the verdict only.
+    const std::string score = "score " + points_text(g["raw"].get<double>()) + " of " + points_text(g["max"].get<double>());
+    const std::string progress = !session_->submitted ? std::to_string(done) + " of " + std::to_string(n) + " answered, " + score
+                                 : "submitted: " + score + (g["passed"] == true ? ", passed" : ", not passed");
     ImGui::ProgressBar(n ? static_cast<float>(done) / static_cast<float>(n) : 0.0f, ImVec2(-FLT_MIN, 0), progress.c_str());
     web::record_control("assignment-progress");
     if (session_->submitted) {
@@ -285,6 +288,13 @@ void AssignmentPanel::card() {
       current_item();
     }
     navigation();
+#ifdef __EMSCRIPTEN__
+    // Tab on the canvas steps between the app's fields only (ImGui 1.86 cannot tab to a button);
+    // the page's copy of this card (lab-assignment-access.js) is where Tab goes next.
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("By keyboard: Esc, then Tab, brings this card up as a page of buttons.");
+    ImGui::PopStyleColor();
+#endif
   });
   submit_confirmation();
   ImGui::PopID();
@@ -371,8 +381,7 @@ void AssignmentPanel::review() {
     if (kind == "exercise") {
       card::paragraphs(it["prompt"].get<std::string>());
       ImGui::TextWrapped("Your answer: %s", it["answer"].is_string() ? it["answer"].get<std::string>().c_str() : "(none)");
-      const json& e = it["expected"];
-      ImGui::TextWrapped("The right answer: %s", e.is_string() ? e.get<std::string>().c_str() : e.dump().c_str());
+      ImGui::TextWrapped("The right answer: %s", it["expected_text"].get<std::string>().c_str());
     } else if (kind == "task") {
       ImGui::TextWrapped("What counts: %s", it["check_text"].get<std::string>().c_str());
     }
