@@ -257,3 +257,49 @@ test('Phone: under lock=scene a long press on empty space says why no menu opens
   assert.deepEqual(await api(page, 'get_scene'), before, 'nothing changed');
   assert.deepEqual(errors, []);
 }));
+
+test('Phone on its side: a swipe scrolls the Controls panel, and one that starts on a button does not press it',
+  () => withBrowser(async ({ browser, url }) => {
+  // ImGui scrolls by wheel and scrollbar only; a student's swipe did nothing before panel.cpp's
+  // follow_finger. On its side, a phone shows a third of Step PRM's panel.
+  const { page, errors, tap, fingerDrag, control, press } = await phone(browser, url, LANDSCAPE, '?lesson=step-prm');
+  await press('tab:controls');
+  const panel = async () => (await api(page, 'status')).panel;
+  const steps = async () => (await api(page, 'status')).stepping.steps;
+  let p = await panel();
+  assert.ok(p.scroll_max > 150, `the panel has more than a screen to show (${p.scroll_max} px to scroll)`);
+  assert.equal(p.scroll, 0);
+  const box = await page.evaluate(() => window.cspacelab.module.canvas.getBoundingClientRect().toJSON());
+  // Up from the Step button: the panel follows the finger, and PRM takes no step.
+  const at = await control('step');
+  assert.ok(at, 'Step is in the panel');
+  const up = Math.min(100, Math.round(at.y - box.top - 10));
+  assert.ok(up > 40, `room to swipe up from Step (${up} px)`);
+  await fingerDrag(at, { x: at.x, y: at.y - up });
+  await waitFrames(page, 3);
+  p = await panel();
+  assert.ok(Math.abs(p.scroll - up) <= 4, `scrolled by the finger's ${up} px (${p.scroll})`);
+  assert.equal(await steps(), 0, 'the swipe did not press the Step button it began on');
+  // On to the end: the panel stops there, however far the finger goes.
+  const mid = { x: box.left + box.width / 2, y: box.top + box.height * 0.8 };
+  await fingerDrag(mid, { x: mid.x, y: box.top + 10 });
+  await fingerDrag(mid, { x: mid.x, y: box.top + 10 });
+  await waitFrames(page, 3);
+  p = await panel();
+  assert.ok(Math.abs(p.scroll - p.scroll_max) <= 1, `at the end (${p.scroll} of ${p.scroll_max})`);
+  await screenshot(page, 'phone-controls-swiped.png');
+  // Down again, back to the top.
+  for (let i = 0; i < 6 && (await panel()).scroll > 0; ++i)
+    await fingerDrag({ x: mid.x, y: box.top + box.height * 0.45 }, { x: mid.x, y: box.top + box.height - 20 });
+  await waitFrames(page, 3);
+  assert.equal((await panel()).scroll, 0);
+  // A sideways drag is no swipe; a tap still presses the button.
+  const again = await control('step');
+  await fingerDrag(again, { x: again.x + 30, y: again.y + 3 });
+  assert.equal((await panel()).scroll, 0, 'a sideways drag does not scroll');
+  const before = await steps();
+  await tap(await control('step'));
+  await waitFrames(page, 3);
+  assert.equal(await steps(), before + 1, 'a tap on Step steps');
+  assert.deepEqual(errors, []);
+}));

@@ -22,6 +22,7 @@ bool fold(const char* title, bool open = true);
 /// height left; end() closes it and, when its content is taller than that height, draws a row
 /// under it with a cue ("more below", or "back to the top" at the end) that scrolls on a click.
 /// The row takes its own space (over the content, a click on it would reach what lies under).
+/// By touch, a vertical swipe that starts in the panel scrolls it (panel.cpp: follow_finger).
 void begin(float width);
 void end();
 
