@@ -89,11 +89,15 @@ class Cspace3dLesson : public Lesson {
       if (prm_controls(params_, world(), ctx, kLabTorusSamples, false, rule)) rebuild(0);
       ui::text_flow(ui::format("|V| = %zu  |E| = %ld, %d across a glued face", prm().roadmap().vertices.size(),
                                prm().edges_alive(), seam_edges()));
-      if (prm().solved() && instructor::hidden("path_length"))
+      if (prm().solved() && instructor::hidden("path_length")) {
         ImGui::TextColored(theme::vec4(theme::kTextGood), "path found, its length %s", instructor::kHidden);
-      else if (prm().solved())
+      } else if (prm().solved()) {
         ImGui::TextColored(theme::vec4(theme::kTextGood), "path found, length %.3f", prm().path_length());
-      else if (prm().done()) ImGui::TextColored(theme::vec4(theme::kTextBad), "no path found");
+      } else if (prm().done()) {  // SE(2)'s default n = 200 misses most seeds' paths: say what helps
+        ImGui::PushStyleColor(ImGuiCol_Text, theme::vec4(theme::kTextBad));
+        ui::text_flow("no path found: a larger n or another seed may find one");
+        ImGui::PopStyleColor();
+      }
     }
     // Folded at first: the lesson's first state fits the panel at 1280 x 800 (panel-layout.test).
     if (panel::fold("Questions", false)) questions_panel();

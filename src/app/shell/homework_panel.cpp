@@ -279,8 +279,11 @@ void HomeworkPanel::problem_body(const HomeworkProblem& problem) {
   web::record_control("new-numbers");
   const auto s = scores_.find(e.id);
   if (s != scores_.end()) {
-    ui::flow(ImGui::CalcTextSize("this visit: 00 of 00 right").x);
-    ImGui::TextDisabled("this visit: %d of %d right", s->second.right, s->second.tried);
+    // Two counts of different things (exercises solved, answers checked): "1 of 2 right" read as
+    // a share of answers, which it is not once an exercise is answered right twice.
+    const int right = s->second.right, tried = s->second.tried;
+    ui::flow(ImGui::CalcTextSize("this visit: 00 solved in 00 tries").x);
+    ImGui::TextDisabled("this visit: %d solved in %d %s", right, tried, tried == 1 ? "try" : "tries");
   }
   ui::flow(ui::button_width("Close"));
   if (ImGui::SmallButton("Close")) problem_.clear();
