@@ -47,6 +47,29 @@
     return { title: '', description: '', pass: '', seed_key: '', items: [] };
   }
 
+  // A stored draft in the shape the dialog edits: another version's, or one edited by hand, had
+  // a number for a title or an item of no kind, and the dialog ended in a TypeError. Text fields
+  // become text, items of an unknown kind are dropped, and core names what is still wrong.
+  function normalDraft(d) {
+    const text = (v, or = '') => (typeof v === 'string' ? v : typeof v === 'number' ? String(v) : or);
+    const out = emptyDraft();
+    for (const k of Object.keys(out)) if (k !== 'items') out[k] = text(d[k]);
+    const plain = (v) => v && typeof v === 'object' && !Array.isArray(v);
+    out.items = d.items.filter((it) => plain(it) && ['exercise', 'explore', 'task'].includes(it.kind)).map((it) => {
+      const item = { kind: it.kind, title: text(it.title), points: text(it.points, '1') };
+      if (it.kind === 'exercise') {
+        Object.assign(item, { problem: text(it.problem, 'P1'), seedMode: it.seedMode === 'fixed' ? 'fixed' : 'learner',
+                              seed: text(it.seed), tolerance: text(it.tolerance) });
+      } else {
+        Object.assign(item, { prompt: text(it.prompt), lesson: text(it.lesson, 'step-prm'),
+                              scene: plain(it.scene) ? it.scene : null, params: plain(it.params) ? it.params : {} });
+        if (it.kind === 'task') item.check = text(it.check, '{"all": []}');
+      }
+      return item;
+    });
+    return out;
+  }
+
   /** The scalar leaves of a state() object as [pointer, value] (for writing a task's check). */
   function leaves(value, pointer = '', out = []) {
     if (out.length >= 200) return out;
@@ -82,7 +105,7 @@
         const raw = localStorage.getItem(this.key);
         if (raw) {
           const d = JSON.parse(raw);
-          if (d && typeof d === 'object' && Array.isArray(d.items)) return Object.assign(emptyDraft(), d);
+          if (d && typeof d === 'object' && Array.isArray(d.items)) return normalDraft(d);
         }
       } catch {
         // no storage (a private window) or not ours: start empty

@@ -192,3 +192,29 @@ test('the Author view: an exercise, an explore item and a task built, checked, p
   assert.ok(await dialog(page).locator('.lab-author-box').evaluate((b) => b.scrollWidth <= b.clientWidth), 'no sideways scrolling');
   await screenshot(page, 'author-390.png');
 }));
+
+test('a stored draft of the wrong shape opens as far as it can be read; Start over asks, then empties it',
+  { timeout: 120000 }, () => withPage(async ({ page, url }) => {
+  // Another version's draft, or one edited by hand: a number for the title, items that are no
+  // items. The view used to end in a TypeError here.
+  await page.evaluate(() => localStorage.setItem('cspacelab:v1:author:' + location.pathname, JSON.stringify({
+    title: 7, description: null, pass: '0.5',
+    items: [null, 3, { kind: 'bogus' }, { kind: 'exercise', problem: 'P10', points: 2, seed: 4, seedMode: 'fixed' },
+            { kind: 'task', prompt: ['not text'], lesson: 'step-prm', check: { all: [] } }],
+  })));
+  await openLab(page, url + '?author=1');
+  await dialog(page).waitFor({ state: 'visible' });
+  assert.equal(await head(page).getByLabel('Title', { exact: true }).inputValue(), '7');
+  assert.equal(await page.locator('.lab-author [data-item]').count(), 2, 'the exercise and the task; the rest dropped');
+  assert.equal(await item(page, 0).getByLabel('Points').inputValue(), '2');
+  // Start over is a question first: No keeps everything, Yes empties the draft and its storage.
+  page.once('dialog', (d) => d.dismiss());
+  await dialog(page).getByRole('button', { name: 'Start over' }).click();
+  assert.equal(await page.locator('.lab-author [data-item]').count(), 2, 'No: nothing deleted');
+  page.once('dialog', (d) => d.accept());
+  await dialog(page).getByRole('button', { name: 'Start over' }).click();
+  assert.equal(await page.locator('.lab-author [data-item]').count(), 0);
+  assert.equal(await head(page).getByLabel('Title', { exact: true }).inputValue(), '');
+  const kept = await page.evaluate(() => JSON.parse(localStorage.getItem('cspacelab:v1:author:' + location.pathname) || 'null'));
+  assert.ok(kept === null || (kept.items.length === 0 && kept.title === ''), `the stored draft is empty too: ${JSON.stringify(kept)}`);
+}));
