@@ -280,9 +280,19 @@ test('on a phone: the card in the Controls tab, answered by touch, submitted',
   await api(page, 'assignment_open', { assignment: ASSIGNMENT, learner: LEARNER });
   await tap('tab:controls');
   assert.equal((await api(page, 'status')).layout.tab, 'controls');
+  // The card opens at its top, its title in view, and no field has taken the keyboard: that
+  // would open the phone's on-screen keyboard over half the screen, unasked.
+  assert.equal((await api(page, 'status')).panel.scroll, 0);
+  const focusedProxy = () => page.evaluate(() => document.activeElement === window.cspacelab.module.canvas.cslText);
+  assert.equal(await focusedProxy(), false, 'no text field has the keyboard');
+  // Every control of the card is a finger's target: 24 px high at least (WCAG 2.5.8).
+  const buttons = await page.evaluate(() => window.cspacelab.pageState().buttons);
+  for (const [name, r] of Object.entries(buttons).filter(([n]) => n.startsWith('assignment-') && n !== 'assignment-progress'))
+    assert.ok(r[3] - r[1] >= 24, `${name} is ${r[3] - r[1]} px high`);
   const mine = exercises(LEARNER);
   await tap('assignment-item-1');
   await tap('assignment-answer');
+  assert.equal(await focusedProxy(), true, 'a tap on the field gives it the keyboard');
   await page.keyboard.type(s1(mine[1].given.q1, mine[1].given.q2).toFixed(4), { delay: 20 });
   await waitFrames(page, 2);
   await tap('assignment-check');

@@ -464,7 +464,7 @@ class AnalysisLesson : public Lesson, private NoSteps {
     if (ImGui::DragFloat("μ(F)", &v, 0.01f, 0.0001f, 1000.0f, "%.4f")) free_volume_ = static_cast<double>(v);
     ImGui::PopItemWidth();
     ImGui::Text("d = %d   m = %.0f   σ = %.4g", dim_, bound(0).balls, bound(0).sigma);
-    if (ImGui::SmallButton("use the measured values")) {
+    if (ui::small_button("use the measured values")) {
       length_ = measured_length_;
       clearance_ = measured_clearance_;
       free_volume_ = measured_volume_;
@@ -794,7 +794,7 @@ class AnalysisLesson : public Lesson, private NoSteps {
       dim_text_wrapped("(1 draw in 20 misses on average: chance, not an error)");
     }
     instructor::FixedParam fixed("mc_seed");
-    if (ImGui::SmallButton("new samples")) {
+    if (ui::small_button("new samples")) {
       ++p9_seed_;
       sample_p9();
     }

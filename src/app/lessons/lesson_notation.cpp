@@ -292,7 +292,7 @@ class NotationLesson : public Lesson {
                                               {"P7", "base=planar joints=RRR wrist=spherical"}};
     for (std::size_t i = 0; i < std::size(kPresets); ++i) {
       if (i > 0) ui::flow(ui::button_width(kPresets[i][0]));
-      if (ImGui::SmallButton(kPresets[i][0])) robot_ = parse_robot_description(kPresets[i][1]);
+      if (ui::small_button(kPresets[i][0])) robot_ = parse_robot_description(kPresets[i][1]);
     }
 
     fixed.reset();

@@ -163,7 +163,7 @@ class PotentialLesson : public Lesson, private Stepper {
     for (const Example& e : kExamples) {
       ui::flow(ui::button_width(e.label));  // same row while it fits (the panel may be narrow)
       instructor::FixedScene fixed;  // an example brings its scene
-      if (ImGui::SmallButton(e.label)) set_example(e.scene, ctx);
+      if (ui::small_button(e.label)) set_example(e.scene, ctx);
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", e.tooltip);
     }
 

@@ -70,7 +70,7 @@ class TorusLesson : public Lesson {
     ImGui::Text("q = (%.3f, %.3f)  %s", q_[0], q_[1], world().is_free(q_) ? "free" : "in collision");
     ImGui::Checkbox("animate the path / loop", &animate_);
     ui::flow(ui::button_width("clear trail"));
-    if (ImGui::SmallButton("clear trail")) trail_.clear();
+    if (ui::small_button("clear trail")) trail_.clear();
     // The right-hand view on one row: a heading of its own cost the panel a line.
     ImGui::AlignTextToFramePadding();
     ImGui::TextDisabled("right:");
@@ -119,7 +119,7 @@ class TorusLesson : public Lesson {
         ImGui::TextWrapped("%s", loop_blocked() ? "Here the loop crosses C-obstacles: the arm could not make this "
                                                   "motion. The loop shows the torus's shape, not a path."
                                                 : "Here the whole loop is free.");
-        if (ImGui::SmallButton("stop the exercise")) exercise_ = Exercise::None;
+        if (ui::small_button("stop the exercise")) exercise_ = Exercise::None;
         web::record_control("torus-loop-stop");
         // The text the button brought is what the student looks for next: scrolled into view.
         if (started) scroll_to_exercise_ = 2;

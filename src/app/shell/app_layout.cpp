@@ -286,11 +286,20 @@ void App::compact_bar() {
   // the playback strip and the tools too).
   const bool wide = strip_wide();
   const float w = wide ? 84.0f : 0.5f * (ImGui::GetContentRegionAvail().x - spacing);
+  // With an assignment open its card heads the Controls tab, and the View tab showed no sign of
+  // it: the tab says so, in the longest words that fit.
+  const char* controls = "Controls";
+  if (assignment_.active())
+    for (const char* label : {"Assignment & controls", "Assignment"})
+      if (ui::button_width(label) <= w) {
+        controls = label;
+        break;
+      }
   const struct {
     Tab tab;
     const char* label;
     const char* control;
-  } tabs[] = {{Tab::View, "View", "tab:view"}, {Tab::Controls, "Controls", "tab:controls"}};
+  } tabs[] = {{Tab::View, "View", "tab:view"}, {Tab::Controls, controls, "tab:controls"}};
   for (const auto& t : tabs) {
     if (t.tab == Tab::Controls) ImGui::SameLine();
     const bool on = tab_ == t.tab;

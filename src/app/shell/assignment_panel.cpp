@@ -290,10 +290,13 @@ void AssignmentPanel::card() {
     navigation();
 #ifdef __EMSCRIPTEN__
     // Tab on the canvas steps between the app's fields only (ImGui 1.86 cannot tab to a button);
-    // the page's copy of this card (lab-assignment-access.js) is where Tab goes next.
-    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    ImGui::TextWrapped("By keyboard: Esc, then Tab, brings this card up as a page of buttons.");
-    ImGui::PopStyleColor();
+    // the page's copy of this card (lab-assignment-access.js) is where Tab goes next. Not said to
+    // a finger, which has no Tab.
+    if (!input::touch()) {
+      ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+      ImGui::TextWrapped("By keyboard: Esc, then Tab, brings this card up as a page of buttons.");
+      ImGui::PopStyleColor();
+    }
 #endif
   });
   submit_confirmation();
@@ -312,7 +315,9 @@ void AssignmentPanel::item_list() {
     std::snprintf(label, sizeof label, "%s %zu. (%s) %s##item%zu", look.mark, i + 1, look.word, item.title.c_str(), i);
     const bool good = status == "correct" || status == "viewed", bad = status == "incorrect";
     if (good || bad) ImGui::PushStyleColor(ImGuiCol_Text, theme::vec4(good ? theme::kTextGood : theme::kTextBad));
-    if (ImGui::Selectable(label, i == session_->current)) visit(i);
+    // A finger's row is a button's height (a text line, 23 px, is under the 24 px of WCAG 2.5.8).
+    if (ImGui::Selectable(label, i == session_->current, 0, ImVec2(0, input::touch() ? ImGui::GetFrameHeight() : 0.0f)))
+      visit(i);
     if (good || bad) ImGui::PopStyleColor();
     web::record_control(("assignment-item-" + std::to_string(i)).c_str());
   }
@@ -332,7 +337,7 @@ void AssignmentPanel::current_item() {
       act([&] { answer(i, std::string(answer_)); });
       focus_answer_ = true;  // correct it and press Enter again
     }
-    if (ImGui::SmallButton("Open the tool")) visit(i);
+    if (ui::small_button("Open the tool")) visit(i);
     web::record_control("assignment-open-item");
   } else {
     if (item.kind == AssignmentItemKind::Task) {

@@ -3,6 +3,7 @@
 // the text in them.
 #include <string>
 
+#include "app/shell/input_mode.hpp"
 #include "app/shell/theme.hpp"
 #include "app/shell/ui.hpp"
 #include "app/shell/web_bridge.hpp"
@@ -48,7 +49,7 @@ void boxed(ImU32 colour, Body body) {
 
 /// An exercise's answer row, the homework card's and the assignment card's: the format hint, a
 /// field and Check beside it (`field_control` and `check_control` for the page's buttons map).
-/// The field takes the keyboard when `focus` is set, which this clears. True when Check is
+/// The field takes the keyboard when `focus` is set (not by touch), which this clears. True when Check is
 /// pressed or Enter typed in the field: the caller checks `buffer` (and sets `focus` again, so
 /// that a wrong answer is corrected and Enter pressed again at once).
 inline bool answer_row(const char* id, const std::string& hint, char* buffer, std::size_t size, bool& focus,
@@ -59,7 +60,9 @@ inline bool answer_row(const char* id, const std::string& hint, char* buffer, st
   const float check_w = ui::button_width("Check");
   ImGui::PushItemWidth(-check_w - ImGui::GetStyle().ItemSpacing.x);
   if (focus) {
-    ImGui::SetKeyboardFocusHere();
+    // Not by touch: the field's focus opens a phone's on-screen keyboard over half the screen
+    // unasked, and scrolled the card's title away; a finger taps the field when it wants to type.
+    if (!input::touch()) ImGui::SetKeyboardFocusHere();
     focus = false;
   }
   const bool enter = ImGui::InputTextWithHint(id, "your answer", buffer, size, ImGuiInputTextFlags_EnterReturnsTrue);

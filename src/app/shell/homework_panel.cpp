@@ -248,7 +248,7 @@ void HomeworkPanel::problem_body(const HomeworkProblem& problem) {
   if (checked_) {
     const json setup = exercise_tool_setup(e);
     if (!setup.is_null()) {
-      if (ImGui::SmallButton("Show these numbers in the tool")) {
+      if (ui::small_button("Show these numbers in the tool")) {
         try {
           show_(find_homework_problem(e.id)->lesson, setup);
           error_.clear();
@@ -264,7 +264,7 @@ void HomeworkPanel::problem_body(const HomeworkProblem& problem) {
   if (checked_) {
     const Space3d view = space_in_3d(e);
     if (view.scene) {
-      if (ImGui::SmallButton(view.label)) {
+      if (ui::small_button(view.label)) {
         try {
           show_("cspace-3d", {{"scene", scene_to_json(bundled_scene(view.scene))}});
           error_.clear();
@@ -275,7 +275,7 @@ void HomeworkPanel::problem_body(const HomeworkProblem& problem) {
       web::record_control("see-in-3d");
     }
   }
-  if (ImGui::SmallButton("New numbers")) set_exercise(e.id, fresh_seed());
+  if (ui::small_button("New numbers")) set_exercise(e.id, fresh_seed());
   web::record_control("new-numbers");
   const auto s = scores_.find(e.id);
   if (s != scores_.end()) {
@@ -286,7 +286,7 @@ void HomeworkPanel::problem_body(const HomeworkProblem& problem) {
     ImGui::TextDisabled("this visit: %d solved in %d %s", right, tried, tried == 1 ? "try" : "tries");
   }
   ui::flow(ui::button_width("Close"));
-  if (ImGui::SmallButton("Close")) problem_.clear();
+  if (ui::small_button("Close")) problem_.clear();
 }
 
 }  // namespace csl::app
