@@ -1,6 +1,7 @@
 // WCAG 2.1 AA as axe-core checks it in the browser: no serious or critical violation on the full
 // lab, the embed and the course page, in every lesson, with the Share and Embed dialogs open and
-// on the panel that takes a stopped lab's place. axe sees the page's DOM: the canvas's label and
+// on the panel that takes a stopped lab's place, in assignment mode (the card's page copy, asking
+// and after Submit) and in the Author view. axe sees the page's DOM: the canvas's label and
 // the dialogs now, any HTML the page grows for screen readers later (it runs over all of it).
 // A failure lists every state with its violations' ids and the elements they were found on.
 import { test } from 'node:test';
@@ -129,5 +130,43 @@ test('the dark look and high contrast: the page\'s dialogs and the parallel DOM 
     assert.deepEqual(errors, [], `${name}: no console errors`);
     await context.close();
   }
+  expectNone(found);
+}));
+
+test('assignment mode and the Author view: the card\'s page copy (before and after Submit) and the dialog pass axe',
+  () => withBrowser(async ({ browser, url }) => {
+  // The two parts of the page that only an assignment brings, which the tests above never open:
+  // lab-assignment-access.js's group (shown, the keyboard inside it) and lab-author.js's dialog.
+  const found = [];
+  const context = await newAxeContext(browser);
+  await context.addInitScript(() => localStorage.setItem('cspacelab:v1:welcomed', '1'));
+  const page = await context.newPage();
+  const errors = collectErrors(page);
+  await openLab(page, url + 'index.html?assignment=examples/assignment-example.json');
+  await page.waitForFunction(() => {
+    const g = document.querySelector('.lab-access-assignment');
+    return g && !g.hidden;
+  }, null, { timeout: 30000 });
+  await page.focus('.lab-access-assignment input');
+  await check(page, 'assignment, the card\'s copy shown', found);
+  await page.locator('.lab-access-assignment').getByRole('button', { name: 'Submit...' }).click();
+  await check(page, 'assignment, Submit asking', found);
+  await page.locator('.lab-access-assignment').getByRole('button', { name: /Yes, submit/ }).click();
+  await page.waitForFunction(() => window.cspacelab.call('assignment_state').submitted);
+  await check(page, 'assignment, the review', found);
+  // The Author view with a draft of each kind of item (the dialog reads a stored draft).
+  await page.evaluate(() => localStorage.setItem('cspacelab:v1:author:' + location.pathname, JSON.stringify({
+    title: 'Week 3', description: 'Roadmaps', pass: '0.6', seed_key: '', items: [
+      { kind: 'exercise', title: '', problem: 'P10', seedMode: 'fixed', seed: '4', points: '2', tolerance: '0.01' },
+      { kind: 'explore', title: 'Look', prompt: 'Step PRM once', lesson: 'step-prm', scene: null, params: {}, points: '0' },
+      { kind: 'task', title: 'Solve', prompt: 'Find a path', lesson: 'step-prm', scene: null, params: {}, points: '1',
+        check: '{"pointer": "/solved", "equals": true}' }],
+  })));
+  await openLab(page, url + 'index.html?author=1');
+  await page.locator('.lab-author').waitFor({ state: 'visible' });
+  await check(page, 'the Author view', found);
+  await screenshot(page, 'accessibility-author.png');
+  assert.deepEqual(errors, [], 'no console errors');
+  await context.close();
   expectNone(found);
 }));
