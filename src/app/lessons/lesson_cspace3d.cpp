@@ -489,9 +489,12 @@ class Cspace3dLesson : public Lesson {
     draw_robot(view_, robot, scene_.goal, theme::with_alpha(theme::kGoal, 110), 2.0f);
     draw_robot(view_, robot, q_, world().is_free(q_) ? theme::kRobot : theme::kHit, 3.0f);
     view_.pop_clip();
-    view_.draw_label(Vec2(scene_.workspace_min.x(), scene_.workspace_max.y()),
-                     arm() ? "drag a link to turn its joint" : "drag the robot to slide it; the plane turns it",
-                     theme::kLabel, ImVec2(6, -22));
+    // The long hint where it fits (a phone's view cut it at "turn"), else its first half.
+    const Vec2 corner(scene_.workspace_min.x(), scene_.workspace_max.y());
+    const char* hint = arm() ? "drag a link to turn its joint" : "drag the robot to slide it; the plane turns it";
+    const float room = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x - view_.to_screen(corner).x - 6;
+    if (!arm() && ImGui::CalcTextSize(hint).x > room) hint = "drag the robot to slide it";
+    view_.draw_label(corner, hint, theme::kLabel, ImVec2(6, -22));
     if (grab_ == 0 && view_.hovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
       grab_ = part_under_mouse();
       grab_offset_ = view_.mouse_world() - (arm() ? Vec2::Zero() : Vec2(q_[0], q_[1]));

@@ -8,7 +8,7 @@
 
 namespace csl::app {
 
-void SurfaceView::begin(const char* id, ImVec2 size, double extent) {
+void SurfaceView::begin(const char* id, ImVec2 size, double extent, float top) {
   const ImVec2 at = ImGui::GetCursorScreenPos();
   size.x = std::max(size.x, 40.0f);
   size.y = std::max(size.y, 40.0f);
@@ -19,8 +19,9 @@ void SurfaceView::begin(const char* id, ImVec2 size, double extent) {
     yaw_ = wrap_angle(yaw_ + 0.01 * static_cast<double>(d.x));  // one number per direction: links stay short
     pitch_ = std::clamp(pitch_ + 0.01 * static_cast<double>(d.y), -kMaxPitch, kMaxPitch);
   }
-  centre_ = ImVec2(at.x + 0.5f * size.x, at.y + 0.5f * size.y);
-  scale_ = 0.5f * std::min(size.x, size.y) / static_cast<float>(extent);
+  top = std::clamp(top, 0.0f, 0.5f * size.y);
+  centre_ = ImVec2(at.x + 0.5f * size.x, at.y + top + 0.5f * (size.y - top));
+  scale_ = 0.5f * std::min(size.x, size.y - top) / static_cast<float>(extent);
   ImGui::GetWindowDrawList()->AddRectFilled(at, ImVec2(at.x + size.x, at.y + size.y), theme::kCanvasBg);
 }
 

@@ -43,7 +43,8 @@ struct SurfaceMesh {
 class SurfaceView {
  public:
   /// Lays out the canvas at the cursor (size in logical pixels); a left drag turns the view.
-  void begin(const char* id, ImVec2 size, double extent);
+  /// The drawing keeps clear of a band `top` pixels high at the top (the view's caption).
+  void begin(const char* id, ImVec2 size, double extent, float top = 0.0f);
   /// The view's turn, as it starts and within what a drag reaches: yaw about the vertical axis,
   /// kept in [-pi, pi) (it wraps), pitch the tilt towards the viewer, within +-kMaxPitch.
   static constexpr double kDefaultYaw = 0.6;

@@ -1,6 +1,7 @@
 #include "app/views/volume_view.hpp"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 
 #include "app/shell/theme.hpp"
@@ -48,8 +49,10 @@ bool VolumeView::begin(const char* id, ImVec2 size, double& cut) {
   const ImVec2 at = ImGui::GetCursorScreenPos();
   size.x = std::max(size.x, kStripWidth + 40.0f);
   size.y = std::max(size.y, 40.0f);
-  // The block's half diagonal fits the shorter side at zoom 1, whatever the turn.
-  SurfaceView::begin(id, ImVec2(size.x - kStripWidth, size.y), half_.norm() * 1.05 / zoom_);
+  // The block's half diagonal fits the shorter side at zoom 1, whatever the turn, under the
+  // caption's line (on a phone the caption crossed the block's top corner).
+  SurfaceView::begin(id, ImVec2(size.x - kStripWidth, size.y), half_.norm() * 1.05 / zoom_,
+                     ImGui::GetTextLineHeightWithSpacing());
   const ImGuiIO& io = ImGui::GetIO();
   if (hovered()) {
     if (io.MouseWheel != 0.0f) zoom_ = std::clamp(zoom_ * std::pow(1.2, static_cast<double>(io.MouseWheel)), kMinZoom, kMaxZoom);
@@ -191,7 +194,14 @@ void VolumeView::draw_frame(const char* x_name, const char* y_name, const char* 
   };
   label(Vec3(1.08, 0, 0), x_name);
   label(Vec3(0, 1.08, 0), y_name);
-  label(Vec3(0, 0, 1.1), z_name);
+  // The vertical axis's name beside the leftmost of the four vertical edges, outside the block
+  // (at the top of the edge through the origin it sat inside the block from most angles).
+  ImVec2 mid(FLT_MAX, 0);
+  for (int bits = 0; bits < 4; ++bits) {
+    const ImVec2 m = project(point(Vec3(bits & 1, bits >> 1, 0.5)));
+    if (m.x < mid.x) mid = m;
+  }
+  dl->AddText(ImVec2(mid.x - ImGui::CalcTextSize(z_name).x - 6, mid.y - 8), theme::kLabel, z_name);
 }
 
 }  // namespace csl::app
