@@ -76,6 +76,10 @@ class NeighborIndex {
   void search(int node, const double* q, Visit& visit) const;
   template <int kMetric, int kDim>
   double box_bound(int n, const double* q) const;
+  template <int kMetric, int kDim>
+  double distance2(const double* q, const double* p) const;
+  template <int kMetric, int kDim, class Visit>
+  void search_all(const double* q, Visit& visit) const;
   template <class Visit>
   void search(const double* q, Visit& visit) const;
 
