@@ -15,6 +15,18 @@ constexpr int kLeafSize = 16;  // measured: 16 beats 8 and 4 for k = 10 in 2-D
 constexpr double kPruneSafety = 1.0 + 1e-12;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
+// s1_distance(a, b), the same bits, for a and b in the chart, without a branch: |b - a| or the
+// way round, 2 pi - |b - a| (summed as wrap_angle sums it, so rounded alike), whichever is
+// shorter. wrap_angle's test whether b - a leaves the chart goes wrong a quarter of the time in
+// this, the search's innermost loop. (Checked bit for bit against s1_distance on 6e7 pairs:
+// uniform, near the chart's ends, and near half a turn apart.)
+inline double s1_distance_in_chart(double a, double b) {
+  constexpr double kTwoPiLo = 2.44929359829470635445e-16;  // 2 pi - kTwoPi, as in wrap_angle
+  const double x = std::fabs(b - a);
+  const double round = (kTwoPi - x) + kTwoPiLo;
+  return round < x ? round : x;
+}
+
 }  // namespace
 
 NeighborIndex::NeighborIndex(const Space& space) : space_(space) {
@@ -191,7 +203,7 @@ inline double NeighborIndex::box_bound(int n, const double* q) const {
       if (q[a] >= lo[a] && q[a] <= hi[a]) continue;
       double gap;
       if constexpr (kMetric == 2) {
-        const double to_lo = std::fabs(angle_difference(q[a], lo[a])), to_hi = std::fabs(angle_difference(q[a], hi[a]));
+        const double to_lo = s1_distance_in_chart(q[a], lo[a]), to_hi = s1_distance_in_chart(q[a], hi[a]);
         gap = to_lo < to_hi ? to_lo : to_hi;
       } else {
         gap = q[a] < lo[a] ? lo[a] - q[a] : q[a] - hi[a];
@@ -216,7 +228,7 @@ inline double NeighborIndex::distance2(const double* q, const double* p) const {
     double d2 = 0.0;
     const std::size_t dim = kDim > 0 ? static_cast<std::size_t>(kDim) : dim_;
     for (std::size_t a = 0; a < dim; ++a) {
-      const double d = kMetric == 2 ? angle_difference(q[a], p[a]) : p[a] - q[a];
+      const double d = kMetric == 2 ? s1_distance_in_chart(q[a], p[a]) : p[a] - q[a];
       d2 += d * d;
     }
     return d2;
