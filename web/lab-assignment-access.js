@@ -17,8 +17,8 @@
     const call = (cmd, args) => access.api.call(cmd, args);
     let state = null, shownItem = null;
 
-    // First in the section, right after its heading: Tab from the canvas reaches the answer field
-    // in a few presses, not after every lesson and parameter (it was 27).
+    // First in the section, right after its heading: the answer field is the first Tab after the
+    // canvas, not after every lesson and parameter (it was 27).
     const g = el('div', { className: 'lab-access-assignment', role: 'group' });
     access.section.insertBefore(g, access.title.nextSibling);
     g.hidden = true;
@@ -56,13 +56,16 @@
       sure.focus();
     });
     const asking = el('div', { role: 'group', 'aria-label': 'Submit the assignment?' }, g);
-    const warn = el('p', {}, asking);
+    const warn = el('p', { id: access.id + '-submit-warn' }, asking);
     const sure = button('Yes, submit my answers', () => {
       call('assignment_submit');
       show(call('assignment_state'));
       reviewHead.focus();
     }, asking);
-    button('Cancel', () => { asking.hidden = true; submit.focus(); }, asking);
+    const cancel = button('Cancel', () => { asking.hidden = true; submit.focus(); }, asking);
+    // Yes is read with what is still open; Escape is Cancel, as in any dialog.
+    sure.setAttribute('aria-describedby', warn.id);
+    asking.addEventListener('keydown', (e) => { if (e.key === 'Escape') { e.stopPropagation(); cancel.click(); } });
     const feedback = el('p', { 'aria-live': 'polite' }, g);
     el('h4', { text: 'All items' }, g);
     const items = el('ol', {}, g);

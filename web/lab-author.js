@@ -56,14 +56,15 @@
     for (const k of Object.keys(out)) if (k !== 'items') out[k] = text(d[k]);
     const plain = (v) => v && typeof v === 'object' && !Array.isArray(v);
     out.items = d.items.filter((it) => plain(it) && ['exercise', 'explore', 'task'].includes(it.kind)).map((it) => {
-      const item = { kind: it.kind, title: text(it.title), points: text(it.points, '1') };
+      const item = { kind: it.kind, title: text(it.title), points: text(it.points, it.kind === 'explore' ? '0' : '1') };
       if (it.kind === 'exercise') {
         Object.assign(item, { problem: text(it.problem, 'P1'), seedMode: it.seedMode === 'fixed' ? 'fixed' : 'learner',
                               seed: text(it.seed), tolerance: text(it.tolerance) });
       } else {
         Object.assign(item, { prompt: text(it.prompt), lesson: text(it.lesson, 'step-prm'),
                               scene: plain(it.scene) ? it.scene : null, params: plain(it.params) ? it.params : {} });
-        if (it.kind === 'task') item.check = text(it.check, '{"all": []}');
+        // A check stored as an object (by hand) is kept, as the text the dialog edits.
+        if (it.kind === 'task') item.check = plain(it.check) ? JSON.stringify(it.check) : text(it.check, '{"all": []}');
       }
       return item;
     });

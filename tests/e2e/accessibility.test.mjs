@@ -164,6 +164,7 @@ test('assignment mode and the Author view: the card\'s page copy (before and aft
   })));
   await openLab(page, url + 'index.html?author=1');
   await page.locator('.lab-author').waitFor({ state: 'visible' });
+  assert.equal(await page.locator('.lab-author [data-item]').count(), 3, 'axe sees the three items');
   await check(page, 'the Author view', found);
   await screenshot(page, 'accessibility-author.png');
   assert.deepEqual(errors, [], 'no console errors');

@@ -383,7 +383,7 @@ test('by keyboard alone in the accessible DOM: from the lab to the answer, Cance
     await page.keyboard.press('Escape');
     await waitFrames(page, 3);
     const toAnswer = await tabTo(page, () => document.activeElement.id.endsWith('-answer'), 3, { what: 'the answer field' });
-    assert.ok(toAnswer <= 3, `the answer field is ${toAnswer} presses after the canvas`);
+    assert.equal(toAnswer, 1, 'the answer field is the first Tab after the canvas');
     assert.equal(await page.evaluate(() => !!document.activeElement.closest('.lab-access:focus-within')), true,
                  'the section shows while the keyboard is in it');
     const panel = await page.evaluate(() => document.querySelector('.lab-access').getBoundingClientRect().height);
@@ -425,6 +425,14 @@ test('by keyboard alone in the accessible DOM: from the lab to the answer, Cance
     assert.equal(open, ASSIGNMENT.items.length - 1);
     assert.match(await group.getByRole('group', { name: 'Submit the assignment?' }).textContent(),
                  new RegExp(`^${open} of ${ASSIGNMENT.items.length} items have no answer yet\\.`));
+    // Escape is Cancel too; then Enter on Submit... again, and Tab, Enter on Cancel.
+    await page.keyboard.press('Escape');
+    assert.equal(await sure.isVisible(), false);
+    assert.equal(await focusedText(page), 'Submit...');
+    await page.keyboard.press('Enter');
+    assert.equal(await page.evaluate(() => document.getElementById(document.activeElement.getAttribute('aria-describedby')).textContent),
+                 `${open} of ${ASSIGNMENT.items.length} items have no answer yet. Your answers become final, and the review shows the right ones.`,
+                 'Yes is read with the warning');
     await tabTo(page, () => document.activeElement.textContent === 'Cancel', 1, { what: 'Cancel' });
     await page.keyboard.press('Enter');
     assert.equal(await sure.isVisible(), false);

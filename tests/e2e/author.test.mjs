@@ -200,13 +200,15 @@ test('a stored draft of the wrong shape opens as far as it can be read; Start ov
   await page.evaluate(() => localStorage.setItem('cspacelab:v1:author:' + location.pathname, JSON.stringify({
     title: 7, description: null, pass: '0.5',
     items: [null, 3, { kind: 'bogus' }, { kind: 'exercise', problem: 'P10', points: 2, seed: 4, seedMode: 'fixed' },
-            { kind: 'task', prompt: ['not text'], lesson: 'step-prm', check: { all: [] } }],
+            { kind: 'task', prompt: ['not text'], lesson: 'step-prm', check: { pointer: '/solved', equals: true } }],
   })));
   await openLab(page, url + '?author=1');
   await dialog(page).waitFor({ state: 'visible' });
   assert.equal(await head(page).getByLabel('Title', { exact: true }).inputValue(), '7');
   assert.equal(await page.locator('.lab-author [data-item]').count(), 2, 'the exercise and the task; the rest dropped');
   assert.equal(await item(page, 0).getByLabel('Points').inputValue(), '2');
+  // The task's check, stored as an object, is kept (as the text the dialog edits).
+  assert.match(await item(page, 1).getByLabel(/^Check \(a condition/).inputValue(), /"pointer":\s*"\/solved"/);
   // Start over is a question first: No keeps everything, Yes empties the draft and its storage.
   page.once('dialog', (d) => d.dismiss());
   await dialog(page).getByRole('button', { name: 'Start over' }).click();

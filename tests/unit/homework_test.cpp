@@ -1064,6 +1064,8 @@ TEST_CASE("homework: the answer as the review prints it, never a double's last b
   e.answer_format = "integer";
   e.answer = 6.9999999;
   CHECK(csl::exercise_answer_text(e) == "7");
+  e.tolerance = 35.0;  // P8's band: a whole number's tolerance is said once it is a whole step
+  CHECK(csl::exercise_answer_text(e) == "7 (within 35)");
   // Q in the course's notation for P1-P7: the notation checker's canonical form.
   const csl::Exercise p3 = csl::make_exercise("P3", 1);
   CHECK(csl::exercise_answer_text(p3) == csl::check_exercise(p3, "").expected.get<std::string>());

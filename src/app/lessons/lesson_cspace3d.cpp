@@ -492,7 +492,8 @@ class Cspace3dLesson : public Lesson {
     // The long hint where it fits (a phone's view cut it at "turn"), else its first half.
     const Vec2 corner(scene_.workspace_min.x(), scene_.workspace_max.y());
     const char* hint = arm() ? "drag a link to turn its joint" : "drag the robot to slide it; the plane turns it";
-    const float room = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x - view_.to_screen(corner).x - 6;
+    // Measured over the workspace itself: beside it, the 3-D view's side of the window is not room.
+    const float room = view_.to_screen(scene_.workspace_max).x - view_.to_screen(corner).x - 6;
     if (!arm() && ImGui::CalcTextSize(hint).x > room) hint = "drag the robot to slide it";
     view_.draw_label(corner, hint, theme::kLabel, ImVec2(6, -22));
     if (grab_ == 0 && view_.hovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {

@@ -39,7 +39,9 @@ bool g_cue = false;  // the cue row is shown: the content did not fit the whole 
 // scrolls by wheel and scrollbar only, so a student's swipe did nothing, or moved the slider it
 // began on. A press in the panel is a tap until the finger has gone kSlack px up or down (more
 // than sideways, which stays a slider's); from then on the panel follows the finger, and what the
-// press began on lets go: a button is not clicked, a slider keeps the value it had.
+// press began on lets go: a button is not clicked. (A slider has taken the value under the finger
+// at the press, as ImGui's sliders do; that is not undone.) A press in a popup over the panel (a
+// combo's list, a modal) or on its scrollbar is left to them.
 struct Swipe {
   bool armed = false, on = false;
   ImVec2 from{0, 0};
@@ -58,7 +60,10 @@ void follow_finger(ImGuiWindow* child) {
   }
   if (ImGui::IsMouseClicked(0)) {
     s = Swipe{};
-    s.armed = ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows | ImGuiHoveredFlags_AllowWhenBlockedByActiveItem);
+    // IsWindowHovered counts a popup opened from the panel as one of its children (ImGui 1.86).
+    s.armed = ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows | ImGuiHoveredFlags_AllowWhenBlockedByActiveItem) &&
+              !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId) &&
+              ImGui::GetActiveID() != ImGui::GetWindowScrollbarID(child, ImGuiAxis_Y);
     s.from = io.MousePos;
     s.scroll = child->Scroll.y;
   }

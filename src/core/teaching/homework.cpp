@@ -130,7 +130,8 @@ std::optional<double> parse_answer_number(const std::string& text) {
 
 std::string exercise_answer_text(const Exercise& e) {
   if (e.answer_format == "notation") return configuration_space(parse_robot_description(e.robot)).notation;
-  if (e.answer_format == "integer") return std::to_string(std::llround(e.answer));
+  if (e.answer_format == "integer")  // P8 accepts a band of whole numbers, P12 one in an assignment
+    return std::to_string(std::llround(e.answer)) + (e.tolerance >= 1 ? " (within " + number_text(e.tolerance) + ")" : "");
   return number_text(e.answer) + (e.tolerance > 0 ? " (within " + number_text(e.tolerance) + ")" : "");
 }
 

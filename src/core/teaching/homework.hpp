@@ -88,8 +88,8 @@ ExerciseCheck check_exercise(const Exercise& exercise, const std::string& answer
 nlohmann::json exercise_tool_setup(const Exercise& exercise);
 
 /// The answer as a student reads it: Q in the course's notation, a whole number, or a number to
-/// six significant digits with the tolerance that is accepted ("1.44 (within 0.01)"), never a
-/// double's last bits ("1.4400000000000002").
+/// six significant digits, each with the tolerance that is accepted ("1.44 (within 0.01)",
+/// "8 (within 1)"; a whole number's only from 1 up), never a double's last bits ("1.4400000000000002").
 std::string exercise_answer_text(const Exercise& exercise);
 
 /// {correct, expected, explanation}.
