@@ -8,6 +8,9 @@ namespace csl {
 
 inline constexpr double kPi = 3.141592653589793238462643383279502884;
 inline constexpr double kTwoPi = 2.0 * kPi;
+/// What the double kTwoPi misses of 2*pi: added in a second step, a sum with kTwoPi rounds as
+/// one with 2*pi itself would (wrap_angle, and the neighbour search's S^1 distance).
+inline constexpr double kTwoPiLo = 2.44929359829470635445e-16;
 
 /// The angle wrapped into [-pi, pi). Exact reduction steps only (fmod and rint are exact in
 /// IEEE arithmetic), so the result is the same natively and in wasm.
@@ -17,7 +20,6 @@ inline double wrap_angle(double a) {
   // k * kTwoPiHi is exact (|k| <= 8: its last three bits are zero), i.e. for the few turns the
   // lab's angles make; beyond, it rounds by about |a| * 2^-53, the angle's own precision.
   constexpr double kTwoPiHi = 6.28318530717958623200e+00;  // == kTwoPi
-  constexpr double kTwoPiLo = 2.44929359829470635445e-16;  // 2*pi - kTwoPiHi
   const double k = std::rint(a / kTwoPiHi);
   double r = (a - k * kTwoPiHi) - k * kTwoPiLo;
   if (r < -kPi) r += kTwoPi;

@@ -21,7 +21,6 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // this, the search's innermost loop. (Checked bit for bit against s1_distance on 6e7 pairs:
 // uniform, near the chart's ends, and near half a turn apart.)
 inline double s1_distance_in_chart(double a, double b) {
-  constexpr double kTwoPiLo = 2.44929359829470635445e-16;  // 2 pi - kTwoPi, as in wrap_angle
   const double x = std::fabs(b - a);
   const double round = (kTwoPi - x) + kTwoPiLo;
   return round < x ? round : x;
