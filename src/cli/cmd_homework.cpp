@@ -65,7 +65,9 @@ const Command kExerciseCommand{
     "No answer is printed. --check ANSWER (what a student types: a number, also pi/2 or\n"
     "3pi/4; an integer; or Q such as SE(2) x T^3, R^2 \xC3\x97 S^1, R\xC2\xB2) adds\n"
     "  \"correct\": bool, \"expected\": the answer (number, integer or Q),\n"
-    "  \"explanation\": why, with the worked solution.\n"
+    "  \"explanation\": why, with the worked solution,\n"
+    "  \"feedback\": what the lab's card tells a wrong try: what went wrong, not the answer\n"
+    "  (for a right or unreadable answer, the explanation's first line).\n"
     "A wrong answer is not an error: exit status 0.\n",
     run_exercise};
 

@@ -270,13 +270,13 @@ TEST_CASE("assignment: P12 graded against N found here by brute force; the toler
   // One tolerance in the hint, the one that counts: the problem's own 0.005 is replaced.
   CHECK(p10.format_hint == "radians, e.g. 1.57 or pi/2 (within 0.005)");
   CHECK(assignment_exercise(wide, 0, "").format_hint == "radians, e.g. 1.57 or pi/2 (within 0.01 in this assignment)");
-  // P12's hint states no tolerance: the assignment's is added.
+  // P12's hint states no tolerance: the assignment's comes first in its brackets.
   j["items"][0]["tolerance"] = 1;
   CHECK(assignment_exercise(parsed(j), 0, "").format_hint ==
-        "a whole number N >= 2 (both ends counted); accepted within 1 in this assignment");
+        "a whole number N >= 2 (within 1 in this assignment; both ends counted)");
   // P13's relative tolerance ("within 1%") gives way to the assignment's absolute one.
   j["items"][0] = {{"kind", "exercise"}, {"problem", "P13"}, {"seed", 2}, {"tolerance", 0.05}};
-  CHECK(assignment_exercise(parsed(j), 0, "").format_hint == "a number, within 0.05 in this assignment (0 if no force acts)");
+  CHECK(assignment_exercise(parsed(j), 0, "").format_hint == "a number (within 0.05 in this assignment; 0 if no force acts)");
 }
 
 TEST_CASE("assignment: a task is checked from the lesson's state") {

@@ -236,7 +236,7 @@ void check_checker_numeric(const csl::Exercise& e) {
     CHECK_FALSE(verdict(fixed12(a + off)).correct);
     CHECK_FALSE(verdict(fixed12(a - off)).correct);
   }
-  for (const char* garbage : {"", "   ", "abc", "1e999", "-1e999", "nan", "inf", "1/0", "pi/0", "0x10", "1,5",
+  for (const char* garbage : {"", "   ", "abc", "1e999", "-1e999", "nan", "inf", "1/0", "pi/0", "0x10", "1,5,0",
                               "2 3", "pi pi", "--1", "\x01\xff"}) {
     const csl::ExerciseCheck c = verdict(garbage);
     CHECK_MESSAGE(!c.correct, "garbage '", garbage, "' was accepted");
@@ -636,8 +636,35 @@ TEST_CASE("homework: parse_answer_number reads decimals, multiples and fractions
   near("2 pi", 2 * kPiHere);
   near("1/3", 1.0 / 3.0);
   near("\xCF\x80/3", kPiHere / 3);  // π/3
-  for (const char* bad : {"", "abc", "1e999", "nan", "inf", "1/0", "pi/", "/2", "1//2", "0x1p3", "+1"})
+  // As students wrote them in a walk through the lab: a sum, a unit, a decimal comma.
+  near("2*pi - 3.38", 2 * kPiHere - 3.38);
+  near("pi - 0.2385", kPiHere - 0.2385);
+  near("pi/2 + 0.1", kPiHere / 2 + 0.1);
+  near("-1 - -2", 1.0);
+  near("1e-3", 0.001);
+  near("2.5E+2 - 1", 249.0);
+  near("2.903 rad", 2.903);
+  near("1 radian", 1.0);
+  near("2,90", 2.9);
+  near("0,741", 0.741);
+  near("-12,5", -12.5);
+  for (const char* bad : {"", "abc", "1e999", "nan", "inf", "1/0", "pi/", "/2", "1//2", "0x1p3", "+1",
+                          "1 +", "1 - ", "- ", "1,2,3", "2.5,1", "6,127", "rad", "1 + abc"})
     CHECK_MESSAGE(!csl::parse_answer_number(bad).has_value(), "read '", bad, "'");
+}
+
+TEST_CASE("homework: an unreadable answer is told how to write it") {
+  const csl::Exercise p10 = csl::make_exercise("P10", 7);
+  csl::ExerciseCheck c = csl::check_exercise(p10, "166.3\xC2\xB0");
+  CHECK_FALSE(c.readable);
+  // 166.3 degrees in radians, by hand: 166.3 * 3.14159265 / 180 = 2.9024825.
+  CHECK(c.explanation == "\"166.3\xC2\xB0\" is not a number the lab can read: answers here are in radians: 166.3 degrees is 2.90248.");
+  c = csl::check_exercise(csl::make_exercise("P8", 3), "6,127");
+  CHECK_FALSE(c.readable);
+  CHECK(c.explanation.find("no thousands separators") != std::string::npos);
+  // A distance (P11) has no radians: degrees there get the general hint.
+  c = csl::check_exercise(csl::make_exercise("P11", 3), "30 deg");
+  CHECK(c.explanation.find("radians") == std::string::npos);
 }
 
 TEST_CASE("homework: P1-P7, Q in notation: the robot each problem describes, right and wrong answers") {
@@ -1069,4 +1096,70 @@ TEST_CASE("homework: the answer as the review prints it, never a double's last b
   // Q in the course's notation for P1-P7: the notation checker's canonical form.
   const csl::Exercise p3 = csl::make_exercise("P3", 1);
   CHECK(csl::exercise_answer_text(p3) == csl::check_exercise(p3, "").expected.get<std::string>());
+  // A wrong answer is told the same text: a whole number is not "7 (within 0.5)" there either.
+  e.tolerance = 0.5;
+  CHECK(csl::check_exercise(e, "9").explanation.rfind("Not quite: you wrote 9, the answer is 7.", 0) == 0);
+  e.answer_format = "number";
+  e.answer = 1.44;
+  e.tolerance = 0.005;
+  CHECK(csl::check_exercise(e, "2").explanation.rfind("Not quite: you wrote 2, the answer is 1.44 (within 0.005).", 0) == 0);
+}
+
+TEST_CASE("homework: a format hint is its form, its tolerance and its note, each said once") {
+  csl::Exercise e;
+  csl::set_format_hint(e, "radians, e.g. 1.57 or pi/2", "0.005");
+  CHECK(e.format_hint == "radians, e.g. 1.57 or pi/2 (within 0.005)");
+  csl::set_format_hint(e, "a whole number N >= 2", "", "both ends counted");
+  CHECK(e.format_hint == "a whole number N >= 2 (both ends counted)");
+  csl::set_format_hint(e, "a number", "1%", "0 if no force acts");
+  CHECK(e.format_hint == "a number (within 1%; 0 if no force acts)");
+  csl::set_format_hint(e, "Q", "");
+  CHECK(e.format_hint == "Q");
+  // Every problem's hint is made so: its tolerance is in the one place an assignment replaces.
+  for (const csl::HomeworkProblem& p : csl::homework_problems()) {
+    const csl::Exercise x = csl::make_exercise(p.id, 4);
+    CHECK_MESSAGE(x.format_hint.rfind(x.answer_form, 0) == 0, p.id, ": ", x.format_hint);
+    CHECK_MESSAGE((x.format_hint.find("within") != std::string::npos) == !x.within.empty(), p.id, ": ", x.format_hint);
+  }
+}
+
+TEST_CASE("homework: a wrong try's feedback tells what went wrong, not the answer") {
+  const auto typed = [](double v) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.17g", v);
+    return std::string(text);
+  };
+  int numeric = 0, notation = 0;
+  for (const csl::HomeworkProblem& p : csl::homework_problems()) {
+    for (std::uint64_t seed = 1; seed <= 30; ++seed) {
+      const csl::Exercise e = csl::make_exercise(p.id, seed);
+      if (e.answer_format == "notation") {
+        const std::string expected = csl::check_exercise(e, "").expected.get<std::string>();
+        for (const char* wrong : {"R^7", "S^1", "SE(3) x R^5"}) {
+          if (std::string(wrong).find(expected) != std::string::npos) continue;
+          const csl::ExerciseCheck c = csl::check_exercise(e, wrong);
+          if (c.correct) continue;
+          ++notation;
+          CHECK_MESSAGE(c.feedback.find(expected) == std::string::npos, p.id, " seed ", seed, ": ", c.feedback);
+          CHECK(c.feedback.rfind("Not quite", 0) == 0);
+          CHECK(c.explanation.rfind("Not quite: ", 0) == 0);  // the checker's reasons, then the solution
+        }
+        continue;
+      }
+      // Far off: beyond the tolerance and any typical mistake's value.
+      const double off = e.answer + 7.0 * std::max({e.tolerance, 0.01 * std::fabs(e.answer), 1.0}) + 0.123;
+      const csl::ExerciseCheck c = csl::check_exercise(e, typed(off));
+      REQUIRE_FALSE(c.correct);
+      ++numeric;
+      CHECK_MESSAGE(c.feedback.find("the answer is") == std::string::npos, p.id, " seed ", seed, ": ", c.feedback);
+      CHECK(c.feedback.rfind("Not quite: you wrote ", 0) == 0);
+      CHECK_MESSAGE(c.explanation.find("the answer is " + csl::exercise_answer_text(e)) != std::string::npos, c.explanation);
+      // Right: the feedback is the verdict line of the explanation, the worked solution follows.
+      const csl::ExerciseCheck right = csl::check_exercise(e, typed(e.answer));
+      CHECK(right.correct);
+      CHECK(right.explanation.rfind(right.feedback + "\n", 0) == 0);
+    }
+  }
+  CHECK(numeric >= 150);
+  CHECK(notation >= 100);
 }

@@ -295,15 +295,9 @@ Exercise assignment_exercise(const Assignment& a, std::size_t index, const std::
   Exercise e = make_exercise(item.problem, item.seed ? *item.seed : learner_seed(a, index, learner));
   if (item.tolerance) {
     e.tolerance = *item.tolerance;
-    // The hint states the problem's own tolerance ("(within 0.005)", ", within 1%"): say the
-    // assignment's in its place, so that a student reads one tolerance, the one that counts.
-    const std::string tol = significant(*item.tolerance, 6) + " in this assignment";
-    if (const std::size_t at = e.format_hint.find("within "); at != std::string::npos) {
-      const std::size_t from = at + 7, to = e.format_hint.find_first_of(") ", from);
-      e.format_hint.replace(from, (to == std::string::npos ? e.format_hint.size() : to) - from, tol);
-    } else {
-      e.format_hint += "; accepted within " + tol;
-    }
+    // The assignment's tolerance in the problem's own place in the hint: a student reads one
+    // tolerance, the one that counts.
+    set_format_hint(e, e.answer_form, significant(*item.tolerance, 6) + " in this assignment", e.hint_note);
   }
   return e;
 }

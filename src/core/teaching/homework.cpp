@@ -1,8 +1,10 @@
 #include "core/teaching/homework.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 #include <stdexcept>
 
 #include "core/base/angles.hpp"
@@ -71,7 +73,7 @@ json exercise_to_json(const Exercise& e) {
 }
 
 json exercise_check_to_json(const ExerciseCheck& c) {
-  return {{"correct", c.correct}, {"expected", c.expected}, {"explanation", c.explanation}};
+  return {{"correct", c.correct}, {"expected", c.expected}, {"explanation", c.explanation}, {"feedback", c.feedback}};
 }
 
 namespace {
@@ -108,7 +110,26 @@ std::string number_text(double v) {
 
 std::optional<double> parse_answer_number(const std::string& text) {
   if (text.size() > 64) return std::nullopt;
-  const std::string t = trim(text);
+  std::string t = trim(text);
+  // "2.903 rad": the unit the hints ask for, written out.
+  for (const std::string unit : {"radians", "radian", "rad"})
+    if (t.size() > unit.size() && t.compare(t.size() - unit.size(), unit.size(), unit) == 0) {
+      t = trim(t.substr(0, t.size() - unit.size()));
+      break;
+    }
+  // "2,90": a decimal comma, as much of the world writes it (one comma, no point). Not "6,127",
+  // which may be a thousands separator as well (the check's message says how to write it).
+  if (const std::size_t comma = t.find(','); comma != std::string::npos && t.find(',', comma + 1) == std::string::npos &&
+                                              t.find('.') == std::string::npos) {
+    // Ambiguous: 1 to 3 digits (not a leading 0), the comma, 3 digits ("6,127").
+    const std::string body = t.substr(t[0] == '-' ? 1 : 0);
+    const std::size_t at = body.find(',');
+    const bool digits = std::all_of(body.begin(), body.end(), [](char ch) {
+      return ch == ',' || std::isdigit(static_cast<unsigned char>(ch));
+    });
+    if (digits && at >= 1 && at <= 3 && body.size() == at + 4 && body[0] != '0') return std::nullopt;
+    t[comma] = '.';
+  }
   if (t.empty()) return std::nullopt;
   // a / b, either side a number or a multiple of pi.
   const auto term = [](const std::string& s) -> std::optional<double> {
@@ -117,15 +138,44 @@ std::optional<double> parse_answer_number(const std::string& text) {
     if (auto k = pi_multiple(u)) return *k * kPi;
     return parse_decimal(u);
   };
-  std::optional<double> v;
-  if (const std::size_t slash = t.find('/'); slash != std::string::npos) {
-    const auto a = term(t.substr(0, slash)), b = term(t.substr(slash + 1));
-    if (a && b && *b != 0.0) v = *a / *b;
-  } else {
-    v = term(t);
+  const auto quotient = [&](const std::string& q) -> std::optional<double> {
+    if (const std::size_t slash = q.find('/'); slash != std::string::npos) {
+      const auto a = term(q.substr(0, slash)), b = term(q.substr(slash + 1));
+      if (a && b && *b != 0.0) return *a / *b;
+      return std::nullopt;
+    }
+    return term(q);
+  };
+  // A sum of those, "2pi - 3.38" or "pi/2 + 0.1": split at a + or - that is not a sign (the
+  // first character, or after another operator) nor an exponent's (1e-3).
+  double sum = 0.0, sign = 1.0;
+  std::size_t from = 0;
+  for (std::size_t i = 0; i <= t.size(); ++i) {
+    if (i < t.size()) {
+      if (t[i] != '+' && t[i] != '-') continue;
+      std::size_t k = i;
+      while (k > from && t[k - 1] == ' ') --k;
+      if (k == from) continue;  // a sign
+      if ((t[k - 1] == 'e' || t[k - 1] == 'E') && k >= 2 && std::isdigit(static_cast<unsigned char>(t[k - 2])) && k == i)
+        continue;  // 1e-3
+    }
+    const auto v = quotient(t.substr(from, i - from));
+    if (!v) return std::nullopt;
+    sum += sign * *v;
+    if (i < t.size()) sign = t[i] == '-' ? -1.0 : 1.0;
+    from = i + 1;
   }
-  if (!v || !std::isfinite(*v)) return std::nullopt;
-  return v;
+  if (!std::isfinite(sum)) return std::nullopt;
+  return sum;
+}
+
+void set_format_hint(Exercise& e, std::string form, std::string within, std::string note) {
+  e.answer_form = std::move(form);
+  e.within = std::move(within);
+  e.hint_note = std::move(note);
+  std::string brackets = e.within.empty() ? "" : "within " + e.within;
+  if (!e.hint_note.empty()) brackets += (brackets.empty() ? "" : "; ") + e.hint_note;
+  e.format_hint = e.answer_form + (brackets.empty() ? "" : " (" + brackets + ")");
 }
 
 std::string exercise_answer_text(const Exercise& e) {
@@ -143,7 +193,32 @@ ExerciseCheck check_exercise(const Exercise& e, const std::string& answer) {
     c.correct = a.correct;
     c.readable = a.correct || a.explanation.rfind("could not read", 0) != 0;
     c.expected = configuration_space(robot).notation;
-    c.explanation = a.explanation + (e.worked.empty() ? "" : "\n" + e.worked);
+    // Its first line says what is right or wrong (Q itself only in the lines below it), led by a
+    // verdict as a number's is: a reader without the card's colours hears which it is.
+    std::string first = a.explanation.substr(0, a.explanation.find('\n'));
+    const std::string rest = a.explanation.substr(first.size());
+    if (a.correct && first.rfind("correct: ", 0) == 0) first = "Right: " + first.substr(9);
+    else if (!a.correct && c.readable) first = "Not quite: " + first;
+    c.explanation = first + rest + (e.worked.empty() ? "" : "\n" + e.worked);
+    c.feedback = first;
+    // The checker's reasons name the factors it expected ("expected R^3"): a wrong try is told
+    // only how far off its dimension is.
+    if (!a.correct && c.readable) {
+      const SpaceSignature want = signature_of(robot);
+      int got = -1;
+      try {
+        got = parse_space_expression(answer.substr(0, kMaxNotationText)).dimension();
+      } catch (const std::exception&) {
+        // read by the checker, not by the parser: say no more than "not quite"
+      }
+      const std::string n = std::to_string(want.dimension());
+      c.feedback = got < 0 ? "Not quite."
+                   : got != want.dimension()
+                       ? "Not quite: this robot's Q has dimension " + n + ", yours " + std::to_string(got) +
+                             ": count the numbers that fix a configuration."
+                       : "Not quite: the dimension, " + n + ", is right, the kinds of factor are not: which joints "
+                         "turn (S^1), which slide (R), and how the base moves.";
+    }
     return c;
   }
   const bool integer = e.answer_format == "integer";
@@ -151,14 +226,26 @@ ExerciseCheck check_exercise(const Exercise& e, const std::string& answer) {
   const std::optional<double> v = parse_answer_number(answer);
   if (!v) {
     c.readable = false;
-    c.explanation = (trim(answer).empty() ? std::string("Type an answer first: ")
-                                          : "\"" + printable(trim(answer), 40) + "\" is not a number the lab can read: ") +
-                    e.format_hint + ".";
+    const std::string typed = trim(answer);
+    std::string how = e.format_hint + ".";
+    if (typed.find(',') != std::string::npos) how += " A decimal point or comma, and no thousands separators: 2.5 or 2,5, 6127.";
+    // "166.3°": an angle in degrees, where the answer is in radians.
+    for (const std::string deg : {"\xC2\xB0", "degrees", "deg"})
+      if (e.format_hint.find("radians") != std::string::npos && typed.size() > deg.size() &&
+          typed.compare(typed.size() - deg.size(), deg.size(), deg) == 0) {
+        if (const auto d = parse_answer_number(typed.substr(0, typed.size() - deg.size())))
+          how = "answers here are in radians: " + number_text(*d) + " degrees is " + number_text(*d * kPi / 180.0) + ".";
+        break;
+      }
+    c.explanation = (typed.empty() ? std::string("Type an answer first: ")
+                                   : "\"" + printable(typed, 40) + "\" is not a number the lab can read: ") + how;
+    c.feedback = c.explanation;
     return c;
   }
   c.correct = std::fabs(*v - e.answer) <= e.tolerance;
   if (c.correct) {
-    c.explanation = "Right: " + number_text(e.answer) + ".\n" + e.worked;
+    c.feedback = "Right: " + number_text(e.answer) + ".";
+    c.explanation = c.feedback + "\n" + e.worked;
     return c;
   }
   std::string why;
@@ -167,9 +254,9 @@ ExerciseCheck check_exercise(const Exercise& e, const std::string& answer) {
       why = t.why;
       break;
     }
-  c.explanation = "Not quite: you wrote " + number_text(*v) + ", the answer is " + number_text(e.answer) +
-                  (e.tolerance > 0 ? " (within " + number_text(e.tolerance) + ")" : "") + "." +
+  c.explanation = "Not quite: you wrote " + number_text(*v) + ", the answer is " + exercise_answer_text(e) + "." +
                   (why.empty() ? "" : " " + why) + "\n" + e.worked;
+  c.feedback = "Not quite: you wrote " + number_text(*v) + "." + (why.empty() ? "" : " " + why);
   return c;
 }
 

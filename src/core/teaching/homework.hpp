@@ -48,7 +48,11 @@ struct Exercise {
   std::string prompt;         ///< the question with its numbers
   nlohmann::json given;       ///< the numbers by the handout's names (P10: {q1, q2} ...)
   std::string answer_format;  ///< "number", "integer" or "notation"
-  std::string format_hint;    ///< how to write it, e.g. "radians, e.g. 1.57 or pi/2; within 0.005"
+  std::string format_hint;    ///< how to write it, e.g. "radians, e.g. 1.57 or pi/2 (within 0.005)"
+  // format_hint's parts (set_format_hint), kept so that an assignment can state its own tolerance.
+  std::string answer_form;    ///< "radians, e.g. 1.57 or pi/2"
+  std::string within;         ///< the accepted tolerance as the hint says it ("0.005", "1%"); "" for none
+  std::string hint_note;      ///< the rest of the hint ("both ends counted"); "" for none
 
   // The answer: not in to_json().
   double answer = 0.0;        ///< number and integer answers
@@ -67,6 +71,10 @@ struct Exercise {
 /// std::invalid_argument for an unknown problem or a seed past kMaxExerciseSeed.
 Exercise make_exercise(const std::string& id, std::uint64_t seed);
 
+/// Sets the hint's parts and format_hint from them: "FORM (within WITHIN; NOTE)", either part of
+/// the brackets left out when empty, the brackets too when both are.
+void set_format_hint(Exercise& exercise, std::string form, std::string within, std::string note = "");
+
 /// {id, seed, prompt, given, answer_format, format_hint}: no answer in it.
 nlohmann::json exercise_to_json(const Exercise& exercise);
 
@@ -75,6 +83,10 @@ struct ExerciseCheck {
   bool readable = true;     ///< false: the answer was empty or could not be read (no attempt)
   nlohmann::json expected;  ///< the answer: a number, an integer, or Q in canonical notation
   std::string explanation;  ///< why it is right, or what went wrong, and the worked solution
+  /// What a wrong try may be told without the answer (what went wrong, a typical mistake's
+  /// reason); for a right or unreadable one the explanation's first line. The lab's card shows
+  /// this, and the explanation once the student asks for the solution or answers right.
+  std::string feedback;
 };
 
 /// Checks what a student typed. Never throws for the answer: an unreadable one is incorrect,
@@ -92,7 +104,7 @@ nlohmann::json exercise_tool_setup(const Exercise& exercise);
 /// "8 (within 1)"; a whole number's only from 1 up), never a double's last bits ("1.4400000000000002").
 std::string exercise_answer_text(const Exercise& exercise);
 
-/// {correct, expected, explanation}.
+/// {correct, expected, explanation, feedback}.
 nlohmann::json exercise_check_to_json(const ExerciseCheck& check);
 
 /// A number as a student may type it (see the file comment), or nullopt.

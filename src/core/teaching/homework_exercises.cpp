@@ -67,7 +67,7 @@ Exercise notation_exercise(const std::string& id, const std::string& text, const
   e.prompt = text + " Write its configuration space Q.";
   e.given = {{"robot", text}};
   e.answer_format = "notation";
-  e.format_hint = kNotationHint;
+  set_format_hint(e, kNotationHint, "");
   e.robot = robot;
   const ConfigSpaceInfo info = configuration_space(parse_robot_description(robot));
   std::string worked = "Q = " + info.notation + ", dimension " + std::to_string(info.dimension) + ":";
@@ -142,7 +142,7 @@ Exercise p8(Rng& rng) {
              number_text_exact(p) + "?";
   e.given = {{"d", d}, {"r", r}, {"p", p}};
   e.answer_format = "integer";
-  e.format_hint = "a whole number of samples, within 0.5%";
+  set_format_hint(e, "a whole number of samples", "0.5%");
   e.answer = n;
   e.tolerance = std::max(1.0, std::floor(0.005 * n));
   e.worked = "N = ceil(" + num(std::max(2.0, std::sqrt(static_cast<double>(d))), 3) + " / " + num(r) + ") = " +
@@ -174,7 +174,7 @@ Exercise p9(Rng& rng) {
              "), what is the probability that a uniformly sampled configuration is visible?";
   e.given = {{"x", x}, {"y", y}, {"d", d}};
   e.answer_format = "number";
-  e.format_hint = "a probability, to three decimals (within 0.002)";
+  set_format_hint(e, "a probability, to three decimals", "0.002");
   e.answer = prob;
   e.tolerance = 0.002;
   e.worked = "The left half is convex, so all of it is visible: 1/2. On the right, the visible part is the cone from (" +
@@ -197,7 +197,7 @@ Exercise p10(Rng& rng) {
              " (radians). What is the distance between them on S^1?";
   e.given = {{"q1", q1}, {"q2", q2}};
   e.answer_format = "number";
-  e.format_hint = "radians, e.g. 1.57 or pi/2 (within 0.005)";
+  set_format_hint(e, "radians, e.g. 1.57 or pi/2", "0.005");
   e.answer = dist;
   e.tolerance = 0.005;
   const double m = std::fmod(raw, kTwoPi);
@@ -236,7 +236,7 @@ Exercise p11(Rng& rng) {
              " centred at q = " + point_text(q) + ". What is the distance between the segment and the disk (0 if they meet)?";
   e.given = {{"p1", point_json(p1)}, {"p2", point_json(p2)}, {"q", point_json(q)}, {"r", r}};
   e.answer_format = "number";
-  e.format_hint = "a distance, within 0.005";
+  set_format_hint(e, "a distance", "0.005");
   e.answer = dist;
   e.tolerance = 0.005;
   const double t = std::clamp(t_raw, 0.0, 1.0);
@@ -299,7 +299,7 @@ Exercise p12(Rng& rng) {
              "included (t = i/(N-1)), what is the smallest N that finds the collision?";
   e.given = {{"p", point_json(p)}, {"q", point_json(q)}, {"center", point_json(centre)}, {"radius", radius}};
   e.answer_format = "integer";
-  e.format_hint = "a whole number N >= 2 (both ends counted)";
+  set_format_hint(e, "a whole number N >= 2", "", "both ends counted");
   e.answer = *n;
   e.tolerance = 0;
   const double half = std::sqrt(radius * radius - centre.y() * centre.y());
@@ -381,7 +381,7 @@ Exercise p13(Rng& rng) {
              {"quantity", quantity}};
   if (quantity == "rho" || quantity == "force") e.given["vertex"] = vertex + 1;
   e.answer_format = "number";
-  e.format_hint = "a number, within 1% (0 if no force acts)";
+  set_format_hint(e, "a number", "1%", "0 if no force acts");
   e.answer = answer;
   e.tolerance = std::max(1e-9, 0.01 * std::fabs(answer));
   std::string worked;
