@@ -104,9 +104,23 @@ extern "C" __eglMustCastToProperFunctionPointerType eglGetProcAddress(const char
 }
 #endif
 
-/// Text for the field that has the keyboard (from the page: see csl_text_field_js).
+/// Text for the field that has the keyboard (from the page: see csl_text_field_js). It joins SDL's
+/// queue behind the key presses SDL has queued from the canvas: put straight into ImGui's, a
+/// character typed after them came before them whenever a frame was slow ("³×R  S¹" for
+/// "R³ × S¹": the × and ³ arrive this way, the R and the spaces as key presses).
 extern "C" EMSCRIPTEN_KEEPALIVE_IF_WEB void csl_text_input(const char* utf8) {
-  if (utf8 && ImGui::GetCurrentContext()) ImGui::GetIO().AddInputCharactersUTF8(utf8);
+  if (!utf8) return;
+  const std::size_t n = std::strlen(utf8);
+  for (std::size_t i = 0; i < n;) {
+    // At most the event's 31 bytes, cut between characters, never inside one.
+    std::size_t j = std::min(n, i + SDL_TEXTINPUTEVENT_TEXT_SIZE - 1);
+    while (j < n && j > i + 1 && (static_cast<unsigned char>(utf8[j]) & 0xC0) == 0x80) --j;
+    SDL_Event e{};
+    e.type = SDL_TEXTINPUT;
+    std::memcpy(e.text.text, utf8 + i, j - i);
+    SDL_PushEvent(&e);
+    i = j;
+  }
 }
 
 namespace csl::app {
@@ -157,7 +171,8 @@ bool Platform::init(const PlatformOptions& options) {
 #ifdef __EMSCRIPTEN__
   // A device whose only pointer is a finger has touch-sized targets from the start (not only
   // after its first touch).
-  if (EM_ASM_INT({ return matchMedia("(pointer: coarse)").matches && !matchMedia("(any-pointer: fine)").matches ? 1 : 0; }))
+  // (The unused 0: EM_ASM_INT with no argument at all needs a GNU extension of variadic macros.)
+  if (EM_ASM_INT({ return matchMedia("(pointer: coarse)").matches && !matchMedia("(any-pointer: fine)").matches ? 1 : 0; }, 0))
     input::set_touch(true);
 #endif
   ImGui_ImplSDL2_InitForOpenGL(window_, gl_context_);
