@@ -300,14 +300,44 @@ class AnalysisLesson : public Lesson, private NoSteps {
             {"mc_seed", "Monte Carlo seed", &kMcSeed}};
   }
 
+  // What the open tab shows. P9's square is not the scene: its wall and gap are the tab's own.
   std::string describe() const override {
+    if (tab_ == kVisibilityTab) return visibility_text();
     std::string out = Lesson::describe();
+    if (tab_ == kTilingTab) out += " " + tiling_text();
     if (!experiment_) return out + " No experiment has run yet.";
     out += " The experiment's failure rates:";
     for (const ExperimentRow& r : experiment_->rows())
       out += " n = " + std::to_string(r.samples) + ": " + std::to_string(r.failures) + " failures in " +
              std::to_string(r.trials) + " runs;";
     return out;
+  }
+
+  std::string visibility_text() const {
+    const auto num = [](double v) { return significant(v, 4); };
+    std::string out = "P9: the unit square with a wall at x = 0.5, open from y = " + num(0.5 - 0.5 * p9_gap_) +
+                      " to " + num(0.5 + 0.5 * p9_gap_) + " (gap d = " + num(p9_gap_) + "); the point (x1, y1) = (" +
+                      num(p9_x_) + ", " + num(p9_y_) + "). In sight: all of the left half, and of the right half the "
+                      "cone between the rays through the opening's ends.";
+    if (instructor::hidden("p9_probability")) return out + " The cases, the areas and p are hidden by your instructor.";
+    const P9Breakdown b = p9_breakdown(p9_x_, p9_y_, p9_gap_);
+    return out + " The upper ray leaves through the " + p9_exit_name(b.upper.exit) + ", the lower through the " +
+           p9_exit_name(b.lower.exit) + ". p = 1/2 + A_up - A_lo = 0.5 + " + num(b.upper.area_under) + " - " +
+           num(b.lower.area_under) + " = " + num(b.probability) + " exact; by Monte Carlo, " + std::to_string(mc_.trials) +
+           " samples: " + num(mc_.estimate) + ", 95% interval [" + num(mc_.low) + ", " + num(mc_.high) + "], the exact p " +
+           (exact_in_interval() ? "inside it." : "outside it.");
+  }
+
+  std::string tiling_text() const {
+    const std::optional<TilingBound> t = tiling();
+    if (!t) return "P8: no clearance r > 0 (or too many balls): set r in tab Bound.";
+    std::string out = "P8, the whole cube [0,1]^" + std::to_string(dim_) + " tiled with balls of radius r/2, r = " +
+                      significant(clearance_, 4) + ": N = " + count_text(t->per_axis) + " per axis, m = " +
+                      count_text(t->balls) + " balls, sigma = " + significant(t->sigma, 4) + "; P(fail) <= m e^(-" +
+                      significant(t->rate, 4) + " n).";
+    if (instructor::hidden("p8_n")) return out + " Its n is hidden by your instructor.";
+    return out + " n for p = " + target_text() + ": " + count_text(std::ceil(t->interior_samples_for(target_))) +
+           " as in the handout, " + count_text(std::ceil(t->samples_for(target_))) + " refined.";
   }
 
   json params() const override {

@@ -108,10 +108,11 @@ struct Vec {
 __attribute__((noinline)) void add(std::vector<std::string>& row, const char* text) { row.emplace_back(text); }
 
 
-// "a₀", "a₁₂": the homework's name of vertex i.
+// "a₁", "a₁₂": the homework's name of vertex i, counted from 1 as the handout and P13's
+// exercise count them (the table said a₀ where the exercise asked about a₁).
 std::string vertex_name(int i) {
   std::string out = "a";
-  for (char d : std::to_string(i)) {
+  for (char d : std::to_string(i + 1)) {
     const char sub[4] = {'\xE2', '\x82', static_cast<char>('\x80' + (d - '0')), 0};  // U+2080 + d
     out.append(sub);
   }
@@ -945,7 +946,7 @@ class PotentialLesson : public Lesson, private Stepper {
     point_labels(q, r);  // over the arrows
   }
 
-  // The table's names at the control points (a₀..a₃ at the polygon's vertices, outward from
+  // The table's names at the control points (a₁..a₄ at the polygon's vertices, outward from
   // its centre), and a ring around the one whose equations are worked.
   void point_labels(const Config& q, const PotentialReport& r) {
     if (r.points.empty()) return;
