@@ -19,11 +19,11 @@
 //
 // author=1 opens the instructor's Author view (lab-author.js, loaded only then).
 //
-// This script loads the rest (cspacelab.js, lab-api.js, lab-url.js, lab-shell.js, lab-access.js,
-// lab-task.js, lab-print.js) from its own folder unless the page already has them. From a course
-// page of another origin that works when the lab's server sends Access-Control-Allow-Origin (the
-// wasm is fetched; docs/web.md, "Cross-origin embedding"). Each lab's API is element.cspacelab once it has
-// started (the element then fires "cspacelab-ready"); window.cspacelab is the page's first lab's.
+// This script loads the rest (PARTS below; the homework's accessible copy after the start) from
+// its own folder unless the page has them; from a course page of another origin when the lab's
+// server sends Access-Control-Allow-Origin (the wasm is fetched; docs/web.md, "Cross-origin
+// embedding"). Each lab's API is element.cspacelab once it has started (the element then fires
+// "cspacelab-ready"); window.cspacelab is the page's first lab's.
 'use strict';
 
 (function () {
@@ -272,6 +272,9 @@
     }
     // The parallel DOM: what the canvas shows, as HTML a screen reader and the keyboard reach.
     root.cspacelabAccess = new window.CSpaceLabAccess(root, canvas, api, { ui });
+    // The homework card's copy, fetched after the first frame.
+    need('CSpaceLabHomeworkAccess', 'lab-homework-access.js')
+      .then(() => window.CSpaceLabHomeworkAccess(root.cspacelabAccess), console.warn);
     // Printed, the lab is a worksheet: its picture, task and parameters, no controls.
     root.cspacelabPrint = new window.CSpaceLabPrint(root, canvas, api, shell);
     root.cspacelab = api;
@@ -289,13 +292,17 @@
     return api;
   }
 
+  // A part's script, loaded once (unless the page has it).
+  const loading = {};
+  const need = (name, file) => window[name] ? Promise.resolve() : (loading[file] = loading[file] || load(file));
+
   /** Assignment mode: lab-assignment.js, loaded now (no other lab pays for it), opens the file. */
   async function startAssignment(root, api, raw, single) {
     try {
       if (single) throw new Error('the single-file lab cannot load files: use the lab\'s site or its SCORM package');
-      if (typeof window.CSpaceLabAssignment === 'undefined') await load('lab-assignment.js');
+      await need('CSpaceLabAssignment', 'lab-assignment.js');
       if (root.cspacelabAccess) {  // the card in the accessible DOM, before the first event
-        if (typeof window.CSpaceLabAssignmentAccess === 'undefined') await load('lab-assignment-access.js');
+        await need('CSpaceLabAssignmentAccess', 'lab-assignment-access.js');
         window.CSpaceLabAssignmentAccess(root.cspacelabAccess);
       }
       const A = window.CSpaceLabAssignment;
@@ -303,13 +310,17 @@
       await assignment.start();
       return assignment;
     } catch (err) {
-      try {
-        api.notify('No assignment: ' + (err && err.message ? err.message : err));
-      } catch {
-        // the lab has stopped; its crash panel says so
-      }
-      return null;
+      return notifyFailure(api, 'No assignment: ', err);
     }
+  }
+
+  function notifyFailure(api, prefix, err) {
+    try {
+      api.notify(prefix + (err && err.message ? err.message : err));
+    } catch {
+      // the lab stopped: its crash panel says why
+    }
+    return null;
   }
 
   /** The Author view (author=1, File menu): its scripts load only now. Resolves to it or null. */
@@ -317,17 +328,12 @@
     try {
       if (single) throw new Error('the single-file lab cannot package the site');
       for (const [name, file] of [['CSpaceLabAuthor', 'lab-author.js'], ['CSpaceLabScormPackage', 'lab-scorm-package.js']])
-        if (typeof window[name] === 'undefined') await load(file);
+        await need(name, file);
       const view = root.cspacelabAuthorView = root.cspacelabAuthorView || new window.CSpaceLabAuthor(root, api, { base, load });
       view.open();
       return view;
     } catch (err) {
-      try {
-        api.notify('No Author view: ' + (err && err.message ? err.message : err));
-      } catch {
-        // the lab has stopped
-      }
-      return null;
+      return notifyFailure(api, 'No Author view: ', err);
     }
   }
 

@@ -110,7 +110,7 @@ test('parallel DOM: lessons, parameters both ways, steps into the live region, t
     await page.waitForFunction(() => window.cspacelab.log().some((l) => l.step === 1));
     const newest = (await api(page, 'log')).at(-1);
     assert.equal(newest.step, 1);
-    await page.waitForFunction(([s, text]) => document.querySelector(`${s} [aria-live="polite"]`).textContent === text,
+    await page.waitForFunction(([s, text]) => document.querySelector(`${s} .lab-access-log`).textContent === text,
                                [SEL, newest.text], { timeout: 5000 });
 
     // (c') Play from the DOM: a toggle (aria-pressed), at the speed typed beside it; while it
@@ -122,8 +122,8 @@ test('parallel DOM: lessons, parameters both ways, steps into the live region, t
     const play = page.locator(`${SEL} .lab-access-steps button:text-is("Play")`);
     const heard = [];
     await page.exposeFunction('heardLive', (t) => heard.push([Date.now(), t]));
-    await page.evaluate((s) => new MutationObserver(() => window.heardLive(document.querySelector(`${s} [aria-live="polite"]`).textContent))
-      .observe(document.querySelector(`${s} [aria-live="polite"]`), { childList: true, characterData: true, subtree: true }), SEL);
+    await page.evaluate((s) => new MutationObserver(() => window.heardLive(document.querySelector(`${s} .lab-access-log`).textContent))
+      .observe(document.querySelector(`${s} .lab-access-log`), { childList: true, characterData: true, subtree: true }), SEL);
     const atStart = (await api(page, 'status')).stepping.steps;
     await press(page, `${SEL} .lab-access-steps button:text-is("Play")`);
     await page.waitForFunction(() => window.cspacelab.status().stepping.playing === true);

@@ -133,15 +133,23 @@ test('the dark look and high contrast: the page\'s dialogs and the parallel DOM 
   expectNone(found);
 }));
 
-test('assignment mode and the Author view: the card\'s page copy (before and after Submit) and the dialog pass axe',
+test('the homework card\'s and an assignment\'s page copies (before and after Submit) and the Author view pass axe',
   () => withBrowser(async ({ browser, url }) => {
-  // The two parts of the page that only an assignment brings, which the tests above never open:
-  // lab-assignment-access.js's group (shown, the keyboard inside it) and lab-author.js's dialog.
+  // The parts of the page that only a problem or an assignment brings, which the tests above
+  // never open: lab-homework-access.js's card answered, lab-assignment-access.js's group (shown,
+  // the keyboard inside it) and lab-author.js's dialog.
   const found = [];
   const context = await newAxeContext(browser);
   await context.addInitScript(() => localStorage.setItem('cspacelab:v1:welcomed', '1'));
   const page = await context.newPage();
   const errors = collectErrors(page);
+  await openLab(page, url + 'index.html?problem=P10&seed=7');
+  await page.waitForSelector('.lab-access-homework-card:not([hidden])', { state: 'attached' });
+  await page.locator('.lab-access-homework input').fill('2');
+  await page.locator('.lab-access-homework-card').getByRole('button', { name: 'Check' }).click();
+  await page.waitForFunction(() => /^Not quite/.test(document.querySelector('.lab-access-homework [aria-live]').textContent));
+  await page.focus('.lab-access-homework input');
+  await check(page, 'the homework card\'s copy, answered', found);
   await openLab(page, url + 'index.html?assignment=examples/assignment-example.json');
   await page.waitForFunction(() => {
     const g = document.querySelector('.lab-access-assignment');

@@ -305,12 +305,15 @@ test('reveal=after-answer: the answer comes back once its exercise was answered 
   const n = minGrid([0, 0], [1, 0], center, radius);
   assert.equal(await page.evaluate(() => window.cspacelab.checkAnswer('2').correct), false);
   assert.ok(!('min_grid' in (await api(page, 'state'))), 'a wrong answer reveals nothing');
-  // The wrong answer's check showed the solution: typing it back is no answer of the student's.
+  // The card's Show the solution: typing the answer back is no answer of the student's.
+  assert.equal((await api(page, 'show_solution')).expected, n);
   assert.equal(await page.evaluate((a) => window.cspacelab.checkAnswer(a).correct, String(n)), true);
   assert.ok(!('min_grid' in (await api(page, 'state'))), 'right only after the solution was shown: still hidden');
-  // A new exercise (another seed), answered right first time, reveals it.
+  // A new exercise (another seed): a wrong try shows no answer, so right after it reveals.
   const fresh = await api(page, 'exercise', { id: 'P12', seed: 12 });
   const m = minGrid([0, 0], [1, 0], fresh.given.center, fresh.given.radius);
+  assert.equal(await page.evaluate((a) => window.cspacelab.checkAnswer(a).correct, String(m + 7)), false);
+  assert.ok(!('min_grid' in (await api(page, 'state'))));
   assert.equal(await page.evaluate((a) => window.cspacelab.checkAnswer(a).correct, String(m)), true);
   const state = await api(page, 'state');
   assert.equal(typeof state.min_grid, 'number', 'answered right: min N is back');

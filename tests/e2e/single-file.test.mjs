@@ -51,6 +51,9 @@ test('the single-file build runs from file://', async () => {
     // It draws the narrow passage as its geometry says (28 steps: samples, so only the obstacles and
     // the markers are certain).
     await expectView(page, browser, 'single-file.png', sceneProbes(await api(page, 'get_scene'), { free: 0 }));
+    // The homework's accessible copy, which lab.js fetches on the lab's site, is inline here.
+    await page.waitForSelector('.lab-access-homework select', { state: 'attached' });
+    assert.equal(await page.locator('.lab-access-homework option').count(), 13, 'P1 to P13');
     assert.deepEqual(requests.filter((u) => !u.startsWith('file:') && !u.startsWith('data:')), [], 'nothing fetched from anywhere');
     assert.deepEqual(requests.filter((u) => u.startsWith('file:')).map((u) => u.split('?')[0]), [url], 'only the page itself');
     // A link made here points at this file.

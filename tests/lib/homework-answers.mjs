@@ -17,3 +17,20 @@ export function minGrid(center, radius) {
     for (let i = 0; i < n; ++i) if (Math.hypot(i / (n - 1) - center[0], center[1]) <= radius) return n;
   return null;
 }
+
+/**
+ * P9: the share of the unit square in sight from (x1, y1), x1 < 1/2, past a wall at x = 1/2
+ * open for a height d in the middle: all of the left half, and of the right half what lies
+ * between the rays through the opening's ends, integrated here column by column (midpoints).
+ */
+export function visibility(x1, y1, d, columns = 200000) {
+  const lo = 0.5 - d / 2, hi = 0.5 + d / 2, run = 0.5 - x1;
+  const sLo = (lo - y1) / run, sHi = (hi - y1) / run;
+  let right = 0;
+  for (let i = 0; i < columns; ++i) {
+    const x = 0.5 + (i + 0.5) * 0.5 / columns;
+    const top = Math.min(1, hi + sHi * (x - 0.5)), bottom = Math.max(0, lo + sLo * (x - 0.5));
+    right += Math.max(0, top - bottom) * 0.5 / columns;
+  }
+  return 0.5 + right;
+}

@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <string>
 
+#include "app/shell/input_mode.hpp"
 #include "app/shell/instructor.hpp"
 #include "app/shell/fonts.hpp"
 #include "app/shell/js_api.hpp"
@@ -48,9 +49,13 @@ constexpr ImU32 kClosest = theme::kPurple;
 const ImU32& kGuide = theme::kFaint;
 constexpr ImU32 kMeetColour = theme::kVermillion;
 
-const char* const kS1Hint =
-    "Drag q₁ or q₂ round the circle (they snap onto equal and opposite directions; hold Shift not to snap), "
-    "or type radians in the panel.";
+// By touch there is no Shift to hold: that hint is for a keyboard.
+const char* s1_hint() {
+  return input::touch() ? "Drag q₁ or q₂ round the circle (they snap onto equal and opposite directions), "
+                          "or type radians in the panel."
+                        : "Drag q₁ or q₂ round the circle (they snap onto equal and opposite directions; hold "
+                          "Shift not to snap), or type radians in the panel.";
+}
 const char* const kSegmentHint = "Drag p₁, p₂, the centre q or the disk's rim, or type them in the panel.";
 
 
@@ -429,7 +434,7 @@ class DistancesLesson : public Lesson {
 
   void s1_view(LabContext& ctx, ImVec2 size) {
     WorkspaceView& v = circle_view_;
-    v.begin("##distances-circle", ImVec2(size.x, size.y - hint_height(kS1Hint, size.x)),
+    v.begin("##distances-circle", ImVec2(size.x, size.y - hint_height(s1_hint(), size.x)),
             Vec2(-kCircleHalf, -kCircleHalf), Vec2(kCircleHalf, kCircleHalf));
     ctx.views["circle"] = &v;
     v.draw_grid("cos q", "sin q");
@@ -484,7 +489,7 @@ class DistancesLesson : public Lesson {
     v.pop_clip();
     // The case, over the view's top left corner.
     caption(v, hidden ? std::string("d(q₁, q₂): ") + instructor::kHidden : "d(q₁, q₂) = " + num(a.distance) + " rad: " + case_line());
-    hint(kS1Hint);
+    hint(s1_hint());
   }
 
   // The result over the view's top left corner.

@@ -169,6 +169,9 @@ void App::open_problem(const HomeworkProblem& p, bool preset) {
     show_in_lesson(p.lesson, setup);
   }
   select_lesson(p.lesson);
+  // On a phone the problem's card (its exercise, the answer field) is on the Controls tab: a
+  // student who opened a problem to read its question saw only the tool, and nothing said where.
+  if (ctx_.compact) tab_ = Tab::Controls;
 }
 
 void App::show_in_lesson(const std::string& id, const json& setup) {

@@ -110,7 +110,10 @@ class App {
   };
   std::map<std::string, LessonExtras> extras_;
   HomeworkPanel homework_{[this](const HomeworkProblem& p, bool preset) { open_problem(p, preset); },
-                          [this](const std::string& lesson, const nlohmann::json& setup) { show_in_lesson(lesson, setup); }};
+                          [this](const std::string& lesson, const nlohmann::json& setup) {
+                            show_in_lesson(lesson, setup);
+                            if (ctx_.compact) tab_ = Tab::View;  // the numbers are in the tool: show it
+                          }};
   AssignmentPanel assignment_{
       [this](const std::string& lesson, const nlohmann::json& setup, bool preset, bool view) {
         return show_item(lesson, setup, preset, view);

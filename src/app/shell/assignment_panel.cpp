@@ -100,6 +100,7 @@ void AssignmentPanel::open(const json& args) {
   note_.clear();
   field_item_ = static_cast<std::size_t>(-1);
   want_confirm_ = false;
+  web::dismiss_welcome();  // the assignment's card is the way in now: "Just explore" would mislead
   changed();
 }
 

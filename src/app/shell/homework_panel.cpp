@@ -6,6 +6,7 @@
 
 #include "app/shell/bundled_scenes.hpp"
 #include "app/shell/card.hpp"
+#include "app/shell/input_mode.hpp"
 #include "app/shell/instructor.hpp"
 #include "app/shell/theme.hpp"
 #include "app/shell/ui.hpp"
@@ -98,12 +99,34 @@ json HomeworkPanel::check(const std::string& answer) {
   Score& s = scores_[exercise_->id];
   if (checked_->readable) ++s.tried;
   if (checked_->correct && solved_.insert({exercise_->id, exercise_->seed}).second) ++s.right;
-  // reveal=after-answer: only an exercise answered right before a wrong answer showed its
-  // solution ("the answer is ..."), so that reading it off a wrong try reveals nothing.
-  const std::pair<std::string, std::uint64_t> key{exercise_->id, exercise_->seed};
-  if (checked_->readable && !checked_->correct) shown_.insert(key);
-  if (checked_->correct && !shown_.count(key)) instructor::solved(exercise_->id);
+  // reveal=after-answer: only an exercise answered right before the student asked for its
+  // solution, so that reading the answer off the solution reveals nothing.
+  if (checked_->correct && !solution_shown()) instructor::solved(exercise_->id);
   return exercise_check_to_json(*checked_);
+}
+
+bool HomeworkPanel::solution_shown() const { return exercise_ && shown_.count({exercise_->id, exercise_->seed}); }
+
+json HomeworkPanel::show_solution() {
+  if (!exercise_ || !checked_) throw ApiError("try an answer first: the solution is shown after a try");
+  shown_.insert({exercise_->id, exercise_->seed});
+  return {{"explanation", checked_->explanation}, {"expected", checked_->expected}};
+}
+
+json HomeworkPanel::show_in_tool() {
+  if (!exercise_ || !checked_) throw ApiError("answer the exercise first: its numbers are shown once it was checked");
+  const json setup = exercise_tool_setup(*exercise_);
+  if (setup.is_null()) throw ApiError(exercise_->id + "'s numbers do not go into a tool");
+  show_(find_homework_problem(exercise_->id)->lesson, setup);
+  return setup;
+}
+
+json HomeworkPanel::show_in_3d() {
+  if (!exercise_ || !checked_) throw ApiError("answer the exercise first: its C-space is shown once it was checked");
+  const Space3d view = space_in_3d(*exercise_);
+  if (!view.scene) throw ApiError(exercise_->id + ": the 3-D lesson has no picture of this robot's C-space");
+  show_("cspace-3d", {{"scene", scene_to_json(bundled_scene(view.scene))}});
+  return {{"lesson", "cspace-3d"}};
 }
 
 json HomeworkPanel::state_json() const {
@@ -113,7 +136,12 @@ json HomeworkPanel::state_json() const {
            {"exercise", exercise_ ? exercise_to_json(*exercise_) : json(nullptr)},
            {"answer", std::string(answer_)},
            {"check", checked_ ? exercise_check_to_json(*checked_) : json(nullptr)},
+           {"solution_shown", solution_shown()},
            {"scores", scores},
+           // What the card offers once answered (the page's copy, lab-homework-access.js, too).
+           {"tool", checked_ && !exercise_tool_setup(*exercise_).is_null()},
+           {"see_3d", checked_ && space_in_3d(*exercise_).scene ? json(space_in_3d(*exercise_).label) : json(nullptr)},
+           {"error", error_},
            {"map_open", map_open_},
            {"welcome", web::page().welcome}};
   return out;
@@ -150,12 +178,18 @@ void HomeworkPanel::register_api(JsApi& api) {
             std::snprintf(answer_, sizeof answer_, "%s", text.c_str());
             return check(text);
           });
-  api.add("show_exercise", "put the current exercise's numbers into its lesson (after an answer was checked)", [this](const json&) {
-    if (!exercise_ || !checked_) throw ApiError("answer the exercise first: its numbers are shown once it was checked");
-    const json setup = exercise_tool_setup(*exercise_);
-    if (setup.is_null()) throw ApiError(exercise_->id + "'s numbers do not go into a tool");
-    show_(find_homework_problem(exercise_->id)->lesson, setup);
-    return setup;
+  api.add("show_exercise", "after an answer was checked: the exercise's numbers in its lesson; {in: '3d'}: its robot's C-space in the 3-D lesson",
+          [this](const json& args) {
+            const json& in = args.contains("in") ? args["in"] : json("tool");
+            if (in != "tool" && in != "3d") throw ApiError("in: 'tool' or '3d'");
+            return in == "3d" ? show_in_3d() : show_in_tool();
+          });
+  api.add("show_solution", "after a try: the exercise's answer and worked solution, as the card's Show the solution "
+          "(with reveal=after-answer, a right answer after it does not count) -> {explanation, expected}",
+          [this](const json&) { return show_solution(); });
+  api.add("close_problem", "close the problem's card, as its Close button (the lesson stays)", [this](const json&) {
+    problem_.clear();
+    return state_json();
   });
   api.add("homework_state", "the open problem, its exercise, the last check and the visit's scores",
           [this](const json&) { return state_json(); });
@@ -171,14 +205,32 @@ void HomeworkPanel::menu_button() {
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("the handout's problems P1 to P13: each opens its tool and an exercise");
   map_open_ = ImGui::BeginPopup("homework-map");
   if (!map_open_) return;
+  // On a phone the longest titles are wider than the screen: a row wraps within it (ImGui's
+  // Selectable does not wrap, so the text is drawn over it), and is a finger's height by touch.
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float wrap = ImGui::GetMainViewport()->WorkSize.x - 2 * (style.WindowPadding.x + style.DisplaySafeAreaPadding.x) - 8;
+  ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + wrap);
   ImGui::TextDisabled("The handout's problems: choose one to open its tool and an exercise");
+  ImGui::PopTextWrapPos();
   ImGui::Separator();
   for (const HomeworkProblem& p : homework_problems()) {
     const auto s = scores_.find(p.id);
     char label[256];
     std::snprintf(label, sizeof label, "%-4s %s%s", p.id.c_str(), p.title.c_str(),
                   s == scores_.end() ? "" : s->second.right > 0 ? "   \xE2\x9C\x93" : "   (tried)");
-    if (ImGui::Selectable(label, p.id == problem_)) {
+    const float width = std::min(ImGui::CalcTextSize(label).x, wrap);
+    const ImVec2 text = ImGui::CalcTextSize(label, nullptr, false, width);
+    const ImVec2 at = ImGui::GetCursorPos();
+    const bool chosen = ImGui::Selectable(("##" + p.id).c_str(), p.id == problem_, 0,
+                                          ImVec2(width, std::max(text.y, input::touch() ? ImGui::GetFrameHeight() : 0.0f)));
+    web::record_control(("problem-" + p.id).c_str());
+    const ImVec2 next = ImGui::GetCursorPos();
+    ImGui::SetCursorPos(ImVec2(at.x, at.y + std::max(0.0f, (ImGui::GetItemRectSize().y - text.y) * 0.5f)));
+    ImGui::PushTextWrapPos(at.x + width);
+    ImGui::TextUnformatted(label);
+    ImGui::PopTextWrapPos();
+    ImGui::SetCursorPos(next);
+    if (chosen) {
       try {
         open(p.id, std::nullopt);
         error_.clear();
@@ -188,7 +240,6 @@ void HomeworkPanel::menu_button() {
       }
       ImGui::CloseCurrentPopup();
     }
-    web::record_control(("problem-" + p.id).c_str());
   }
   ImGui::EndPopup();
 }
@@ -239,41 +290,43 @@ void HomeworkPanel::problem_body(const HomeworkProblem& problem) {
     focus_answer_ = true;  // correct it and press Enter again
   }
   if (checked_) {
+    // A wrong try is told what went wrong, not the answer: another try, or the solution on request.
+    const bool whole = checked_->correct || !checked_->readable || solution_shown();
+    const std::string& text = whole ? checked_->explanation : checked_->feedback;
+    const std::size_t cut = text.find('\n');
     ImGui::PushStyleColor(ImGuiCol_Text, checked_->correct ? theme::vec4(theme::kTextGood) : theme::vec4(theme::kTextBad));
-    ImGui::TextWrapped("%s", checked_->correct ? "Right." : "Not right yet.");
+    ImGui::TextWrapped("%s", text.substr(0, cut).c_str());
     ImGui::PopStyleColor();
-    card::paragraphs(checked_->explanation);
+    if (cut != std::string::npos) card::paragraphs(text.substr(cut + 1));
+    if (!whole) {
+      if (ui::small_button("Show the solution")) show_solution();
+      web::record_control("show-solution");
+    }
   }
   // Predict, then reveal: the exercise's numbers go into the tool once the student has answered.
-  if (checked_) {
-    const json setup = exercise_tool_setup(e);
-    if (!setup.is_null()) {
-      if (ui::small_button("Show these numbers in the tool")) {
-        try {
-          show_(find_homework_problem(e.id)->lesson, setup);
-          error_.clear();
-        } catch (const std::exception& x) {
-          error_ = std::string("The lesson did not take these numbers: ") + x.what();  // nothing changed
-        }
+  if (checked_ && !exercise_tool_setup(e).is_null()) {
+    if (ui::small_button("Show these numbers in the tool")) {
+      try {
+        show_in_tool();
+        error_.clear();
+      } catch (const std::exception& x) {
+        error_ = std::string("The lesson did not take these numbers: ") + x.what();  // nothing changed
       }
-      web::record_control("show-in-tool");
     }
+    web::record_control("show-in-tool");
   }
   // P1, P2 and P5 are answered in notation; once answered (the lesson's title would give the
   // answer away before), the C-space itself, when the 3-D lesson has this robot's space.
-  if (checked_) {
-    const Space3d view = space_in_3d(e);
-    if (view.scene) {
-      if (ui::small_button(view.label)) {
-        try {
-          show_("cspace-3d", {{"scene", scene_to_json(bundled_scene(view.scene))}});
-          error_.clear();
-        } catch (const std::exception& x) {
-          error_ = std::string("The 3-D lesson did not open: ") + x.what();  // an instructor's lock=lesson, say
-        }
+  if (checked_ && space_in_3d(e).scene) {
+    if (ui::small_button(space_in_3d(e).label)) {
+      try {
+        show_in_3d();
+        error_.clear();
+      } catch (const std::exception& x) {
+        error_ = std::string("The 3-D lesson did not open: ") + x.what();  // an instructor's lock=lesson, say
       }
-      web::record_control("see-in-3d");
     }
+    web::record_control("see-in-3d");
   }
   if (ui::small_button("New numbers")) set_exercise(e.id, fresh_seed());
   web::record_control("new-numbers");

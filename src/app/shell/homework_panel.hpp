@@ -27,7 +27,8 @@ class HomeworkPanel {
   HomeworkPanel(std::function<void(const HomeworkProblem&, bool preset)> open,
                 std::function<void(const std::string& lesson, const nlohmann::json&)> show);
 
-  /// homework, open_problem, exercise, check_answer, homework_state.
+  /// homework, open_problem, exercise, check_answer, show_solution, show_exercise, close_problem,
+  /// homework_state.
   void register_api(JsApi& api);
   /// The top bar's "Homework" button and its map.
   void menu_button();
@@ -46,13 +47,20 @@ class HomeworkPanel {
   void problem_body(const HomeworkProblem& problem);
   void set_exercise(const std::string& id, std::uint64_t seed);
   nlohmann::json check(const std::string& answer);
+  /// Whether the current exercise's solution was asked for (this visit); show_solution asks.
+  bool solution_shown() const;
+  nlohmann::json show_solution();
+  /// The answered exercise's numbers in its lesson, or its robot's C-space in the 3-D lesson.
+  /// Throw ApiError when there is nothing to show (or the lesson refuses it).
+  nlohmann::json show_in_tool();
+  nlohmann::json show_in_3d();
   nlohmann::json state_json() const;
   static std::uint64_t fresh_seed();
 
   std::function<void(const HomeworkProblem&, bool)> open_;
   std::function<void(const std::string&, const nlohmann::json&)> show_;
   std::set<std::pair<std::string, std::uint64_t>> solved_;  // (problem, seed) answered right
-  std::set<std::pair<std::string, std::uint64_t>> shown_;   // (problem, seed) whose solution a wrong answer showed
+  std::set<std::pair<std::string, std::uint64_t>> shown_;   // (problem, seed) whose solution the student asked for
   std::string problem_;  // the open problem's id, "" for none
   std::optional<Exercise> exercise_;
   std::optional<ExerciseCheck> checked_;
@@ -60,8 +68,8 @@ class HomeworkPanel {
   char answer_[256] = "";
   bool focus_answer_ = false;
   bool map_open_ = false;
-  bool want_map_ = false;
-  std::string error_;  // why the last problem or numbers could not be shown, "" if they were  // the welcome asked for the map
+  bool want_map_ = false;  // the welcome asked for the map
+  std::string error_;  // why the last problem or numbers could not be shown, "" if they were
   std::map<std::string, Score> scores_;
 };
 
