@@ -1,6 +1,7 @@
 // Lazy PRM (core/planning/lazy_prm.hpp): paths proven free by the exact check on random scenes in
 // every space, the same answer as PRM from the same samples with far fewer checks, replay to any
-// step, what it reports as never checked, and the same roadmap in every build (pinned hash).
+// step, what it reports as never checked, the same roadmap in every build (pinned hash), and its
+// searches (ShortestPaths: edges removed between searches, the answers of a fresh search).
 #include <doctest/doctest.h>
 #include <nlohmann/json.hpp>
 
@@ -258,4 +259,54 @@ TEST_CASE("Lazy PRM gives the same roadmap in every build (pinned hash)") {
   on_torus.run();
   require_proven_path(on_torus);
   CHECK(csl::roadmap_hash(on_torus.roadmap()) == 511576638298890320ull);
+}
+
+TEST_CASE("ShortestPaths: edges removed between searches give what a fresh shortest_path() gives") {
+  // Ties by vertex index: two paths of length 2 from 0 to 1, through 3 (listed first) and 2.
+  const std::vector<csl::GraphEdge> square = {{0, 3, 1.0}, {3, 1, 1.0}, {0, 2, 1.0}, {2, 1, 1.0}};
+  csl::ShortestPaths paths;
+  paths.build(4, square, [](int) { return true; });
+  std::vector<int> path, via;
+  paths.search(0, 1, [](int) { return 0.0; }, path, &via);
+  CHECK(path == std::vector<int>{0, 2, 1});
+  CHECK(via == std::vector<int>{2, 3});
+  paths.remove(3);
+  paths.search(0, 1, [](int) { return 0.0; }, path, &via);
+  CHECK(path == std::vector<int>{0, 3, 1});
+  paths.remove(0);
+  paths.search(0, 1, [](int) { return 0.0; }, path, &via);
+  CHECK(path.empty());
+  CHECK(via.empty());
+
+  // Random multigraphs with many equal lengths, searched again after each removal.
+  csl::Rng rng(24);
+  const auto pick = [&](std::size_t k) { return static_cast<int>(rng.below(static_cast<std::uint64_t>(k))); };
+  for (int trial = 0; trial < 300; ++trial) {
+    const int n = 2 + pick(40);
+    std::vector<csl::GraphEdge> edges(static_cast<std::size_t>(pick(static_cast<std::size_t>(4 * n))));
+    for (csl::GraphEdge& e : edges) {
+      e.a = pick(static_cast<std::size_t>(n));
+      e.b = pick(static_cast<std::size_t>(n));
+      e.length = pick(4);
+    }
+    std::vector<double> h(static_cast<std::size_t>(n));
+    for (double& x : h) x = pick(2);
+    std::vector<char> alive(edges.size(), 1);
+    const auto usable = [&](int i) { return alive[static_cast<std::size_t>(i)] != 0; };
+    const auto heuristic = [&](int v) { return h[static_cast<std::size_t>(v)]; };
+    paths.build(n, edges, usable);
+    for (int round = 0; round < 6; ++round) {
+      const int s = pick(static_cast<std::size_t>(n)), t = pick(static_cast<std::size_t>(n));
+      std::vector<int> fresh_via;
+      const std::vector<int> fresh = csl::shortest_path(n, edges, usable, s, t, heuristic, &fresh_via);
+      paths.search(s, t, heuristic, path, &via);
+      REQUIRE(path == fresh);
+      REQUIRE(via == fresh_via);
+      if (!via.empty()) {
+        const int e = via[static_cast<std::size_t>(pick(via.size()))];
+        alive[static_cast<std::size_t>(e)] = 0;
+        paths.remove(e);
+      }
+    }
+  }
 }

@@ -1,6 +1,9 @@
 #pragma once
 // Graph tools for roadmaps: union-find for connected components, and A* shortest paths.
+#include <algorithm>
 #include <functional>
+#include <limits>
+#include <utility>
 #include <vector>
 
 namespace csl {
@@ -32,9 +35,129 @@ struct GraphEdge {
 /// admissible heuristic h(v) (a lower bound on the distance from v to target; h = 0 gives
 /// Dijkstra). Returns the vertices of a shortest path, source first, or nothing; `via`, if
 /// given, receives the index of each edge taken. Ties are broken by vertex index, so the answer
-/// is deterministic.
+/// is deterministic. One search on a graph built for it: ShortestPaths (below) for many.
 std::vector<int> shortest_path(int vertices, const std::vector<GraphEdge>& edges,
                                const std::function<bool(int)>& usable, int source, int target,
                                const std::function<double(int)>& heuristic, std::vector<int>* via = nullptr);
+
+/// The same A* for a planner that searches one graph again and again, removing edges between
+/// searches (Lazy PRM): the adjacency (compressed rows, each vertex's edges in index order, as
+/// shortest_path() builds it) is built once, a removed edge keeps its slots with an infinite
+/// length (no relaxation through it can succeed, so every search returns what shortest_path()
+/// would over the edges left), and the per-vertex arrays are kept, only the entries the last
+/// search touched reset. The heuristic is a template: no std::function call per relaxation.
+class ShortestPaths {
+ public:
+  /// The graph: `vertices` vertices, edges[i] for the i with usable(i) true.
+  template <class Usable>
+  void build(int vertices, const std::vector<GraphEdge>& edges, Usable&& usable);
+  /// Forgets the graph (build() must come before the next search).
+  void clear();
+  bool built() const { return built_; }
+  int vertices() const { return static_cast<int>(dist_.size()); }
+  /// Edges given to build() (usable or not).
+  std::size_t edges() const { return slot_a_.size(); }
+  /// Takes edge i out of every later search.
+  void remove(int edge);
+  /// As shortest_path(): `path` receives the vertices (empty: none), `via` the edges.
+  template <class Heuristic>
+  void search(int source, int target, Heuristic&& heuristic, std::vector<int>& path, std::vector<int>* via = nullptr);
+
+ private:
+  struct Slot {
+    double weight;  // the edge's length; +infinity once removed
+    int vertex;     // the other end
+    int edge;
+  };
+  void add_slot_counts(int a, int b) {
+    ++start_[static_cast<std::size_t>(a) + 1];
+    ++start_[static_cast<std::size_t>(b) + 1];
+  }
+  void begin_slots();
+  void add_edge(int i, const GraphEdge& e);
+
+  bool built_ = false;
+  std::vector<int> start_, fill_;
+  std::vector<Slot> slots_;
+  std::vector<int> slot_a_, slot_b_;  // per edge: its two slots, -1 if not usable
+  std::vector<double> dist_;          // +infinity but where touched_ says
+  std::vector<int> previous_, previous_edge_;
+  std::vector<char> closed_;
+  std::vector<int> touched_;  // vertices whose dist_ the last search set
+  std::vector<std::pair<double, int>> open_;
+};
+
+template <class Usable>
+void ShortestPaths::build(int vertices, const std::vector<GraphEdge>& edges, Usable&& usable) {
+  const auto n = static_cast<std::size_t>(vertices);
+  start_.assign(n + 1, 0);
+  slot_a_.assign(edges.size(), -1);
+  slot_b_.assign(edges.size(), -1);
+  for (std::size_t i = 0; i < edges.size(); ++i)
+    if (usable(static_cast<int>(i))) add_slot_counts(edges[i].a, edges[i].b);
+  begin_slots();
+  for (std::size_t i = 0; i < edges.size(); ++i)
+    if (usable(static_cast<int>(i))) add_edge(static_cast<int>(i), edges[i]);
+  dist_.assign(n, std::numeric_limits<double>::infinity());
+  previous_.assign(n, -1);
+  previous_edge_.assign(n, -1);
+  closed_.assign(n, 0);
+  touched_.clear();
+  built_ = true;
+}
+
+template <class Heuristic>
+void ShortestPaths::search(int source, int target, Heuristic&& heuristic, std::vector<int>& path, std::vector<int>* via) {
+  const double inf = std::numeric_limits<double>::infinity();
+  for (int v : touched_) {
+    dist_[static_cast<std::size_t>(v)] = inf;
+    closed_[static_cast<std::size_t>(v)] = 0;
+  }
+  touched_.clear();
+  open_.clear();
+  // (f = g + h, vertex): smaller f, then smaller index, as shortest_path()'s priority queue.
+  using Item = std::pair<double, int>;
+  const std::greater<Item> later;
+  double* const dist = dist_.data();
+  char* const closed = closed_.data();
+  const int* const start = start_.data();
+  const Slot* const slots = slots_.data();
+  dist[static_cast<std::size_t>(source)] = 0.0;
+  previous_[static_cast<std::size_t>(source)] = -1;
+  touched_.push_back(source);
+  open_.push_back({heuristic(source), source});
+  while (!open_.empty()) {
+    std::pop_heap(open_.begin(), open_.end(), later);
+    const int v = open_.back().second;
+    open_.pop_back();
+    const auto uv = static_cast<std::size_t>(v);
+    if (closed[uv]) continue;
+    closed[uv] = 1;
+    if (v == target) break;
+    const double dv = dist[uv];
+    for (int j = start[uv], end = start[uv + 1]; j < end; ++j) {
+      const Slot& s = slots[j];
+      const auto w = static_cast<std::size_t>(s.vertex);
+      const double d = dv + s.weight;
+      if (d < dist[w]) {
+        if (dist[w] == inf) touched_.push_back(s.vertex);
+        dist[w] = d;
+        previous_[w] = v;
+        previous_edge_[w] = s.edge;
+        open_.push_back({d + heuristic(s.vertex), s.vertex});
+        std::push_heap(open_.begin(), open_.end(), later);
+      }
+    }
+  }
+  path.clear();
+  if (via) via->clear();
+  if (!closed[static_cast<std::size_t>(target)]) return;
+  for (int v = target; v != -1; v = previous_[static_cast<std::size_t>(v)]) {
+    path.push_back(v);
+    if (via && v != source) via->push_back(previous_edge_[static_cast<std::size_t>(v)]);
+  }
+  std::reverse(path.begin(), path.end());
+  if (via) std::reverse(via->begin(), via->end());
+}
 
 }  // namespace csl

@@ -48,7 +48,7 @@ void LazyPrm::reset() {
   next_pair_ = 0;
   candidate_.clear();
   candidate_edges_.clear();
-  graph_.clear();
+  paths_.clear();
   to_goal_.clear();
   next_check_ = 0;
   path_.clear();
@@ -233,20 +233,22 @@ void LazyPrm::add_pair() {
 
 void LazyPrm::search() {
   const auto& vertices = roadmap_.vertices;
-  // The graph and A*'s heuristic (the distance to q_final) once, at the first search: only
-  // edges' alive flags change between searches, and a search is most of Lazy PRM's time (on the
-  // arm's T^2 with 5000 samples, 11 searches took 63 of 75 ms when each rebuilt both).
-  if (graph_.size() != roadmap_.edges.size()) {
-    graph_.clear();
-    graph_.reserve(roadmap_.edges.size());
-    for (const RoadmapEdge& r : roadmap_.edges) graph_.push_back({r.a, r.b, r.length});
+  // The graph and A*'s heuristic (the distance to q_final) once, at the first search: between
+  // searches only edges are removed (check_next() takes them out of paths_), and a search is most
+  // of Lazy PRM's time (on the arm's T^2 with 5000 samples, 11 searches took 63 of 75 ms when each
+  // rebuilt both; shortest_path() rebuilding its adjacency per search was still up to a quarter).
+  if (!paths_.built() || paths_.edges() != roadmap_.edges.size() || paths_.vertices() != static_cast<int>(vertices.size())) {
+    std::vector<GraphEdge> graph;
+    graph.reserve(roadmap_.edges.size());
+    for (const RoadmapEdge& r : roadmap_.edges) graph.push_back({r.a, r.b, r.length});
+    paths_.build(static_cast<int>(vertices.size()), graph,
+                 [&](int i) { return roadmap_.edges[static_cast<std::size_t>(i)].alive; });
     to_goal_.resize(vertices.size());
     for (std::size_t v = 0; v < vertices.size(); ++v) to_goal_[v] = world_->space().distance(vertices[v], vertices[1]);
   }
-  candidate_edges_.clear();
-  candidate_ = shortest_path(
-      static_cast<int>(vertices.size()), graph_, [&](int i) { return roadmap_.edges[static_cast<std::size_t>(i)].alive; },
-      0, 1, [&](int v) { return to_goal_[static_cast<std::size_t>(v)]; }, &candidate_edges_);
+  const double* const to_goal = to_goal_.data();
+  paths_.search(
+      0, 1, [to_goal](int v) { return to_goal[static_cast<std::size_t>(v)]; }, candidate_, &candidate_edges_);
   PlannerEvent& e = event_;
   if (candidate_.empty()) {
     e.kind = PlannerEvent::Kind::NoPath;
@@ -316,6 +318,7 @@ void LazyPrm::check_next() {
     return;
   }
   r.alive = false;
+  paths_.remove(index);
   --edges_alive_;
   e.kind = PlannerEvent::Kind::PathEdgeRemoved;
   e.collision_t = *checker_.collision_t();

@@ -111,7 +111,7 @@ class LazyPrm final : public Planner {
   std::vector<Neighbor> pairs_;
   std::size_t next_pair_ = 0;
   std::vector<Neighbor> scratch_;
-  std::vector<GraphEdge> graph_;                   // the roadmap's edges for the searches
+  ShortestPaths paths_;                            // the searches' graph: edges removed as checked
   std::vector<double> to_goal_;                    // A*'s heuristic per vertex
   std::vector<int> candidate_, candidate_edges_;  // the last search's path and its edges
   std::size_t next_check_ = 0;                     // first edge of candidate_edges_ not known free
