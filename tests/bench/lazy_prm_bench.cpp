@@ -79,7 +79,7 @@ Result ours(const csl::CollisionWorld& world, const csl::Config& start, const cs
   r.solved = lazy.solved() ? 1 : 0;
   // Every configuration given to the checker (samples, the edge checks' points, clearances,
   // the endpoints): what OMPL's validity checker counts of its own.
-  r.checks = lazy.configurations_tested();
+  r.checks = static_cast<long>(lazy.configurations_tested());
   r.milestones = static_cast<long>(lazy.roadmap().vertices.size());
   return r;
 }
