@@ -56,17 +56,11 @@ void ShortestPaths::begin_slots() {
   const std::size_t n = start_.size() - 1;
   for (std::size_t v = 0; v < n; ++v) start_[v + 1] += start_[v];
   fill_.assign(start_.begin(), start_.end() - 1);
-  slots_.resize(static_cast<std::size_t>(start_[n]));
-}
-
-void ShortestPaths::add_edge(int i, const GraphEdge& e) {
-  const auto ui = static_cast<std::size_t>(i);
-  const int fa = fill_[static_cast<std::size_t>(e.a)]++;
-  const int fb = fill_[static_cast<std::size_t>(e.b)]++;
-  slots_[static_cast<std::size_t>(fa)] = {e.length, e.b, i};
-  slots_[static_cast<std::size_t>(fb)] = {e.length, e.a, i};
-  slot_a_[ui] = fa;
-  slot_b_[ui] = fb;
+  const auto slots = static_cast<std::size_t>(start_[n]);
+  if (slots > slots_capacity_) {
+    slots_.reset(new Slot[slots]);
+    slots_capacity_ = slots;
+  }
 }
 
 void ShortestPaths::remove(int edge) {
@@ -81,7 +75,8 @@ void ShortestPaths::clear() {
   built_ = false;
   start_.clear();
   fill_.clear();
-  slots_.clear();
+  slots_.reset();
+  slots_capacity_ = 0;
   slot_a_.clear();
   slot_b_.clear();
   dist_.clear();

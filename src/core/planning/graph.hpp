@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -48,9 +49,10 @@ std::vector<int> shortest_path(int vertices, const std::vector<GraphEdge>& edges
 /// search touched reset. The heuristic is a template: no std::function call per relaxation.
 class ShortestPaths {
  public:
-  /// The graph: `vertices` vertices, edges[i] for the i with usable(i) true.
-  template <class Usable>
-  void build(int vertices, const std::vector<GraphEdge>& edges, Usable&& usable);
+  /// The graph: `vertices` vertices, edges[i] for the i with usable(i) true. Edges: a vector of
+  /// GraphEdge, or of anything with the same fields a, b and length (RoadmapEdge).
+  template <class Edges, class Usable>
+  void build(int vertices, const Edges& edges, Usable&& usable);
   /// Forgets the graph (build() must come before the next search).
   void clear();
   bool built() const { return built_; }
@@ -69,16 +71,21 @@ class ShortestPaths {
     int vertex;     // the other end
     int edge;
   };
-  void add_slot_counts(int a, int b) {
-    ++start_[static_cast<std::size_t>(a) + 1];
-    ++start_[static_cast<std::size_t>(b) + 1];
-  }
   void begin_slots();
-  void add_edge(int i, const GraphEdge& e);
+  void add_edge(int i, int a, int b, double length) {
+    const auto ui = static_cast<std::size_t>(i);
+    const int fa = fill_[static_cast<std::size_t>(a)]++;
+    const int fb = fill_[static_cast<std::size_t>(b)]++;
+    slots_[static_cast<std::size_t>(fa)] = {length, b, i};
+    slots_[static_cast<std::size_t>(fb)] = {length, a, i};
+    slot_a_[ui] = fa;
+    slot_b_[ui] = fb;
+  }
 
   bool built_ = false;
   std::vector<int> start_, fill_;
-  std::vector<Slot> slots_;
+  std::unique_ptr<Slot[]> slots_;  // not a vector: filled by build(), never zeroed first
+  std::size_t slots_capacity_ = 0;
   std::vector<int> slot_a_, slot_b_;  // per edge: its two slots, -1 if not usable
   std::vector<double> dist_;          // +infinity but where touched_ says
   std::vector<int> previous_, previous_edge_;
@@ -87,17 +94,21 @@ class ShortestPaths {
   std::vector<std::pair<double, int>> open_;
 };
 
-template <class Usable>
-void ShortestPaths::build(int vertices, const std::vector<GraphEdge>& edges, Usable&& usable) {
+template <class Edges, class Usable>
+void ShortestPaths::build(int vertices, const Edges& edges, Usable&& usable) {
   const auto n = static_cast<std::size_t>(vertices);
+  const std::size_t m = edges.size();
   start_.assign(n + 1, 0);
-  slot_a_.assign(edges.size(), -1);
-  slot_b_.assign(edges.size(), -1);
-  for (std::size_t i = 0; i < edges.size(); ++i)
-    if (usable(static_cast<int>(i))) add_slot_counts(edges[i].a, edges[i].b);
+  slot_a_.assign(m, -1);
+  slot_b_.assign(m, -1);
+  for (std::size_t i = 0; i < m; ++i)
+    if (usable(static_cast<int>(i))) {
+      ++start_[static_cast<std::size_t>(edges[i].a) + 1];
+      ++start_[static_cast<std::size_t>(edges[i].b) + 1];
+    }
   begin_slots();
-  for (std::size_t i = 0; i < edges.size(); ++i)
-    if (usable(static_cast<int>(i))) add_edge(static_cast<int>(i), edges[i]);
+  for (std::size_t i = 0; i < m; ++i)
+    if (usable(static_cast<int>(i))) add_edge(static_cast<int>(i), edges[i].a, edges[i].b, edges[i].length);
   dist_.assign(n, std::numeric_limits<double>::infinity());
   previous_.assign(n, -1);
   previous_edge_.assign(n, -1);
@@ -121,7 +132,7 @@ void ShortestPaths::search(int source, int target, Heuristic&& heuristic, std::v
   double* const dist = dist_.data();
   char* const closed = closed_.data();
   const int* const start = start_.data();
-  const Slot* const slots = slots_.data();
+  const Slot* const slots = slots_.get();
   dist[static_cast<std::size_t>(source)] = 0.0;
   previous_[static_cast<std::size_t>(source)] = -1;
   touched_.push_back(source);

@@ -238,11 +238,9 @@ void LazyPrm::search() {
   // of Lazy PRM's time (on the arm's T^2 with 5000 samples, 11 searches took 63 of 75 ms when each
   // rebuilt both; shortest_path() rebuilding its adjacency per search was still up to a quarter).
   if (!paths_.built() || paths_.edges() != roadmap_.edges.size() || paths_.vertices() != static_cast<int>(vertices.size())) {
-    std::vector<GraphEdge> graph;
-    graph.reserve(roadmap_.edges.size());
-    for (const RoadmapEdge& r : roadmap_.edges) graph.push_back({r.a, r.b, r.length});
-    paths_.build(static_cast<int>(vertices.size()), graph,
-                 [&](int i) { return roadmap_.edges[static_cast<std::size_t>(i)].alive; });
+    const RoadmapEdge* const edges = roadmap_.edges.data();
+    paths_.build(static_cast<int>(vertices.size()), roadmap_.edges,
+                 [edges](int i) { return edges[static_cast<std::size_t>(i)].alive; });
     to_goal_.resize(vertices.size());
     for (std::size_t v = 0; v < vertices.size(); ++v) to_goal_[v] = world_->space().distance(vertices[v], vertices[1]);
   }
