@@ -85,6 +85,7 @@ void ShortestPaths::clear() {
   closed_.clear();
   touched_.clear();
   open_.clear();
+  place_.clear();
 }
 
 }  // namespace csl

@@ -46,7 +46,8 @@ std::vector<int> shortest_path(int vertices, const std::vector<GraphEdge>& edges
 /// shortest_path() builds it) is built once, a removed edge keeps its slots with an infinite
 /// length (no relaxation through it can succeed, so every search returns what shortest_path()
 /// would over the edges left), and the per-vertex arrays are kept, only the entries the last
-/// search touched reset. The heuristic is a template: no std::function call per relaxation.
+/// search touched reset. The heuristic is a template: no std::function call per relaxation, and
+/// the open vertices are an indexed 4-ary heap that lowers a vertex's f in place.
 class ShortestPaths {
  public:
   /// The graph: `vertices` vertices, edges[i] for the i with usable(i) true. Edges: a vector of
@@ -91,7 +92,57 @@ class ShortestPaths {
   std::vector<int> previous_, previous_edge_;
   std::vector<char> closed_;
   std::vector<int> touched_;  // vertices whose dist_ the last search set
-  std::vector<std::pair<double, int>> open_;
+  // The open vertices: a 4-ary heap of (f = g + h, vertex), smallest f first, then smallest
+  // index, each vertex at most once (place_: its index in open_, -1 if not there), its f lowered
+  // in place when a shorter way to it is found. It closes the vertices in the order of a queue
+  // that keeps a copy per improvement and skips closed ones (std::priority_queue, as this search
+  // had before): each time the open vertex with the smallest (f, vertex).
+  using Item = std::pair<double, int>;
+  std::vector<Item> open_;
+  std::vector<int> place_;
+  void sift_up(std::size_t i, Item x) {
+    while (i > 0) {
+      const std::size_t parent = (i - 1) / 4;
+      if (!(x < open_[parent])) break;
+      open_[i] = open_[parent];
+      place_[static_cast<std::size_t>(open_[i].second)] = static_cast<int>(i);
+      i = parent;
+    }
+    open_[i] = x;
+    place_[static_cast<std::size_t>(x.second)] = static_cast<int>(i);
+  }
+  void push_or_lower(Item x) {  // x.first is at most the vertex's f in open_, if it is there
+    int i = place_[static_cast<std::size_t>(x.second)];
+    if (i < 0) {
+      i = static_cast<int>(open_.size());
+      open_.push_back(x);
+    }
+    sift_up(static_cast<std::size_t>(i), x);
+  }
+  int pop() {
+    const int top = open_.front().second;
+    place_[static_cast<std::size_t>(top)] = -1;
+    const Item x = open_.back();
+    open_.pop_back();
+    const std::size_t n = open_.size();
+    if (n == 0) return top;
+    std::size_t i = 0;
+    for (;;) {
+      const std::size_t first = 4 * i + 1;
+      if (first >= n) break;
+      std::size_t best = first;
+      const std::size_t last = std::min(first + 4, n);
+      for (std::size_t c = first + 1; c < last; ++c)
+        if (open_[c] < open_[best]) best = c;
+      if (!(open_[best] < x)) break;
+      open_[i] = open_[best];
+      place_[static_cast<std::size_t>(open_[i].second)] = static_cast<int>(i);
+      i = best;
+    }
+    open_[i] = x;
+    place_[static_cast<std::size_t>(x.second)] = static_cast<int>(i);
+    return top;
+  }
 };
 
 template <class Edges, class Usable>
@@ -113,7 +164,9 @@ void ShortestPaths::build(int vertices, const Edges& edges, Usable&& usable) {
   previous_.assign(n, -1);
   previous_edge_.assign(n, -1);
   closed_.assign(n, 0);
+  place_.assign(n, -1);
   touched_.clear();
+  open_.clear();
   built_ = true;
 }
 
@@ -123,12 +176,10 @@ void ShortestPaths::search(int source, int target, Heuristic&& heuristic, std::v
   for (int v : touched_) {
     dist_[static_cast<std::size_t>(v)] = inf;
     closed_[static_cast<std::size_t>(v)] = 0;
+    place_[static_cast<std::size_t>(v)] = -1;
   }
   touched_.clear();
   open_.clear();
-  // (f = g + h, vertex): smaller f, then smaller index, as shortest_path()'s priority queue.
-  using Item = std::pair<double, int>;
-  const std::greater<Item> later;
   double* const dist = dist_.data();
   char* const closed = closed_.data();
   const int* const start = start_.data();
@@ -137,12 +188,10 @@ void ShortestPaths::search(int source, int target, Heuristic&& heuristic, std::v
   previous_[static_cast<std::size_t>(source)] = -1;
   touched_.push_back(source);
   open_.push_back({heuristic(source), source});
+  place_[static_cast<std::size_t>(source)] = 0;
   while (!open_.empty()) {
-    std::pop_heap(open_.begin(), open_.end(), later);
-    const int v = open_.back().second;
-    open_.pop_back();
+    const int v = pop();
     const auto uv = static_cast<std::size_t>(v);
-    if (closed[uv]) continue;
     closed[uv] = 1;
     if (v == target) break;
     const double dv = dist[uv];
@@ -155,8 +204,8 @@ void ShortestPaths::search(int source, int target, Heuristic&& heuristic, std::v
         dist[w] = d;
         previous_[w] = v;
         previous_edge_[w] = s.edge;
-        open_.push_back({d + heuristic(s.vertex), s.vertex});
-        std::push_heap(open_.begin(), open_.end(), later);
+        // A closed vertex is not queued again: shortest_path()'s queue would pop it and skip it.
+        if (!closed[w]) push_or_lower({d + heuristic(s.vertex), s.vertex});
       }
     }
   }
