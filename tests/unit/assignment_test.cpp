@@ -288,13 +288,14 @@ TEST_CASE("assignment: a task is checked from the lesson's state") {
   const ItemGrade too_many = task({{"solved", true}, {"params", {{"samples", 80}}}});
   CHECK(!too_many.correct);
   CHECK(too_many.attempted);
-  CHECK(too_many.explanation.find("/params/samples is 80 (wanted: /params/samples is at most 50)") != std::string::npos);
+  CHECK(too_many.explanation.find("the parameter samples is 80 (wanted: the parameter samples is at most 50)") != std::string::npos);
   const ItemGrade missing = task({{"params", {{"samples", 40}}}});
   CHECK(!missing.correct);
-  CHECK(missing.explanation.find("the state has no /solved") != std::string::npos);
+  CHECK(missing.explanation.find("no: solved is not in the state") != std::string::npos);
   CHECK(!task({{"solved", "true"}, {"params", {{"samples", 40}}}}).correct);  // a string is not true
   CHECK(!task({{"solved", true}, {"params", {{"samples", "40"}}}}).correct);  // nor a number
-  CHECK(done.expected == "/solved equals true and /params/samples is at most 50");
+  // In words for the student: the pointers' segments, "params" read as "the parameter".
+  CHECK(done.expected == "solved is true and the parameter samples is at most 50");
 }
 
 TEST_CASE("assignment: conditions: any, bounds inclusive, numbers by value, escaped pointers") {

@@ -79,11 +79,25 @@ void parse_into(const json& j, const std::string& where, int depth, std::vector<
     error("min " + significant(*out.min, 6) + " is more than max " + significant(*out.max, 6));
 }
 
-std::string where_text(const std::string& pointer) { return pointer.empty() ? "the state" : pointer; }
+// A pointer in words for the student who reads the check: "/params/samples" is "the parameter
+// samples", "/path_length" "path length", "" "the state" (its segments, so an instructor still
+// sees which field).
+std::string where_text(const std::string& pointer) {
+  if (pointer.empty()) return "the state";
+  std::vector<std::string> parts(1);
+  for (std::size_t i = 1; i < pointer.size(); ++i) {
+    if (pointer[i] == '/') parts.emplace_back();
+    else if (pointer[i] == '~' && i + 1 < pointer.size()) parts.back() += pointer[++i] == '1' ? '/' : '~';
+    else parts.back() += pointer[i] == '_' ? ' ' : pointer[i];
+  }
+  std::string out = parts.size() > 1 && parts[0] == "params" ? "the parameter" : "";
+  for (std::size_t i = out.empty() ? 0 : 1; i < parts.size(); ++i) out += (out.empty() ? "" : " ") + parts[i];
+  return out;
+}
 
 std::string compare_text(const StateCondition& c) {
   const std::string p = where_text(c.pointer);
-  if (c.equals) return p + " equals " + c.equals->dump();
+  if (c.equals) return p + " is " + c.equals->dump();
   if (c.min && c.max) return p + " is in [" + significant(*c.min, 6) + ", " + significant(*c.max, 6) + "]";
   if (c.min) return p + " is at least " + significant(*c.min, 6);
   return p + " is at most " + significant(*c.max, 6);
@@ -110,7 +124,7 @@ bool evaluate_into(const StateCondition& c, const json& state, std::vector<std::
   }
   const std::string wanted = compare_text(c);
   if (!v) {
-    lines.push_back("no: the state has no " + p + " (wanted: " + wanted + ")");
+    lines.push_back("no: " + p + " is not in the state (wanted: " + wanted + ")");
     return false;
   }
   bool met = false;

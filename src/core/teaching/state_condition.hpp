@@ -43,7 +43,9 @@ std::optional<StateCondition> parse_state_condition(const nlohmann::json& j, con
 
 /// The condition back as JSON (what parse_state_condition reads).
 nlohmann::json state_condition_to_json(const StateCondition& c);
-/// The condition in words: "/solved equals true and /params/samples is at most 50".
+/// The condition in words, as a student reads it: "solved is true and the parameter samples is
+/// at most 50" (from {"all": [{"pointer": "/solved", "equals": true}, {"pointer":
+/// "/params/samples", "max": 50}]}).
 std::string state_condition_text(const StateCondition& c);
 
 struct ConditionResult {
