@@ -157,11 +157,11 @@ class CSpaceLabAccess {
     }
   }
 
-  // The newest line wins; lines that come faster than one a second (Play) are skipped.
+  // Play: a line a second (the newest). A step: at once.
   announce(line) {
     this.pendingLine = line;
     if (this.announceTimer) return;
-    const wait = this.lastAnnounced + CSpaceLabAccess.ANNOUNCE_MS - performance.now();
+    const wait = this.seen.playing ? this.lastAnnounced + CSpaceLabAccess.ANNOUNCE_MS - performance.now() : 0;
     const say = () => {
       this.announceTimer = 0;
       this.lastAnnounced = performance.now();

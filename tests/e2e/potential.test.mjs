@@ -114,7 +114,7 @@ function checkTable(s, scene) {
   const t = s.forces_table;
   assert.equal(t.rows.length, hand.points.length);
   hand.points.forEach((p, i) => {
-    const name = `a${String.fromCharCode(0x2080 + i)}`;
+    const name = `a${String.fromCharCode(0x2081 + i)}`;  // a₁..a₄, as the handout and P13 count them
     const [label, rho, grad, Frep, Fatt, tau] = t.rows[i];
     const st = s.control_points[i];
     assert.equal(label, name);
@@ -154,7 +154,7 @@ function checkTable(s, scene) {
 
 // (5.5), (5.6) and J^T F with the numbers put in, for the row chosen.
 function checkEquations(t, hand, field) {
-  const k = t.chosen, p = hand.points[k], name = `a${String.fromCharCode(0x2080 + k)}`;
+  const k = t.chosen, p = hand.points[k], name = `a${String.fromCharCode(0x2081 + k)}`;
   const [head, ...rest] = t.equations;
   const h = head.match(/^(\S+) = (\(.*?\)): nearest obstacle (\d+), ρ = (\S+), ∇ρ = (\(.*?\)); ρ₀ = (\S+), η = (\S+)$/);
   assert.ok(h, head);
