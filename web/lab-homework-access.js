@@ -86,6 +86,9 @@
     let again = false;      // a check from here: its verdict is read even if the text is the same
     access.description.setAttribute('tabindex', '-1');
 
+    // Text set only when it changed: a rewrite would move a screen reader's place in it.
+    const put = (node, text) => { if (node.textContent !== text) node.textContent = text; };
+
     // Into the live region; `repeat`: an equal text is read again (emptied first, then set).
     function say(text, repeat) {
       if (text === said && !repeat) return;
@@ -105,7 +108,7 @@
       if (pick) {
         problems.forEach((p, i) => {
           const s = st.scores[p.id];
-          pick.options[i].textContent = `${p.id}: ${p.title}` + (!s ? '' : s.right ? ' (solved)' : ' (tried)');
+          put(pick.options[i], `${p.id}: ${p.title}` + (!s ? '' : s.right ? ' (solved)' : ' (tried)'));
         });
         if (st.problem && document.activeElement !== pick) pick.value = st.problem;
       }
@@ -113,12 +116,11 @@
       const e = st.exercise;
       // As the app: the card stands above its problem's lesson only.
       card.hidden = !p || !e || e.id !== p.id || p.lesson !== lesson;
-      if (card.hidden) {
-        shown = problem = null;
-      } else {
+      // Hidden (another lesson on screen), it keeps its exercise and what was typed for it.
+      if (!card.hidden) {
         const key = `${e.id}:${e.seed}`;
-        title.textContent = `${p.id}: ${p.title}`;
-        task.textContent = p.task;
+        put(title, `${p.id}: ${p.title}`);
+        put(task, p.task);
         if (key !== shown) {
           exercise.textContent = '';
           el('p', { text: `Exercise ${e.id}, numbers no. ${e.seed}` }, exercise);
@@ -131,15 +133,14 @@
           problem = p.id;
         }
         const c = st.check;
-        // As the card: the whole explanation once right, unreadable or asked for; else what went wrong.
-        const whole = c && (c.correct || c.feedback === c.explanation || st.solution_shown);
-        say([st.error, c ? (whole ? c.explanation : c.feedback) : ''].filter(Boolean).join(' '), again);
-        solution.hidden = !c || whole;
+        // As the card: what went wrong while the solution is offered, else the whole explanation.
+        say([st.error, c ? (st.solution_offered ? c.feedback : c.explanation) : ''].filter(Boolean).join(' '), again);
+        solution.hidden = !st.solution_offered;
         tool.hidden = !st.tool;
         in3d.hidden = !st.see_3d;
-        in3d.textContent = st.see_3d || '';
+        put(in3d, st.see_3d || '');
         const s = st.scores[e.id];
-        score.textContent = s ? `This visit: ${s.right} solved in ${s.tried} ${s.tried === 1 ? 'try' : 'tries'}.` : '';
+        put(score, s ? `This visit: ${s.right} solved in ${s.tried} ${s.tried === 1 ? 'try' : 'tries'}.` : '');
       }
       if (focusAfter && !focusAfter.closest('[hidden]')) focusAfter.focus();
       focusAfter = null;

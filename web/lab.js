@@ -274,7 +274,7 @@
     root.cspacelabAccess = new window.CSpaceLabAccess(root, canvas, api, { ui });
     // The homework card's copy, fetched after the first frame.
     need('CSpaceLabHomeworkAccess', 'lab-homework-access.js')
-      .then(() => window.CSpaceLabHomeworkAccess(root.cspacelabAccess), console.warn);
+      .then(() => window.CSpaceLabHomeworkAccess(root.cspacelabAccess)).catch(console.warn);
     // Printed, the lab is a worksheet: its picture, task and parameters, no controls.
     root.cspacelabPrint = new window.CSpaceLabPrint(root, canvas, api, shell);
     root.cspacelab = api;

@@ -76,7 +76,9 @@ test('homework by keyboard alone: P10 from the list, wrong and right, its number
   assert.equal(await tabTo(page, () => document.activeElement.tagName === 'INPUT', 2, 'the answer field'), 1);
   const { q1, q2 } = hw.exercise.given;
   const d = s1(q1, q2);
-  const wrong = Math.abs(Math.abs(q1 - q2) - d) > 0.05 ? Math.abs(q1 - q2) : d + 1;
+  // Off, and no typical mistake (whose reason the feedback would give): d + 0.5 unless that is
+  // near the longer way round, 2 pi - d.
+  const wrong = Math.abs(d + 0.5 - (2 * Math.PI - d)) > 0.1 ? d + 0.5 : d + 0.25;
   await typeAnswer(page, wrong.toFixed(3));
   await page.waitForFunction((g) => /^Not quite: you wrote /.test(document.querySelector(`${g} [aria-live]`).textContent), G);
   // What went wrong, not the answer: another try is still worth something.

@@ -296,6 +296,11 @@ TEST_CASE("assignment: a task is checked from the lesson's state") {
   CHECK(!task({{"solved", true}, {"params", {{"samples", "40"}}}}).correct);  // nor a number
   // In words for the student: the pointers' segments, "params" read as "the parameter".
   CHECK(done.expected == "solved is true and the parameter samples is at most 50");
+  // A pointer with an empty name has no words: it is shown as written.
+  std::vector<std::string> errors;
+  const auto odd = csl::parse_state_condition({{"pointer", "/params/"}, {"max", 1}}, "check", errors);
+  REQUIRE(odd);
+  CHECK(csl::state_condition_text(*odd) == "/params/ is at most 1");
 }
 
 TEST_CASE("assignment: conditions: any, bounds inclusive, numbers by value, escaped pointers") {

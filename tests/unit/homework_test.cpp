@@ -648,8 +648,10 @@ TEST_CASE("homework: parse_answer_number reads decimals, multiples and fractions
   near("2,90", 2.9);
   near("0,741", 0.741);
   near("-12,5", -12.5);
+  near("1/-2", -0.5);
+  near("pi/-4", -kPiHere / 4);
   for (const char* bad : {"", "abc", "1e999", "nan", "inf", "1/0", "pi/", "/2", "1//2", "0x1p3", "+1",
-                          "1 +", "1 - ", "- ", "1,2,3", "2.5,1", "6,127", "rad", "1 + abc"})
+                          "1 +", "1 - ", "- ", "1,2,3", "2.5,1", "6,127", "0 + 6,127", "6,127e0", "6,127 rad", "rad", "1 + abc"})
     CHECK_MESSAGE(!csl::parse_answer_number(bad).has_value(), "read '", bad, "'");
 }
 
@@ -1162,4 +1164,21 @@ TEST_CASE("homework: a wrong try's feedback tells what went wrong, not the answe
   }
   CHECK(numeric >= 150);
   CHECK(notation >= 100);
+  // A typical mistake is told its reason, and says so (the card counts its solution as shown).
+  const csl::Exercise p10 = csl::make_exercise("P10", 7);
+  REQUIRE_FALSE(p10.traps.empty());
+  const csl::ExerciseCheck mistake = csl::check_exercise(p10, typed(p10.traps.front().value));
+  CHECK_FALSE(mistake.correct);
+  CHECK(mistake.typical_mistake);
+  CHECK(mistake.feedback.find(p10.traps.front().why) != std::string::npos);
+  CHECK_FALSE(csl::check_exercise(p10, typed(p10.answer + 0.5 * (p10.answer < 1 ? 1 : -1))).typical_mistake);
+  // An empty or unreadable Q is no try: told what could not be read, never Q itself.
+  const csl::Exercise p3 = csl::make_exercise("P3", 2);
+  REQUIRE(p3.worked.rfind("Q = ", 0) == 0);  // the worked solution names Q first
+  for (const char* unreadable : {"", "asdf", "R^"}) {
+    const csl::ExerciseCheck u = csl::check_exercise(p3, unreadable);
+    CHECK_FALSE(u.readable);
+    CHECK_MESSAGE(u.explanation.find("Q = ") == std::string::npos, unreadable, ": ", u.explanation);
+    CHECK(u.explanation == u.feedback);
+  }
 }

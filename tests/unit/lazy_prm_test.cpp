@@ -5,8 +5,12 @@
 #include <doctest/doctest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
+#include <limits>
+#include <queue>
 #include <string>
 #include <vector>
 
@@ -261,6 +265,56 @@ TEST_CASE("Lazy PRM gives the same roadmap in every build (pinned hash)") {
   CHECK(csl::roadmap_hash(on_torus.roadmap()) == 511576638298890320ull);
 }
 
+// The A* that shortest_path() was before ShortestPaths, written again here as the reference
+// (shortest_path() is built on ShortestPaths now, so comparing the two alone would be circular):
+// each vertex's edges in index order, a std::priority_queue of (f, vertex) with a copy per
+// improvement, closed vertices skipped when popped.
+static std::vector<int> reference_path(int n, const std::vector<csl::GraphEdge>& edges, const std::vector<char>& alive,
+                                int source, int target, const std::vector<double>& h, std::vector<int>& via) {
+  std::vector<std::vector<std::pair<int, int>>> adjacent(static_cast<std::size_t>(n));  // (other end, edge)
+  for (std::size_t i = 0; i < edges.size(); ++i)
+    if (alive[i]) {
+      adjacent[static_cast<std::size_t>(edges[i].a)].push_back({edges[i].b, static_cast<int>(i)});
+      adjacent[static_cast<std::size_t>(edges[i].b)].push_back({edges[i].a, static_cast<int>(i)});
+    }
+  const auto un = static_cast<std::size_t>(n);
+  std::vector<double> dist(un, std::numeric_limits<double>::infinity());
+  std::vector<int> previous(un, -1), previous_edge(un, -1);
+  std::vector<char> closed(un, 0);
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> open;
+  dist[static_cast<std::size_t>(source)] = 0.0;
+  open.push({h[static_cast<std::size_t>(source)], source});
+  while (!open.empty()) {
+    const int v = open.top().second;
+    open.pop();
+    const auto uv = static_cast<std::size_t>(v);
+    if (closed[uv]) continue;
+    closed[uv] = 1;
+    if (v == target) break;
+    for (const auto& [w, e] : adjacent[uv]) {
+      const auto uw = static_cast<std::size_t>(w);
+      const double d = dist[uv] + edges[static_cast<std::size_t>(e)].length;
+      if (d < dist[uw]) {
+        dist[uw] = d;
+        previous[uw] = v;
+        previous_edge[uw] = e;
+        open.push({d + h[uw], w});
+      }
+    }
+  }
+  std::vector<int> path;
+  via.clear();
+  if (!closed[static_cast<std::size_t>(target)]) return path;
+  for (int v = target; v != -1; v = previous[static_cast<std::size_t>(v)]) {
+    path.push_back(v);
+    if (v != source) via.push_back(previous_edge[static_cast<std::size_t>(v)]);
+  }
+  std::reverse(path.begin(), path.end());
+  std::reverse(via.begin(), via.end());
+  return path;
+}
+
 TEST_CASE("ShortestPaths: edges removed between searches give what a fresh shortest_path() gives") {
   // Ties by vertex index: two paths of length 2 from 0 to 1, through 3 (listed first) and 2.
   const std::vector<csl::GraphEdge> square = {{0, 3, 1.0}, {3, 1, 1.0}, {0, 2, 1.0}, {2, 1, 1.0}};
@@ -302,6 +356,9 @@ TEST_CASE("ShortestPaths: edges removed between searches give what a fresh short
       paths.search(s, t, heuristic, path, &via);
       REQUIRE(path == fresh);
       REQUIRE(via == fresh_via);
+      std::vector<int> reference_via;
+      REQUIRE(path == reference_path(n, edges, alive, s, t, h, reference_via));
+      REQUIRE(via == reference_via);
       if (!via.empty()) {
         const int e = via[static_cast<std::size_t>(pick(via.size()))];
         alive[static_cast<std::size_t>(e)] = 0;

@@ -101,14 +101,20 @@ json HomeworkPanel::check(const std::string& answer) {
   if (checked_->correct && solved_.insert({exercise_->id, exercise_->seed}).second) ++s.right;
   // reveal=after-answer: only an exercise answered right before the student asked for its
   // solution, so that reading the answer off the solution reveals nothing.
+  // A typical mistake's reason can all but give the answer ("the sign is wrong"): as shown.
+  if (checked_->typical_mistake) shown_.insert({exercise_->id, exercise_->seed});
   if (checked_->correct && !solution_shown()) instructor::solved(exercise_->id);
   return exercise_check_to_json(*checked_);
 }
 
 bool HomeworkPanel::solution_shown() const { return exercise_ && shown_.count({exercise_->id, exercise_->seed}); }
 
+bool HomeworkPanel::solution_offered() const {
+  return checked_ && checked_->readable && !checked_->correct && !solution_shown();
+}
+
 json HomeworkPanel::show_solution() {
-  if (!exercise_ || !checked_) throw ApiError("try an answer first: the solution is shown after a try");
+  if (!exercise_ || !checked_ || !checked_->readable) throw ApiError("try an answer first: the solution is shown after a try");
   shown_.insert({exercise_->id, exercise_->seed});
   return {{"explanation", checked_->explanation}, {"expected", checked_->expected}};
 }
@@ -137,6 +143,8 @@ json HomeworkPanel::state_json() const {
            {"answer", std::string(answer_)},
            {"check", checked_ ? exercise_check_to_json(*checked_) : json(nullptr)},
            {"solution_shown", solution_shown()},
+           // The card shows the check's feedback and a Show the solution button, else its explanation.
+           {"solution_offered", solution_offered()},
            {"scores", scores},
            // What the card offers once answered (the page's copy, lab-homework-access.js, too).
            {"tool", checked_ && !exercise_tool_setup(*exercise_).is_null()},
@@ -169,7 +177,7 @@ void HomeworkPanel::register_api(JsApi& api) {
             problem_ = p.id;  // the card shows it when its lesson is on screen
             return exercise_to_json(*exercise_);
           });
-  api.add("check_answer", "check an answer to the current exercise: {answer} -> {correct, expected, explanation}",
+  api.add("check_answer", "check an answer to the current exercise: {answer} -> {correct, expected, explanation, feedback}",
           [this](const json& args) {
             const json& a = args.contains("answer") ? args["answer"] : json();
             if (!(a.is_string() || a.is_number()) || (a.is_string() && a.get<std::string>().size() > 200))
@@ -291,7 +299,7 @@ void HomeworkPanel::problem_body(const HomeworkProblem& problem) {
   }
   if (checked_) {
     // A wrong try is told what went wrong, not the answer: another try, or the solution on request.
-    const bool whole = checked_->correct || !checked_->readable || solution_shown();
+    const bool whole = !solution_offered();
     const std::string& text = whole ? checked_->explanation : checked_->feedback;
     const std::size_t cut = text.find('\n');
     ImGui::PushStyleColor(ImGuiCol_Text, checked_->correct ? theme::vec4(theme::kTextGood) : theme::vec4(theme::kTextBad));

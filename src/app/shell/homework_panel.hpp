@@ -49,6 +49,8 @@ class HomeworkPanel {
   nlohmann::json check(const std::string& answer);
   /// Whether the current exercise's solution was asked for (this visit); show_solution asks.
   bool solution_shown() const;
+  /// After a readable wrong try whose solution was not shown: the card offers it.
+  bool solution_offered() const;
   nlohmann::json show_solution();
   /// The answered exercise's numbers in its lesson, or its robot's C-space in the 3-D lesson.
   /// Throw ApiError when there is nothing to show (or the lesson refuses it).

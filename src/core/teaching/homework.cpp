@@ -121,13 +121,14 @@ std::optional<double> parse_answer_number(const std::string& text) {
   // which may be a thousands separator as well (the check's message says how to write it).
   if (const std::size_t comma = t.find(','); comma != std::string::npos && t.find(',', comma + 1) == std::string::npos &&
                                               t.find('.') == std::string::npos) {
-    // Ambiguous: 1 to 3 digits (not a leading 0), the comma, 3 digits ("6,127").
-    const std::string body = t.substr(t[0] == '-' ? 1 : 0);
-    const std::size_t at = body.find(',');
-    const bool digits = std::all_of(body.begin(), body.end(), [](char ch) {
-      return ch == ',' || std::isdigit(static_cast<unsigned char>(ch));
-    });
-    if (digits && at >= 1 && at <= 3 && body.size() == at + 4 && body[0] != '0') return std::nullopt;
+    // Ambiguous: 1 to 3 digits (not a leading 0), the comma, 3 digits ("6,127", "0 + 6,127e0").
+    const auto digit = [&](std::size_t i) { return i < t.size() && std::isdigit(static_cast<unsigned char>(t[i])); };
+    std::size_t lead = comma, tail = comma + 1;
+    while (lead > 0 && digit(lead - 1)) --lead;
+    while (digit(tail)) ++tail;
+    const std::size_t before = comma - lead, after = tail - comma - 1;
+    if (before >= 1 && before <= 3 && t[lead] != '0' && after == 3)
+      return std::nullopt;
     t[comma] = '.';
   }
   if (t.empty()) return std::nullopt;
@@ -155,7 +156,7 @@ std::optional<double> parse_answer_number(const std::string& text) {
       if (t[i] != '+' && t[i] != '-') continue;
       std::size_t k = i;
       while (k > from && t[k - 1] == ' ') --k;
-      if (k == from) continue;  // a sign
+      if (k == from || t[k - 1] == '/' || t[k - 1] == '*') continue;  // a sign ("-1", "1/-2")
       if ((t[k - 1] == 'e' || t[k - 1] == 'E') && k >= 2 && std::isdigit(static_cast<unsigned char>(t[k - 2])) && k == i)
         continue;  // 1e-3
     }
@@ -199,7 +200,8 @@ ExerciseCheck check_exercise(const Exercise& e, const std::string& answer) {
     const std::string rest = a.explanation.substr(first.size());
     if (a.correct && first.rfind("correct: ", 0) == 0) first = "Right: " + first.substr(9);
     else if (!a.correct && c.readable) first = "Not quite: " + first;
-    c.explanation = first + rest + (e.worked.empty() ? "" : "\n" + e.worked);
+    // An answer the checker could not read is no try: it is told what was unreadable, not Q.
+    c.explanation = c.readable ? first + rest + (e.worked.empty() ? "" : "\n" + e.worked) : first;
     c.feedback = first;
     // The checker's reasons name the factors it expected ("expected R^3"): a wrong try is told
     // only how far off its dimension is.
@@ -257,6 +259,7 @@ ExerciseCheck check_exercise(const Exercise& e, const std::string& answer) {
   c.explanation = "Not quite: you wrote " + number_text(*v) + ", the answer is " + exercise_answer_text(e) + "." +
                   (why.empty() ? "" : " " + why) + "\n" + e.worked;
   c.feedback = "Not quite: you wrote " + number_text(*v) + "." + (why.empty() ? "" : " " + why);
+  c.typical_mistake = !why.empty();
   return c;
 }
 

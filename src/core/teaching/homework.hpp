@@ -11,7 +11,9 @@
 //
 // Answers a student types:
 //   number    a decimal number; also a multiple or fraction of pi ("pi/2", "3pi/4", "0.5*pi",
-//             "2 pi") and a fraction of two numbers ("1/3")
+//             "2 pi"), a fraction of two numbers ("1/3"), a sum or difference of those ("2pi -
+//             3.38"), with "rad" after it, or a decimal comma ("2,90"; not "6,127", which may
+//             be a thousands separator)
 //   integer   digits (a decimal that is a whole number is read as one)
 //   notation  Q in the course's notation, as check_answer() in notation.hpp reads it
 #include <nlohmann/json.hpp>
@@ -87,6 +89,9 @@ struct ExerciseCheck {
   /// reason); for a right or unreadable one the explanation's first line. The lab's card shows
   /// this, and the explanation once the student asks for the solution or answers right.
   std::string feedback;
+  /// The wrong answer was one of the exercise's typical mistakes, whose reason the feedback gives:
+  /// some all but give the answer ("the sign is wrong"), so it counts as the solution shown.
+  bool typical_mistake = false;
 };
 
 /// Checks what a student typed. Never throws for the answer: an unreadable one is incorrect,

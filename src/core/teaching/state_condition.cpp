@@ -90,6 +90,8 @@ std::string where_text(const std::string& pointer) {
     else if (pointer[i] == '~' && i + 1 < pointer.size()) parts.back() += pointer[++i] == '1' ? '/' : '~';
     else parts.back() += pointer[i] == '_' ? ' ' : pointer[i];
   }
+  for (const std::string& part : parts)
+    if (part.empty()) return pointer;  // "/", "/params/": no words for an empty name
   std::string out = parts.size() > 1 && parts[0] == "params" ? "the parameter" : "";
   for (std::size_t i = out.empty() ? 0 : 1; i < parts.size(); ++i) out += (out.empty() ? "" : " ") + parts[i];
   return out;
