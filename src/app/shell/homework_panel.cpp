@@ -226,11 +226,13 @@ void HomeworkPanel::menu_button() {
     char label[256];
     std::snprintf(label, sizeof label, "%-4s %s%s", p.id.c_str(), p.title.c_str(),
                   s == scores_.end() ? "" : s->second.right > 0 ? "   \xE2\x9C\x93" : "   (tried)");
-    const float width = std::min(ImGui::CalcTextSize(label).x, wrap);
+    // A row that fits spans the map's width (0), as a Selectable does; one that does not, the screen's.
+    const bool fits = ImGui::CalcTextSize(label).x <= wrap;
+    const float width = fits ? ImGui::CalcTextSize(label).x : wrap;
     const ImVec2 text = ImGui::CalcTextSize(label, nullptr, false, width);
     const ImVec2 at = ImGui::GetCursorPos();
     const bool chosen = ImGui::Selectable(("##" + p.id).c_str(), p.id == problem_, 0,
-                                          ImVec2(width, std::max(text.y, input::touch() ? ImGui::GetFrameHeight() : 0.0f)));
+                                          ImVec2(fits ? 0.0f : width, std::max(text.y, input::touch() ? ImGui::GetFrameHeight() : 0.0f)));
     web::record_control(("problem-" + p.id).c_str());
     const ImVec2 next = ImGui::GetCursorPos();
     ImGui::SetCursorPos(ImVec2(at.x, at.y + std::max(0.0f, (ImGui::GetItemRectSize().y - text.y) * 0.5f)));
