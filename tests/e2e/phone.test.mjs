@@ -52,6 +52,40 @@ async function phone(browser, url, viewport, open) {
 
 const view = (layout, name) => layout.views.find((v) => v.name === name);
 
+test('Phone upright: the Homework map fits the screen; a problem shows its question, its numbers the tool',
+  () => withBrowser(async ({ browser, url }) => {
+  const { page, errors, press, layout } = await phone(browser, url, PORTRAIT, '?lesson=step-prm');
+  await press('homework');
+  // Every row of the map within the screen's width (P1's was 404 px on 390), a finger high.
+  const rows = await page.evaluate(() => {
+    const b = window.cspacelab.pageState().buttons;
+    return Object.keys(b).filter((k) => k.startsWith('problem-')).map((k) => [k, b[k][2], b[k][3] - b[k][1]]);
+  });
+  assert.equal(rows.length, 13);
+  for (const [name, right, height] of rows) {
+    assert.ok(right <= PORTRAIT.width, `${name} ends at ${right} px of ${PORTRAIT.width}`);
+    assert.ok(height >= 24, `${name} is ${height} px high`);
+  }
+  await screenshot(page, 'phone-homework-map.png');
+  await press('problem-P10');
+  assert.equal((await api(page, 'status')).lesson, 'distances');
+  // The question is on the Controls tab: that is where the problem opens.
+  assert.equal((await layout()).tab, 'controls');
+  const answer = await page.evaluate(() => window.cspacelab.pageState().buttons.answer);
+  assert.ok(answer, 'the answer field is on screen');
+  await screenshot(page, 'phone-homework-P10.png');
+  const { q1, q2 } = (await api(page, 'homework_state')).exercise.given;
+  let d = Infinity;
+  for (let k = -2; k <= 2; ++k) d = Math.min(d, Math.abs(q2 - q1 + 2 * Math.PI * k));
+  assert.equal((await api(page, 'check_answer', { answer: d.toFixed(3) })).correct, true);
+  await waitFrames(page, 3);
+  // Its numbers go into the tool, and the tool is what the phone then shows.
+  await press('show-in-tool');
+  assert.equal((await layout()).tab, 'view');
+  assert.equal((await api(page, 'state')).q1, q1);
+  assert.deepEqual(errors, []);
+}));
+
 test('Phone upright: every lesson\'s main view takes the width', () => withBrowser(async ({ browser, url }) => {
   const { page, errors, press, layout, control } = await phone(browser, url, PORTRAIT, '?lesson=step-prm');
   let l = await layout();
