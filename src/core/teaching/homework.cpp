@@ -191,9 +191,10 @@ ExerciseCheck check_exercise(const Exercise& e, const std::string& answer) {
   if (e.answer_format == "notation") {
     const RobotDescription robot = parse_robot_description(e.robot);
     const AnswerCheck a = check_answer(answer.substr(0, kMaxNotationText), robot);
+    const ConfigSpaceInfo info = configuration_space(robot);
     c.correct = a.correct;
-    c.readable = a.correct || a.explanation.rfind("could not read", 0) != 0;
-    c.expected = configuration_space(robot).notation;
+    c.readable = a.readable;
+    c.expected = info.notation;
     // Its first line says what is right or wrong (Q itself only in the lines below it), led by a
     // verdict as a number's is: a reader without the card's colours hears which it is.
     std::string first = a.explanation.substr(0, a.explanation.find('\n'));
@@ -202,25 +203,15 @@ ExerciseCheck check_exercise(const Exercise& e, const std::string& answer) {
     else if (!a.correct && c.readable) first = "Not quite: " + first;
     // An answer the checker could not read is no try: it is told what was unreadable, not Q.
     c.explanation = c.readable ? first + rest + (e.worked.empty() ? "" : "\n" + e.worked) : first;
-    c.feedback = first;
     // The checker's reasons name the factors it expected ("expected R^3"): a wrong try is told
-    // only how far off its dimension is.
-    if (!a.correct && c.readable) {
-      const SpaceSignature want = signature_of(robot);
-      int got = -1;
-      try {
-        got = parse_space_expression(answer.substr(0, kMaxNotationText)).dimension();
-      } catch (const std::exception&) {
-        // read by the checker, not by the parser: say no more than "not quite"
-      }
-      const std::string n = std::to_string(want.dimension());
-      c.feedback = got < 0 ? "Not quite."
-                   : got != want.dimension()
-                       ? "Not quite: this robot's Q has dimension " + n + ", yours " + std::to_string(got) +
-                             ": count the numbers that fix a configuration."
-                       : "Not quite: the dimension, " + n + ", is right, the kinds of factor are not: which joints "
-                         "turn (S^1), which slide (R), and how the base moves.";
-    }
+    // only how its dimension compares.
+    const std::string n = std::to_string(info.dimension);
+    c.feedback = a.correct || !c.readable ? first
+                 : a.dimension != info.dimension
+                     ? "Not quite: this robot's Q has dimension " + n + ", yours " + std::to_string(a.dimension) +
+                           ": count the numbers that fix a configuration."
+                     : "Not quite: the dimension, " + n + ", is right, the kinds of factor are not: which joints "
+                       "turn (S^1), which slide (R), and how the base moves.";
     return c;
   }
   const bool integer = e.answer_format == "integer";

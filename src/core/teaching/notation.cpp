@@ -648,10 +648,10 @@ AnswerCheck check_answer(const std::string& student, const RobotDescription& rob
   try {
     got = parse_space_expression(student);
   } catch (const NotationError& e) {
-    return {false, std::string("could not read the answer: ") + e.what()};
+    return {false, std::string("could not read the answer: ") + e.what(), false};
   }
   const SpaceSignature want = signature_of(robot);
-  if (got != want) return {false, explain_difference(got, want, parts_of(robot))};
+  if (got != want) return {false, explain_difference(got, want, parts_of(robot)), true, got.dimension()};
 
   // Confirm with an equality the student can learn from: their spelling = ours, or, when they
   // wrote ours, ours = its expanded form.
@@ -660,8 +660,10 @@ AnswerCheck check_answer(const std::string& student, const RobotDescription& rob
   std::string other = written;
   if (squeezed(to_ascii(written)) == squeezed(info.notation))
     other = info.equivalent.empty() ? "" : info.equivalent.front();
-  return {true, "correct: " + info.notation + (other.empty() ? "" : " = " + other) +
-                    " (dimension " + std::to_string(info.dimension) + ")"};
+  return {true,
+          "correct: " + info.notation + (other.empty() ? "" : " = " + other) + " (dimension " +
+              std::to_string(info.dimension) + ")",
+          true, got.dimension()};
 }
 
 }  // namespace csl

@@ -93,6 +93,8 @@ SpaceSignature signature_of(const RobotDescription& robot);
 struct AnswerCheck {
   bool correct = false;
   std::string explanation;  ///< what is wrong in plain words, or which equality makes it right
+  bool readable = true;     ///< false: the answer could not be read as a space
+  int dimension = -1;       ///< the dimension of the space the student wrote; -1 if unreadable
 };
 
 /// Checks a student's written Q for the robot. Never throws for the answer: an unreadable one
