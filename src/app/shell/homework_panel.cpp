@@ -136,6 +136,7 @@ json HomeworkPanel::show_in_3d() {
 }
 
 json HomeworkPanel::state_json() const {
+  const Space3d view = exercise_ ? space_in_3d(*exercise_) : Space3d{};
   json scores = json::object();
   for (const auto& [id, s] : scores_) scores[id] = {{"tried", s.tried}, {"right", s.right}};
   json out{{"problem", problem_.empty() ? json(nullptr) : json(problem_)},
@@ -148,7 +149,7 @@ json HomeworkPanel::state_json() const {
            {"scores", scores},
            // What the card offers once answered (the page's copy, lab-homework-access.js, too).
            {"tool", checked_ && !exercise_tool_setup(*exercise_).is_null()},
-           {"see_3d", checked_ && space_in_3d(*exercise_).scene ? json(space_in_3d(*exercise_).label) : json(nullptr)},
+           {"see_3d", checked_ && view.scene ? json(view.label) : json(nullptr)},
            {"error", error_},
            {"map_open", map_open_},
            {"welcome", web::page().welcome}};
@@ -227,8 +228,9 @@ void HomeworkPanel::menu_button() {
     std::snprintf(label, sizeof label, "%-4s %s%s", p.id.c_str(), p.title.c_str(),
                   s == scores_.end() ? "" : s->second.right > 0 ? "   \xE2\x9C\x93" : "   (tried)");
     // A row that fits spans the map's width (0), as a Selectable does; one that does not, the screen's.
-    const bool fits = ImGui::CalcTextSize(label).x <= wrap;
-    const float width = fits ? ImGui::CalcTextSize(label).x : wrap;
+    const float natural = ImGui::CalcTextSize(label).x;
+    const bool fits = natural <= wrap;
+    const float width = fits ? natural : wrap;
     const ImVec2 text = ImGui::CalcTextSize(label, nullptr, false, width);
     const ImVec2 at = ImGui::GetCursorPos();
     const bool chosen = ImGui::Selectable(("##" + p.id).c_str(), p.id == problem_, 0,
@@ -327,8 +329,8 @@ void HomeworkPanel::problem_body(const HomeworkProblem& problem) {
   }
   // P1, P2 and P5 are answered in notation; once answered (the lesson's title would give the
   // answer away before), the C-space itself, when the 3-D lesson has this robot's space.
-  if (checked_ && space_in_3d(e).scene) {
-    if (ui::small_button(space_in_3d(e).label)) {
+  if (const Space3d view = space_in_3d(e); checked_ && view.scene) {
+    if (ui::small_button(view.label)) {
       try {
         show_in_3d();
         error_.clear();
