@@ -98,7 +98,11 @@
       const cur = st.items[st.current];
       const kind = st.submitted ? '' : cur.kind;
       prompt.textContent = st.submitted ? '' : `${st.current + 1}. ${cur.title}: ${cur.prompt}` +
-        (cur.format_hint ? ` Answer: ${cur.format_hint}.` : '') + (cur.check_text ? ` What counts: ${cur.check_text}.` : '');
+        (cur.format_hint ? ` Answer: ${cur.format_hint}.` : '') + (cur.check_text ? ` What counts: ${cur.check_text}.` : '') +
+        ` ${cur.tries_text}`;
+      // Tries used up: the answer is final (core refuses another check; this says so first).
+      input.readOnly = cur.tries_left === 0;
+      for (const b of [check, lab]) b.setAttribute('aria-disabled', String(input.readOnly));
       row.hidden = check.hidden = kind !== 'exercise';
       // The field keeps what the student types until they move to another item.
       if (kind === 'exercise' && shownItem !== st.current) input.value = cur.answer || '';
@@ -115,7 +119,7 @@
       for (const it of st.submitted ? st.items : []) {
         const answer = it.kind === 'exercise' ? ` Your answer: ${it.answer === null ? '(none)' : it.answer}. ` +
           `The right answer: ${it.expected_text}.` : '';
-        el('li', { text: `${it.title}: ${it.score} of ${it.max} (${WORDS[it.status]}).${answer} ${it.explanation || ''}` }, review);
+        el('li', { text: `${it.title}: ${it.score} of ${it.max} (${WORDS[it.status]}).${answer} ${it.tries_text} ${it.explanation || ''}` }, review);
       }
     }
 

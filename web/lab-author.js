@@ -57,6 +57,7 @@
     const plain = (v) => v && typeof v === 'object' && !Array.isArray(v);
     out.items = d.items.filter((it) => plain(it) && ['exercise', 'explore', 'task'].includes(it.kind)).map((it) => {
       const item = { kind: it.kind, title: text(it.title), points: text(it.points, it.kind === 'explore' ? '0' : '1') };
+      if (it.kind !== 'explore') item.tries = text(it.tries);
       if (it.kind === 'exercise') {
         Object.assign(item, { problem: text(it.problem, 'P1'), seedMode: it.seedMode === 'fixed' ? 'fixed' : 'learner',
                               seed: text(it.seed), tolerance: text(it.tolerance) });
@@ -145,6 +146,8 @@
         }
         if (numberOf(it.points) !== undefined) o.points = numberOf(it.points);
         if (it.kind === 'exercise' && numberOf(it.tolerance) !== undefined) o.tolerance = numberOf(it.tolerance);
+        // Empty: any number of tries; anything else goes to core, which says what "tries" takes.
+        if (it.kind !== 'explore' && numberOf(it.tries) !== undefined) o.tries = numberOf(it.tries);
         if (it.kind === 'task') {
           try {
             o.check = JSON.parse(it.check);
@@ -193,7 +196,7 @@
     // ---- items ------------------------------------------------------------------------------
 
     addExercise(problem) {
-      this.draft.items.push({ kind: 'exercise', title: '', problem, seedMode: 'learner', seed: '', points: '1', tolerance: '' });
+      this.draft.items.push({ kind: 'exercise', title: '', problem, seedMode: 'learner', seed: '', points: '1', tolerance: '', tries: '' });
       this.afterAdd();
     }
 
@@ -377,6 +380,8 @@
       fields.appendChild(this.field('Title' + (it.kind === 'exercise' ? ' (optional)' : ''), it, 'title', { cls: 'lab-author-wide' }));
       if (it.kind !== 'exercise') fields.appendChild(this.field('Prompt', it, 'prompt', { multiline: true, cls: 'lab-author-wide' }));
       fields.appendChild(this.field('Points', it, 'points', { hint: '0 to 1000' }));
+      if (it.kind !== 'explore')
+        fields.appendChild(this.field('Tries (optional)', it, 'tries', { hint: 'checks a student may make, 1 to 100; empty: any number' }));
       if (it.kind === 'exercise') {
         const id = nextId('seed');
         const mode = el('select', { id });

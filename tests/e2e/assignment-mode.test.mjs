@@ -474,3 +474,66 @@ test('the built site carries the example assignment: examples/assignment-example
   assert.equal(st.items.length, ASSIGNMENT.items.length);
   assert.equal(st.submitted, false);
 }));
+
+test('tries: P12 allows 3; every graded check counts, and used up the answer is final in the card and its page copy',
+  () => withPage({ open: 'index.html?assignment=examples/assignment-example.json' }, async ({ page }) => {
+  await page.waitForFunction(() => {
+    try { return !document.querySelector('.lab-access-assignment').hidden; } catch { return false; }
+  }, null, { timeout: 30000 });
+  assert.equal(ASSIGNMENT.items[2].tries, 3, 'the example limits P12, whose N can be found by counting up');
+  const given = exercises('')[2].given;
+  const n = minGrid(given.center, given.radius);
+  await press(page, 'assignment-item-2');
+  let it = (await state(page)).items[2];
+  assert.deepEqual([it.tries, it.tries_allowed, it.tries_left, it.tries_text], [0, 3, 3, 'Tries: 0 of 3 used.']);
+
+  // A wrong count costs a try; a typo costs none and says why; the same answer again costs none.
+  await typeAnswer(page, String(n + 1));
+  it = (await state(page)).items[2];
+  assert.deepEqual([it.status, it.tries, it.feedback], ['incorrect', 1, 'Not right yet. 2 tries left.']);
+  await typeAnswer(page, `${n}x`);
+  it = (await state(page)).items[2];
+  assert.deepEqual([it.status, it.tries], ['answered', 1], it.feedback);
+  assert.match(it.feedback, /2 tries left\.$/);
+  await typeAnswer(page, String(n + 2));
+  await typeAnswer(page, String(n + 2));
+  assert.equal((await state(page)).items[2].tries, 2);
+  await typeAnswer(page, String(n - 1));
+  it = (await state(page)).items[2];
+  assert.deepEqual([it.status, it.tries, it.tries_left, it.feedback],
+                   ['incorrect', 3, 0, 'Not right. No tries left: this answer is final.']);
+
+  // Final: typing the right count into the card changes nothing (its field is disabled), the
+  // API refuses, and the page's copy says so and makes its field read-only.
+  await typeAnswer(page, String(n), { enter: false });
+  await press(page, 'assignment-check');
+  it = (await state(page)).items[2];
+  assert.deepEqual([it.answer, it.status, it.tries], [String(n - 1), 'incorrect', 3]);
+  assert.match(await page.evaluate(() => {
+    try { window.cspacelab.call('assignment_answer', { index: 2, answer: '1' }); } catch (e) { return e.message; }
+    return 'taken';
+  }), /no tries left: item 3 allows 3 checks/);
+  const group = page.locator('.lab-access-assignment');
+  assert.equal(await group.locator('input').evaluate((e) => e.readOnly), true);
+  assert.equal(await group.getByRole('button', { name: 'Check', exact: true }).getAttribute('aria-disabled'), 'true');
+  assert.match(await group.locator('p[aria-live]').textContent(), /No tries left: this answer is final\./);
+  assert.match(await group.locator('p').nth(1).textContent(), /Tries: 3 of 3 used\.$/);
+  await screenshot(page, 'assignment-tries-final.png');
+  // Another item's field is not read-only.
+  await press(page, 'assignment-item-1');
+  assert.equal(await group.locator('input').evaluate((e) => e.readOnly), false);
+
+  // Counted where an instructor looks: the interaction (SCORM 2004's description), the answers
+  // the CLI grades (with their tries), and the review.
+  let st = await state(page);
+  assert.equal(st.interactions[2].description, `${st.items[2].title} (3 tries)`);
+  assert.deepEqual(st.answers.answers.find((a) => a.item === 2), { item: 2, answer: String(n - 1), tries: 3 });
+  const graded = cli('assignment', 'grade', FILE, '--answers', tempJson(st.answers));
+  assert.deepEqual([graded.items[2].tries, graded.items[2].tries_allowed, graded.items[2].correct], [3, 3, false]);
+  await api(page, 'assignment_submit');
+  st = await state(page);
+  assert.equal(st.items[2].tries_text, 'Tries: 3 of 3 used.');
+  assert.match(await group.locator('ol').nth(1).locator('li').nth(2).textContent(), /Tries: 3 of 3 used\./);
+  await waitFrames(page, 2);
+  await screenshot(page, 'assignment-tries-review.png');
+}));

@@ -82,6 +82,10 @@ test('the Author view: an exercise, an explore item and a task built, checked, p
   await item(page, 0).getByLabel('Numbers').selectOption('fixed');
   await typeInto(item(page, 0).getByLabel('Seed', { exact: true }), '7');
   await typeInto(item(page, 0).getByLabel('Tolerance (optional)'), '0.01');
+  // Tries: none is not a limit (core's message under the item), three is.
+  await typeInto(item(page, 0).getByLabel('Tries (optional)'), '0');
+  await item(page, 0).locator('.lab-author-item-errors li', { hasText: /tries: .*\[1, 100\], got 0/ }).waitFor();
+  await typeInto(item(page, 0).getByLabel('Tries (optional)'), '3');
 
   // The lab set up for the explore item: Escape hides the view, the test changes the lesson's
   // parameters, and the view comes back from the menu.
@@ -150,7 +154,7 @@ test('the Author view: an exercise, an explore item and a task built, checked, p
   assert.deepEqual(file, {
     format: 'cspacelab-assignment', version: 1, title: 'Week 3: roadmaps', description: 'Three things to do.', pass: 0.5,
     items: [
-      { kind: 'exercise', problem: 'P10', seed: 7, points: 2, tolerance: 0.01 },
+      { kind: 'exercise', problem: 'P10', seed: 7, points: 2, tolerance: 0.01, tries: 3 },
       { kind: 'explore', title: 'Look at 60 samples', prompt: 'How many components does the roadmap have?', ...setup, points: 0 },
       { kind: 'task', title: 'Few samples', prompt: 'Find a path with at most 60 samples.', ...setup, points: 1, check },
     ],

@@ -211,6 +211,8 @@ for (const version of ['1.2', '2004']) {
       const rec = await lmsRecord(page);
       const responses = Object.values(rec.interactions).map((i) => i[v12 ? 'student_response' : 'learner_response']);
       assert.deepEqual(responses.slice(0, 3), [ANSWERS[0], ANSWERS[1], ANSWERS[2]].map((a) => a.slice(0, 255)));
+      // SCORM has no count of tries: 2004's description carries it (1.2 has no description).
+      if (!v12) assert.match(Object.values(rec.interactions)[2].description, /^P12: .* \(1 try\)$/);
       assert.ok(rec.suspend_data.length > 2 && rec.suspend_data.length < 4096, `suspend data: ${rec.suspend_data.length} characters`);
 
       // A reload is a new launch: the first terminated once, the second resumes where it was.

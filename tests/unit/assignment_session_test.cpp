@@ -130,7 +130,9 @@ TEST_CASE("assignment session: the suspend object is small and resumes exactly")
   s.current = 2;
   const json suspend = session_suspend(s);
   CHECK(suspend.dump().size() < 200);  // the roadmap of the state is not in it
-  CHECK(suspend == json::parse(R"({"v": 1, "c": 2, "s": 0, "a": [[0, "pi/2"], [2, {"params": {"samples": 50}, "solved": true}]]})"));
+  // Each answer with its tries (one each: both could be graded).
+  CHECK(suspend ==
+        json::parse(R"({"v": 1, "c": 2, "s": 0, "a": [[0, "pi/2", 1], [2, {"params": {"samples": 50}, "solved": true}, 1]]})"));
 
   AssignmentSession r = start_assignment_session(example(), "student-7");
   // Through its text, as an LMS keeps it.
@@ -184,4 +186,101 @@ TEST_CASE("assignment session: an answer that would overflow the suspend data is
   CHECK_THROWS_WITH_AS(record_exercise_answer(s, 4, std::string(900, '2')), doctest::Contains("too long"), std::invalid_argument);
   CHECK(!s.answers[4]);
   CHECK(session_suspend(s).dump().size() < kMaxSuspendChars);
+}
+
+TEST_CASE("assignment session: tries are counted, limited, told, saved and resumed") {
+  json j = json::parse(R"({"format": "cspacelab-assignment", "version": 1, "title": "Tries",
+    "items": [
+      {"kind": "exercise", "problem": "P10", "tries": 2},
+      {"kind": "explore", "title": "Look", "prompt": "Step it.", "lesson": "step-prm"},
+      {"kind": "task", "title": "Find a path", "prompt": "At most 50 samples.", "lesson": "step-prm", "tries": 2,
+       "check": {"all": [{"pointer": "/solved", "equals": true}, {"pointer": "/params/samples", "max": 50}]}}]})");
+  AssignmentParse p = parse_assignment(j);
+  REQUIRE(p.assignment);
+  AssignmentSession s = start_assignment_session(*p.assignment, "student-7");
+  const Exercise e = assignment_exercise(s.assignment, 0, "student-7");
+  const auto item = [&](std::size_t i) { return assignment_session_json(s)["items"][i]; };
+  CHECK(item(0)["tries"] == 0);
+  CHECK(item(0)["tries_allowed"] == 2);
+  CHECK(item(0)["tries_left"] == 2);
+  CHECK(item(0)["tries_text"] == "Tries: 0 of 2 used.");
+  CHECK(item(1)["tries_allowed"].is_null());
+  CHECK(item(1)["tries_text"] == "");
+
+  // An answer the lab cannot read costs no try, and says what is left.
+  record_exercise_answer(s, 0, "2 pi +");
+  CHECK(item(0)["tries"] == 0);
+  CHECK(item(0)["feedback"].get<std::string>().find("2 tries left.") != std::string::npos);
+  // A wrong answer (P10's is at most pi) costs one; checked again it costs none.
+  record_exercise_answer(s, 0, "4");
+  CHECK(item(0)["tries"] == 1);
+  CHECK(item(0)["feedback"] == "Not right yet. 1 try left.");
+  record_exercise_answer(s, 0, "4");
+  CHECK(item(0)["tries"] == 1);
+  // The last try, right: the answer is final.
+  record_exercise_answer(s, 0, s1_answer(e));
+  CHECK(item(0)["status"] == "correct");
+  CHECK(item(0)["tries"] == 2);
+  CHECK(item(0)["tries_left"] == 0);
+  CHECK(item(0)["feedback"] == "Right. No tries left: this answer is final.");
+  const json before = assignment_session_json(s);
+  CHECK_THROWS_WITH_AS(record_exercise_answer(s, 0, "1"), doctest::Contains("no tries left: item 1 allows 2 checks"),
+                       std::invalid_argument);
+  CHECK_THROWS_AS(record_exercise_answer(s, 0, "x"), std::invalid_argument);  // unreadable or not: final
+  CHECK(assignment_session_json(s) == before);
+  record_exercise_answer(s, 0, s1_answer(e));  // the recorded answer checked again: nothing to refuse
+  CHECK(assignment_session_json(s) == before);
+
+  // A task: each different state checked is a try; the same state again is not.
+  record_visit(s, 1);
+  record_task_state(s, 2, big_state(true, 80));
+  record_task_state(s, 2, big_state(true, 80));
+  CHECK(item(2)["tries"] == 1);
+  CHECK(item(2)["status"] == "incorrect");
+  CHECK(item(2)["feedback"].get<std::string>().find("1 try left.") != std::string::npos);
+  record_task_state(s, 2, big_state(false, 70));
+  CHECK(item(2)["tries_left"] == 0);
+  CHECK(item(2)["feedback"].get<std::string>().find("No tries left: this answer is final.") != std::string::npos);
+  CHECK_THROWS_WITH_AS(record_task_state(s, 2, big_state(true, 50)), doctest::Contains("no tries left"), std::invalid_argument);
+  CHECK(item(2)["status"] == "incorrect");
+
+  // Reported: a reviewer reads the count in the interaction; the grade's reader takes it.
+  const json st = assignment_session_json(s);
+  CHECK(st["interactions"][0]["description"] == st["items"][0]["title"].get<std::string>() + " (2 tries)");
+  CHECK(st["interactions"][1]["description"] == "Look");
+  CHECK(st["answers"]["answers"][0]["tries"] == 2);
+  CHECK(!st["answers"]["answers"][1].contains("tries"));
+  AnswerSheetParse sheet = parse_answer_sheet(st["answers"], s.assignment);
+  REQUIRE(sheet.sheet);
+  CHECK(assignment_grade_to_json(s.assignment, grade_assignment(s.assignment, *sheet.sheet, "student-7"))["items"][2]["tries"] == 2);
+
+  // Saved and resumed: the count comes back, and the answer stays final.
+  CHECK(st["suspend"]["a"][0] == json({0, s1_answer(e), 2}));
+  CHECK(st["suspend"]["a"][1] == json({1, 1}));
+  AssignmentSession r = start_assignment_session(*p.assignment, "student-7");
+  REQUIRE(resume_session(r, json::parse(st["suspend"].dump())).empty());
+  CHECK(assignment_session_json(r) == st);
+  CHECK_THROWS_AS(record_exercise_answer(r, 0, "1"), std::invalid_argument);
+  // More tries than the item allows is refused whole; a suspend object from before tries were
+  // counted resumes with none counted.
+  AssignmentSession r2 = start_assignment_session(*p.assignment, "student-7");
+  const std::vector<std::string> errors = resume_session(r2, json::parse(R"({"v": 1, "c": 0, "s": 0, "a": [[0, "1", 3]]})"));
+  REQUIRE(errors.size() == 1);
+  CHECK(errors[0].find("tries: ") != std::string::npos);
+  CHECK(!r2.answers[0]);
+  REQUIRE(resume_session(r2, json::parse(R"({"v": 1, "c": 0, "s": 0, "a": [[0, "1"]]})")).empty());
+  CHECK(r2.answers[0]->tries == 0);
+}
+
+TEST_CASE("assignment session: without a limit every graded check is still counted") {
+  AssignmentSession s = start_assignment_session(example(), "student-7");
+  record_exercise_answer(s, 0, "1");
+  record_exercise_answer(s, 0, "abc");
+  record_exercise_answer(s, 0, "2");
+  record_exercise_answer(s, 0, "2");
+  const json it = assignment_session_json(s)["items"][0];
+  CHECK(it["tries"] == 2);
+  CHECK(it["tries_left"].is_null());
+  CHECK(it["tries_text"] == "Tries: 2.");
+  CHECK(it["feedback"].get<std::string>().find("left") == std::string::npos);
 }

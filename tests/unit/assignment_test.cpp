@@ -133,6 +133,11 @@ TEST_CASE("assignment: exercise errors name the item and the field") {
   one_error([](json& j) { j["items"][0]["title"] = ""; }, {"items[0] (P10): title: a text of 1 to 200 characters, got 0"});
   one_error([](json& j) { j["items"][0]["kind"] = "quiz"; }, {"items[0] (P10): kind: exercise, explore or task, got \"quiz\""});
   one_error([](json& j) { j["items"][0] = 3; }, {"items[0]: an item is an object"});
+  one_error([](json& j) { j["items"][0]["tries"] = 0; }, {"items[0] (P10): tries: how many checks", "[1, 100], got 0"});
+  one_error([](json& j) { j["items"][0]["tries"] = 101; }, {"items[0] (P10): tries: ", "got 101"});
+  one_error([](json& j) { j["items"][0]["tries"] = 2.5; }, {"tries: ", "got 2.5"});
+  one_error([](json& j) { j["items"][0]["tries"] = "3"; }, {"tries: ", "got \"3\""});
+  one_error([](json& j) { j["items"][0]["tries"] = 18446744073709551615ULL; }, {"tries: ", "got 18446744073709551615"});
 }
 
 TEST_CASE("assignment: explore and task errors name the item (with its title) and the field") {
@@ -152,6 +157,50 @@ TEST_CASE("assignment: explore and task errors name the item (with its title) an
   one_error([](json& j) { j["items"][1]["check"] = {{"pointer", "/solved"}, {"equals", true}}; }, {"items[1] (\"Look\"): \"check\": unknown field"});
   one_error([](json& j) { j["items"][2]["points"] = -1; }, {"items[2] (\"Find a path\"): points: a number in [0, 1000], got -1"});
   one_error([](json& j) { j["items"][2].erase("check"); }, {"items[2] (\"Find a path\"): check: required"});
+  one_error([](json& j) { j["items"][2]["tries"] = -1; }, {"items[2] (\"Find a path\"): tries: ", "got -1"});
+  // A visit is no check: an explore item has no tries.
+  one_error([](json& j) { j["items"][1]["tries"] = 2; }, {"items[1] (\"Look\"): \"tries\": unknown field"});
+}
+
+TEST_CASE("assignment: tries: kept in the normal form and the student's view; answers say theirs") {
+  json j = base();
+  j["items"][0]["tries"] = 3;
+  j["items"][2]["tries"] = 1;
+  const Assignment a = parsed(j);
+  CHECK(a.items[0].tries == 3u);
+  CHECK(a.items[2].tries == 1u);
+  CHECK(!parsed(base()).items[0].tries);  // default: any number
+  const json normal = assignment_to_json(a);
+  CHECK(normal["items"][0]["tries"] == 3);
+  CHECK(!normal["items"][1].contains("tries"));
+  CHECK(assignment_to_json(parsed(normal)) == normal);
+  const json view = assignment_student_view(a, "s");
+  CHECK(view["items"][0]["tries"] == 3);
+  CHECK(view["items"][2]["tries"] == 1);
+  CHECK(!view["items"][1].contains("tries"));
+
+  // An answer's tries: at most the item's, reported, not graded.
+  const auto errors = [&](const json& answers) { return parse_answer_sheet(answers, a).errors; };
+  CHECK(errors({{"answers", {{{"item", 0}, {"answer", "1"}, {"tries", 3}}}}}).empty());
+  CHECK(errors({{"answers", {{{"item", 0}, {"answer", "1"}, {"tries", 4}}}}})[0] ==
+        "answers[0]: tries: how many times it was checked, an integer in [1, 3] (the item allows 3), got 4");
+  CHECK(errors({{"answers", {{{"item", 0}, {"answer", "1"}, {"tries", 0}}}}})[0].find("tries: ") != std::string::npos);
+  CHECK(errors({{"answers", {{{"item", 2}, {"state", json::object()}, {"tries", 2}}}}})[0].find("[1, 1]") != std::string::npos);
+  CHECK(errors({{"answers", {{{"item", 1}, {"visited", true}, {"tries", 1}}}}})[0] ==
+        "answers[0]: \"tries\": item 1 (explore) is answered with \"visited\"");
+  const Assignment any = parsed(base());
+  CHECK(parse_answer_sheet({{"answers", {{{"item", 0}, {"answer", "1"}, {"tries", 40}}}}}, any).errors.empty());
+
+  const AssignmentGrade g = grade(a, {{"answers", {{{"item", 0}, {"answer", "1"}, {"tries", 2}}}}});
+  CHECK(g.items[0].tries == 2);
+  const json out = assignment_grade_to_json(a, g);
+  CHECK(out["items"][0]["tries"] == 2);
+  CHECK(out["items"][0]["tries_allowed"] == 3);
+  CHECK(!out["items"][1].contains("tries"));
+  CHECK(!out["items"][1].contains("tries_allowed"));
+  CHECK(out["items"][2]["tries_allowed"] == 1);
+  // The same answer without its count grades the same.
+  CHECK(grade(a, {{"answers", {{{"item", 0}, {"answer", "1"}}}}}).raw == g.raw);
 }
 
 TEST_CASE("assignment: a task's condition: pointers and operands checked, each error where it is") {

@@ -332,9 +332,15 @@ void AssignmentPanel::current_item() {
   ImGui::SameLine();
   ImGui::TextWrapped("%s (%s %s)", item.title.c_str(), points_text(item.points).c_str(), item.points == 1 ? "point" : "points");
   card::paragraphs(st["prompt"].get<std::string>());
+  // Used up, the answer is final: the field and its check are shown, disabled, with the feedback.
+  const bool final_answer = st["tries_left"] == 0;
   if (item.kind == AssignmentItemKind::Exercise) {
-    if (card::answer_row("##assignment-answer", st["format_hint"].get<std::string>(), answer_, sizeof answer_,
-                         focus_answer_, "assignment-answer", "assignment-check")) {
+    ImGui::BeginDisabled(final_answer);
+    if (final_answer) focus_answer_ = false;
+    const bool check = card::answer_row("##assignment-answer", st["format_hint"].get<std::string>(), answer_, sizeof answer_,
+                                        focus_answer_, "assignment-answer", "assignment-check");
+    ImGui::EndDisabled();
+    if (check) {
       act([&] { answer(i, std::string(answer_)); });
       focus_answer_ = true;  // correct it and press Enter again
     }
@@ -350,9 +356,16 @@ void AssignmentPanel::current_item() {
     web::record_control("assignment-open-item");
     if (item.kind == AssignmentItemKind::Task) {
       ui::flow(ui::button_width("Check my lab"));
+      ImGui::BeginDisabled(final_answer);
       if (ImGui::Button("Check my lab")) act([&] { answer(i, std::nullopt); });
       web::record_control("assignment-check-lab");
+      ImGui::EndDisabled();
     }
+  }
+  if (const std::string tries = st["tries_text"].get<std::string>(); !tries.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("%s", tries.c_str());
+    ImGui::PopStyleColor();
   }
   const std::string feedback = st["feedback"].get<std::string>();
   if (!feedback.empty()) {
@@ -391,6 +404,7 @@ void AssignmentPanel::review() {
     } else if (kind == "task") {
       ImGui::TextWrapped("What counts: %s", it["check_text"].get<std::string>().c_str());
     }
+    if (const std::string tries = it["tries_text"].get<std::string>(); !tries.empty()) ImGui::TextWrapped("%s", tries.c_str());
     card::paragraphs(it["explanation"].get<std::string>());
   }
 }

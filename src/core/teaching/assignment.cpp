@@ -84,9 +84,20 @@ double points_field(const json& j, double fallback, const Sink& error) {
   return v.get<double>() + 0.0;  // never -0
 }
 
+std::optional<unsigned> tries_field(const json& j, const Sink& error) {
+  if (!j.contains("tries")) return std::nullopt;
+  const json& v = j["tries"];
+  if (!v.is_number_integer() || v.get<std::int64_t>() < 1 || v.get<std::int64_t>() > std::int64_t{kMaxItemTries}) {
+    error("tries", "how many checks the student has, an integer in [1, " + std::to_string(kMaxItemTries) + "], got " + shown(v));
+    return std::nullopt;
+  }
+  return static_cast<unsigned>(v.get<std::int64_t>());
+}
+
 void read_exercise(const json& j, AssignmentItem& item, const Sink& error) {
-  unknown_fields(j, {"kind", "title", "problem", "seed", "points", "tolerance"}, error);
+  unknown_fields(j, {"kind", "title", "problem", "seed", "points", "tolerance", "tries"}, error);
   item.points = points_field(j, 1, error);
+  item.tries = tries_field(j, error);
   const HomeworkProblem* problem = nullptr;
   if (!j.contains("problem") || !j["problem"].is_string()) {
     error("problem", "required, a homework problem P1 to P13");
@@ -173,9 +184,10 @@ AssignmentItem read_item(const json& j, std::size_t i, std::vector<std::string>&
     item.points = points_field(j, 0, error);
   } else if (kind == "task") {
     item.kind = AssignmentItemKind::Task;
-    unknown_fields(j, {"kind", "title", "prompt", "lesson", "scene", "params", "points", "check"}, error);
+    unknown_fields(j, {"kind", "title", "prompt", "lesson", "scene", "params", "points", "check", "tries"}, error);
     read_lab_state(j, item, error);
     item.points = points_field(j, 1, error);
+    item.tries = tries_field(j, error);
     if (!j.contains("check")) {
       error("check", "required: a condition on the lesson's state, e.g. {\"pointer\": \"/solved\", \"equals\": true}");
     } else if (auto c = parse_state_condition(j["check"], error.where + ": check", errors)) {
@@ -317,6 +329,7 @@ json assignment_to_json(const Assignment& a) {
       j["params"] = item.params;
       if (item.kind == AssignmentItemKind::Task) j["check"] = state_condition_to_json(item.check);
     }
+    if (item.tries) j["tries"] = *item.tries;
     items.push_back(std::move(j));
   }
   json out{{"format", kAssignmentFormat}, {"version", kAssignmentVersion}, {"title", a.title},
@@ -345,6 +358,7 @@ json assignment_student_view(const Assignment& a, const std::string& learner) {
         j["check_text"] = state_condition_text(item.check);
       }
     }
+    if (item.tries) j["tries"] = *item.tries;
     items.push_back(std::move(j));
   }
   json out{{"title", a.title}, {"pass", a.pass}, {"max_points", a.max_points()}, {"learner", learner}, {"items", items}};

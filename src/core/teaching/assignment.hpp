@@ -17,11 +17,14 @@
 //
 // ITEM, by "kind" (every item: optional "title", 1 to 200 characters; "points", a number in
 // [0, 1000]):
-//   {"kind": "exercise", "problem": "P10", "seed": 7 | "learner", "points": 2, "tolerance": 0.01}
+//   {"kind": "exercise", "problem": "P10", "seed": 7 | "learner", "points": 2, "tolerance": 0.01,
+//    "tries": 3}
 //       A homework exercise (homework.hpp). "seed": an integer in [0, 2^53 - 1] (everyone gets the
 //       same numbers) or "learner" (each learner gets their own: learner_seed()); default
 //       "learner". "tolerance": accepted |typed - answer|, a finite number >= 0, only for
-//       problems with a numeric answer (P8-P13); default the exercise's own. Title default: the
+//       problems with a numeric answer (P8-P13); default the exercise's own. "tries": how many
+//       times the student may check an answer, an integer in [1, kMaxItemTries]; default any
+//       number (every check is counted either way: assignment_session.hpp). Title default: the
 //       problem's ("P10: ..."). Points default 1.
 //   {"kind": "explore", "title": "...", "prompt": "...", "lesson": "step-prm",
 //    "scene": {...}, "params": {...}, "points": 0}
@@ -31,9 +34,10 @@
 //       {"visited": true}, it earns all its points. Title required; prompt 1 to 2000
 //       characters, required. Points default 0.
 //   {"kind": "task", "title": "...", "prompt": "...", "lesson": "step-prm", "scene": {...},
-//    "params": {...}, "points": 1, "check": CONDITION}
+//    "params": {...}, "points": 1, "check": CONDITION, "tries": 5}
 //       A task checked from the lesson's state() when the student submits it: CONDITION as in
-//       state_condition.hpp. Title and prompt required. Points default 1. An answer hidden by
+//       state_condition.hpp. Title and prompt required. Points default 1. "tries" as for an
+//       exercise. An answer hidden by
 //       the instructor (hide=, restrictions.hpp) is not in state(): a check on its field fails.
 // Unknown fields anywhere are errors (a typo is not silently ignored). A scene names no
 // bundled scene: the core does not know the app's bundled scenes; paste the scene's JSON.
@@ -57,6 +61,8 @@ inline constexpr std::size_t kMaxAssignmentPrompt = 2000;
 inline constexpr std::size_t kMaxAssignmentDescription = 4000;
 inline constexpr double kMaxItemPoints = 1000;
 inline constexpr double kDefaultPass = 0.6;
+/// An item's "tries": more than this is no limit a student would notice.
+inline constexpr unsigned kMaxItemTries = 100;
 /// Bytes of an assignment or answers file: 100 items with inline scenes fit many times over.
 inline constexpr std::size_t kMaxAssignmentBytes = std::size_t{16} << 20;
 /// A learner id's length: SCORM 2004's cmi.learner_id holds up to 4000 characters.
@@ -74,6 +80,8 @@ struct AssignmentItem {
   std::string problem;                ///< "P10" (canonical)
   std::optional<std::uint64_t> seed;  ///< nullopt: per learner
   std::optional<double> tolerance;    ///< nullopt: the exercise's own
+  // exercise, task
+  std::optional<unsigned> tries;      ///< the checks allowed; nullopt: any number
   // explore, task
   std::string prompt;
   std::string lesson;                          ///< a lesson id of the catalogue

@@ -74,9 +74,21 @@ AnswerSheetParse parse_answer_sheet(const json& j, const Assignment& a) {
     const AssignmentItemKind kind = a.items[answer.item].kind;
     const std::string field = answer_field(kind);
     const std::string item_name = "item " + std::to_string(answer.item) + " (" + assignment_item_kind_name(kind) + ")";
+    const bool counted = kind != AssignmentItemKind::Explore;  // a visit is no try
     for (auto it = e.begin(); it != e.end(); ++it)
-      if (it.key() != "item" && it.key() != field)
-        errors.push_back(where + "\"" + printable(it.key(), 40) + "\": " + item_name + " is answered with \"" + field + "\"");
+      if (it.key() != "item" && it.key() != field && !(counted && it.key() == "tries"))
+        errors.push_back(where + "\"" + printable(it.key(), 40) + "\": " + item_name + " is answered with \"" + field + "\"" +
+                         (counted ? " (and \"tries\")" : ""));
+    if (counted && e.contains("tries")) {
+      const json& t = e["tries"];
+      const std::optional<unsigned> allowed = a.items[answer.item].tries;
+      const std::uint64_t most = allowed ? *allowed : std::uint64_t{1} << 31;
+      if (!t.is_number_integer() || t.get<std::int64_t>() < 1 || t.get<std::uint64_t>() > most)
+        errors.push_back(where + "tries: how many times it was checked, an integer in [1, " + std::to_string(most) + "]" +
+                         (allowed ? " (the item allows " + std::to_string(*allowed) + ")" : "") + ", got " + shown(t));
+      else
+        answer.tries = static_cast<unsigned>(t.get<std::uint64_t>());
+    }
     if (!e.contains(field)) {
       errors.push_back(where + field + ": required for " + item_name);
       continue;
@@ -126,6 +138,7 @@ AssignmentGrade grade_assignment(const Assignment& a, const AnswerSheet& sheet, 
     r.item = i;
     r.kind = item.kind;
     r.max_points = item.points;
+    r.tries = ans ? ans->tries : 0;
     switch (item.kind) {
       case AssignmentItemKind::Exercise: {
         const Exercise e = assignment_exercise(a, i, learner);
@@ -181,6 +194,8 @@ json assignment_grade_to_json(const Assignment& a, const AssignmentGrade& g) {
            {"expected", r.expected},
            {"explanation", r.explanation}};
     if (r.seed) j["seed"] = *r.seed;
+    if (r.tries) j["tries"] = r.tries;
+    if (const auto allowed = a.items.at(r.item).tries) j["tries_allowed"] = *allowed;
     items.push_back(std::move(j));
   }
   return {{"learner", g.learner},

@@ -9,7 +9,9 @@
 //                {"item": 1, "visited": true},         an explore item: the student went there
 //                {"item": 2, "state": {...}}]}          a task: the lesson's state() at submission
 // Each item at most once, with the field its kind takes; items without an answer are not
-// attempted. Unknown fields are errors, as in the assignment.
+// attempted. An exercise's or task's answer may say how many times it was checked, "tries": an
+// integer >= 1, at most the item's own "tries" (the page's assignment mode counts them); it is
+// reported, not graded. Unknown fields are errors, as in the assignment.
 //
 // Per item: attempted, correct, points (all of the item's points when correct, else 0),
 // expected (an exercise's answer; a task's condition in words), explanation. Totals as SCORM
@@ -32,6 +34,7 @@ struct AssignmentAnswer {
   std::string text;       ///< exercise
   bool visited = false;   ///< explore
   nlohmann::json state;   ///< task
+  unsigned tries = 0;     ///< exercise, task: the checks counted; 0: not counted (none said)
 };
 
 struct AnswerSheet {
@@ -62,6 +65,7 @@ struct ItemGrade {
   nlohmann::json expected;  ///< exercise: the answer; task: the condition in words; explore: null
   std::string explanation;
   std::optional<std::uint64_t> seed;  ///< exercise: the seed graded with
+  unsigned tries = 0;                 ///< the answer's, 0 if it said none
 };
 
 struct AssignmentGrade {
@@ -76,7 +80,7 @@ struct AssignmentGrade {
 AssignmentGrade grade_assignment(const Assignment& assignment, const AnswerSheet& sheet, const std::string& learner);
 
 /// {"learner", "items": [{item, kind, title, attempted, correct, points, max_points, expected,
-/// explanation, seed?}], "score": {raw, min, max, scaled}, "completed", "passed", "pass"}.
+/// explanation, seed?, tries? (the answer's), tries_allowed? (the item's)}], "score": {raw, min, max, scaled}, "completed", "passed", "pass"}.
 nlohmann::json assignment_grade_to_json(const Assignment& assignment, const AssignmentGrade& grade);
 
 }  // namespace csl

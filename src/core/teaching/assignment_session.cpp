@@ -49,6 +49,23 @@ std::string task_response(const AssignmentItem& item, const json& state) {
 
 json expected_text(const json& expected) { return expected.is_string() ? expected : json(expected.dump()); }
 
+// Refuses a new answer to an item whose tries are used up.
+void require_try(const AssignmentSession& s, std::size_t index) {
+  const std::optional<unsigned> left = tries_left(s, index);
+  if (left && *left == 0)
+    throw std::invalid_argument("no tries left: item " + std::to_string(index + 1) + " allows " +
+                                std::to_string(*s.assignment.items[index].tries) + " checks, and its answer is final");
+}
+
+std::string tries_count(unsigned n) { return std::to_string(n) + (n == 1 ? " try" : " tries"); }
+
+// "Tries: 1 of 3 used." with a limit; "Tries: 2." without one, once there are any.
+std::string tries_text(const AssignmentItem& item, unsigned used) {
+  if (item.kind == AssignmentItemKind::Explore) return "";
+  if (item.tries) return "Tries: " + std::to_string(used) + " of " + std::to_string(*item.tries) + " used.";
+  return used ? "Tries: " + std::to_string(used) + "." : "";
+}
+
 }  // namespace
 
 AssignmentSession start_assignment_session(Assignment assignment, std::string learner) {
@@ -64,9 +81,15 @@ void record_exercise_answer(AssignmentSession& s, std::size_t index, const std::
   item_of(s, index, AssignmentItemKind::Exercise);
   if (text.size() > kMaxAnswerText)
     throw std::invalid_argument("answer: at most " + std::to_string(kMaxAnswerText) + " characters");
+  const std::optional<AssignmentAnswer>& before = s.answers[index];
+  if (before && before->text == text) return;  // the recorded answer checked again: no new try
+  require_try(s, index);
   AssignmentAnswer a;
   a.item = index;
   a.text = text;
+  // An answer the lab cannot read (a typo, an empty field) is told so and costs no try.
+  const bool readable = check_exercise(assignment_exercise(s.assignment, index, s.learner), text).readable;
+  a.tries = (before ? before->tries : 0) + (readable ? 1 : 0);
   record(s, std::move(a));
 }
 
@@ -80,9 +103,14 @@ void record_visit(AssignmentSession& s, std::size_t index) {
 
 void record_task_state(AssignmentSession& s, std::size_t index, const json& state) {
   const AssignmentItem& item = item_of(s, index, AssignmentItemKind::Task);
+  json excerpt = task_state_excerpt(item.check, state);
+  const std::optional<AssignmentAnswer>& before = s.answers[index];
+  if (before && before->state == excerpt) return;  // the lab as it was checked: no new try
+  require_try(s, index);
   AssignmentAnswer a;
   a.item = index;
-  a.state = task_state_excerpt(item.check, state);
+  a.state = std::move(excerpt);
+  a.tries = (before ? before->tries : 0) + 1;
   record(s, std::move(a));
 }
 
@@ -124,6 +152,13 @@ AssignmentGrade grade_session(const AssignmentSession& s) {
   return grade_assignment(s.assignment, session_answer_sheet(s), s.learner);
 }
 
+std::optional<unsigned> tries_left(const AssignmentSession& s, std::size_t index) {
+  const std::optional<unsigned> allowed = s.assignment.items.at(index).tries;
+  if (!allowed) return std::nullopt;
+  const unsigned used = s.answers[index] ? s.answers[index]->tries : 0;
+  return used < *allowed ? *allowed - used : 0;
+}
+
 const char* item_status(const AssignmentSession& s, const ItemGrade& g) {
   if (!s.answers.at(g.item)) return "open";
   if (g.kind == AssignmentItemKind::Explore) return g.correct ? "viewed" : "open";
@@ -135,11 +170,14 @@ json session_suspend(const AssignmentSession& s) {
   json answers = json::array();
   for (const auto& a : s.answers) {
     if (!a) continue;
+    json e;
     switch (s.assignment.items[a->item].kind) {
-      case AssignmentItemKind::Exercise: answers.push_back({a->item, a->text}); break;
-      case AssignmentItemKind::Explore: answers.push_back({a->item, 1}); break;
-      case AssignmentItemKind::Task: answers.push_back({a->item, a->state}); break;
+      case AssignmentItemKind::Exercise: e = {a->item, a->text}; break;
+      case AssignmentItemKind::Explore: e = {a->item, 1}; break;
+      case AssignmentItemKind::Task: e = {a->item, a->state}; break;
     }
+    if (a->tries) e.push_back(a->tries);
+    answers.push_back(std::move(e));
   }
   return {{"v", 1}, {"c", s.current}, {"s", s.submitted ? 1 : 0}, {"a", answers}};
 }
@@ -169,8 +207,8 @@ std::vector<std::string> resume_session(AssignmentSession& s, const json& suspen
   } else {
     for (std::size_t k = 0; k < list.size(); ++k) {
       const json& e = list[k];
-      if (!e.is_array() || e.size() != 2 || !e[0].is_number_unsigned() || e[0].get<std::size_t>() >= n) {
-        error("a[" + std::to_string(k) + "]: [item, answer] with an item 0 to " + std::to_string(n - 1));
+      if (!e.is_array() || e.size() < 2 || e.size() > 3 || !e[0].is_number_unsigned() || e[0].get<std::size_t>() >= n) {
+        error("a[" + std::to_string(k) + "]: [item, answer] or [item, answer, tries] with an item 0 to " + std::to_string(n - 1));
         continue;
       }
       const std::size_t item = e[0].get<std::size_t>();
@@ -179,6 +217,7 @@ std::vector<std::string> resume_session(AssignmentSession& s, const json& suspen
       if (kind == AssignmentItemKind::Exercise) answer["answer"] = e[1];
       else if (kind == AssignmentItemKind::Explore) answer["visited"] = e[1] == 1 ? json(true) : e[1];
       else answer["state"] = e[1];
+      if (e.size() == 3) answer["tries"] = e[2];  // checked by the reader: an integer, at most the item's
       sheet["answers"].push_back(std::move(answer));
     }
   }
@@ -205,10 +244,16 @@ json assignment_session_json(const AssignmentSession& s) {
     const ItemGrade& r = g.items[i];
     const std::optional<AssignmentAnswer>& ans = s.answers[i];
     const std::string id = "item-" + std::to_string(i + 1);
+    const unsigned used = ans ? ans->tries : 0;
+    const std::optional<unsigned> left = tries_left(s, i);
+    const bool final_answer = left && *left == 0;
     json j{{"index", i}, {"id", id}, {"kind", assignment_item_kind_name(item.kind)}, {"title", item.title},
-           {"points", item.points}, {"status", item_status(s, r)}, {"score", r.points}, {"max", r.max_points}};
-    json interaction{{"id", id}, {"description", item.title}, {"weighting", item.points},
-                     {"result", !r.attempted ? "neutral" : r.correct ? "correct" : "incorrect"}};
+           {"points", item.points}, {"status", item_status(s, r)}, {"score", r.points}, {"max", r.max_points},
+           {"tries", used}, {"tries_allowed", item.tries ? json(*item.tries) : json(nullptr)},
+           {"tries_left", left ? json(*left) : json(nullptr)}, {"tries_text", tries_text(item, used)}};
+    // SCORM keeps no count of tries: a reviewer reads it in the description (2004).
+    json interaction{{"id", id}, {"description", item.title + (used ? " (" + tries_count(used) + ")" : "")},
+                     {"weighting", item.points}, {"result", !r.attempted ? "neutral" : r.correct ? "correct" : "incorrect"}};
     std::string feedback;
     switch (item.kind) {
       case AssignmentItemKind::Exercise: {
@@ -223,7 +268,7 @@ json assignment_session_json(const AssignmentSession& s) {
         if (s.submitted) interaction["correct_response"] = expected_text(r.expected);
         if (s.submitted) j["expected_text"] = exercise_answer_text(e);
         // Before submission: right or not, and why an answer could not be read; never the answer.
-        if (ans) feedback = r.correct ? "Right." : r.attempted ? "Not right yet." : r.explanation;
+        if (ans) feedback = r.correct ? "Right." : r.attempted ? (final_answer ? "Not right." : "Not right yet.") : r.explanation;
         if (ans) answers.push_back({{"item", i}, {"answer", ans->text}});
         break;
       }
@@ -249,6 +294,10 @@ json assignment_session_json(const AssignmentSession& s) {
         if (ans) answers.push_back({{"item", i}, {"state", ans->state}});
         break;
     }
+    if (used) answers.back()["tries"] = used;
+    // With a limit, what is left is part of the answer's feedback: "Not right yet." has a "yet".
+    if (item.tries && ans)
+      feedback += final_answer ? " No tries left: this answer is final." : " " + tries_count(*left) + " left.";
     j["feedback"] = feedback;
     if (s.submitted) {
       j["expected"] = r.expected;

@@ -5,10 +5,16 @@
 // assignment_state answers and the LMS layer reports (SCORM's score, interactions, suspend
 // data), and saved to and resumed from a small "suspend" object.
 //
+// Tries: every check of an exercise or task that could be graded counts one try (an exercise's
+// answer the lab cannot read does not, nor the answer recorded already checked again), whether
+// or not the item limits them ("tries" in assignment.hpp): an instructor sees how often a right
+// answer was found. Once an item's tries are used up its answer is final.
+//
 // Suspend (what SCORM 1.2's cmi.suspend_data holds, so at most kMaxSuspendChars characters):
-//   {"v": 1, "c": CURRENT, "s": SUBMITTED (0 or 1), "a": [[ITEM, ANSWER], ...]}
+//   {"v": 1, "c": CURRENT, "s": SUBMITTED (0 or 1), "a": [[ITEM, ANSWER, TRIES?], ...]}
 // ANSWER by the item's kind: an exercise's typed text; an explore item's 1 (visited); a task's
-// state as far as its check reads it (task_state_excerpt). An answer that would make it longer
+// state as far as its check reads it (task_state_excerpt). TRIES: the tries counted, if any (a
+// suspend object from before tries were counted has none: its answers count none). An answer that would make it longer
 // than that is refused when it is recorded (never cut later: a resume gives back exactly what was
 // graded).
 #include <nlohmann/json.hpp>
@@ -36,10 +42,11 @@ struct AssignmentSession {
 /// that learner_id_problem() refuses.
 AssignmentSession start_assignment_session(Assignment assignment, std::string learner);
 
-/// Records an answer to item `index` (replacing an earlier one). Throws std::invalid_argument,
-/// changing nothing, if the session was submitted, the index is out of range, the item is of
-/// another kind, an exercise's text is longer than kMaxAnswerText, or the suspend object would
-/// grow past kMaxSuspendChars.
+/// Records an answer to item `index` (replacing an earlier one), counting a try as the top of
+/// this file says. Throws std::invalid_argument, changing nothing, if the session was submitted,
+/// the index is out of range, the item is of another kind, its tries are used up (unless the
+/// answer is the one recorded), an exercise's text is longer than kMaxAnswerText, or the suspend
+/// object would grow past kMaxSuspendChars.
 void record_exercise_answer(AssignmentSession& s, std::size_t index, const std::string& text);
 void record_visit(AssignmentSession& s, std::size_t index);
 /// `state`: the lesson's state() as the lab has it now; what is kept of it is its excerpt.
@@ -65,8 +72,11 @@ nlohmann::json session_suspend(const AssignmentSession& s);
 /// item, answered with 1"); `s` changes only if there is none.
 std::vector<std::string> resume_session(AssignmentSession& s, const nlohmann::json& suspend);
 
+/// The tries item `index` has left: nullopt if it has no limit.
+std::optional<unsigned> tries_left(const AssignmentSession& s, std::size_t index);
+
 /// What the page's assignment_state answers (docs/web.md): {title, description, learner, pass,
-/// current, submitted, items: [...], grade: {raw, min, max, scaled, completed, passed},
+/// current, submitted, items: [... each with tries, tries_allowed, tries_left, tries_text], grade: {raw, min, max, scaled, completed, passed},
 /// interactions: [...], answers (as `cspacelab assignment grade --answers` reads them), suspend}. Correct answers, worked solutions
 /// and the interactions' correct_response only once submitted.
 nlohmann::json assignment_session_json(const AssignmentSession& s);
