@@ -147,6 +147,14 @@ test('an assignment done in the card: exercises by keyboard and mouse, the task 
   // Item 5 (task): "Check my lab" before a path is found fails, after one is found passes.
   await press(page, 'assignment-next');
   assert.equal((await api(page, 'state')).params.samples, 50, 'the task\'s parameters');
+  // No gift: as it opens (a narrow passage, 50 samples, seed 5) the roadmap does not get through.
+  assert.equal((await api(page, 'state')).scene_name, 'A passage through a thick wall');
+  await press(page, 'run-all');
+  await page.waitForFunction(() => !window.cspacelab.status().busy && window.cspacelab.status().stepping.finished,
+                             null, { timeout: 30000 });
+  assert.equal((await api(page, 'state')).solved, false, 'the task is not solved as it opens');
+  await press(page, 'assignment-check-lab');
+  assert.match((await state(page)).items[4].feedback, /^Not yet: no: solved is false/);
   await page.evaluate(() => window.cspacelab.setParams({ samples: 60 }));
   await press(page, 'assignment-check-lab');
   st = await state(page);
