@@ -42,6 +42,11 @@ TEST_CASE("volume questions: the space's name and dimension") {
   CHECK(right(a, "name", "T^3"));
   CHECK(right(a, "name", "S^1 x S^1 x S^1"));
   CHECK_FALSE(right(a, "name", "R^3"));
+  // A wrong name is an attempt; text that names no space is not.
+  CHECK(csl::check_volume_question("name", a, 0.5, "R^3").readable);
+  const csl::ExerciseCheck garbled = csl::check_volume_question("name", a, 0.5, "((");
+  CHECK_FALSE(garbled.correct);
+  CHECK_FALSE(garbled.readable);
   CHECK(right(p, "dimension", "3"));
   CHECK(right(a, "dimension", " 3 "));
   CHECK_FALSE(right(a, "dimension", "2"));

@@ -60,6 +60,13 @@ std::optional<long long> parse_integer(std::string_view text) {
   return v;
 }
 
+std::string trim(std::string_view text) {
+  constexpr std::string_view kSpace = " \t\n\v\f\r";  // isspace() in the C locale
+  const auto b = text.find_first_not_of(kSpace);
+  if (b == std::string_view::npos) return "";
+  return std::string(text.substr(b, text.find_last_not_of(kSpace) - b + 1));
+}
+
 std::string printable(std::string_view text, std::size_t max) {
   std::string out;
   std::size_t cut = text.size();

@@ -27,6 +27,10 @@ std::optional<long long> parse_integer(std::string_view text);
 /// line; longer than `max` bytes, it is cut (on a UTF-8 boundary) and ends in "...".
 std::string printable(std::string_view text, std::size_t max = std::string_view::npos);
 
+/// `text` without the white space around it (isspace() in the C locale: a typed answer as it
+/// is judged).
+std::string trim(std::string_view text);
+
 }  // namespace csl
 
 namespace csl {

@@ -93,13 +93,6 @@ std::optional<double> pi_multiple(std::string t) {
   return std::nullopt;
 }
 
-std::string trim(const std::string& s) {
-  std::size_t a = 0, b = s.size();
-  while (a < b && std::isspace(static_cast<unsigned char>(s[a]))) ++a;
-  while (b > a && std::isspace(static_cast<unsigned char>(s[b - 1]))) --b;
-  return s.substr(a, b - a);
-}
-
 std::string number_text(double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.6g", v);

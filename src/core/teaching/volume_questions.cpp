@@ -55,12 +55,6 @@ bool crosses_seam(const Space& space, const Config& p, const Config& q) {
 
 std::string angle_name(const Scene& scene) { return is_arm(scene) ? "θ₁" : "θ"; }
 
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r\n");
-  if (b == std::string::npos) return "";
-  return s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
-}
-
 const char* const kGluedKeys[] = {"none", "top-bottom", "sides", "all"};
 
 ExerciseCheck unreadable(const std::string& why) {
@@ -136,6 +130,7 @@ ExerciseCheck check_volume_question(const std::string& id, const Scene& scene, d
     const RobotDescription robot = description_of(scene);
     const AnswerCheck a = check_answer(text, robot);
     c.correct = a.correct;
+    c.readable = a.readable;  // "((" is no attempt at a name, as an unreadable number is none
     c.expected = configuration_space(robot).notation;
     c.explanation = a.explanation;
     return c;
