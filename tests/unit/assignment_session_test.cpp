@@ -215,7 +215,7 @@ TEST_CASE("assignment session: tries are counted, limited, told, saved and resum
   record_exercise_answer(s, 0, "4");
   CHECK(item(0)["tries"] == 1);
   CHECK(item(0)["feedback"] == "Not right yet. 1 try left.");
-  record_exercise_answer(s, 0, "4");
+  record_exercise_answer(s, 0, " 4 ");
   CHECK(item(0)["tries"] == 1);
   // The last try, right: the answer is final.
   record_exercise_answer(s, 0, s1_answer(e));
@@ -240,6 +240,8 @@ TEST_CASE("assignment session: tries are counted, limited, told, saved and resum
   CHECK(item(2)["feedback"].get<std::string>().find("1 try left.") != std::string::npos);
   record_task_state(s, 2, big_state(false, 70));
   CHECK(item(2)["tries_left"] == 0);
+  // Final, not met: "Not done", not "Not yet".
+  CHECK(item(2)["feedback"].get<std::string>().rfind("Not done: ", 0) == 0);
   CHECK(item(2)["feedback"].get<std::string>().find("No tries left: this answer is final.") != std::string::npos);
   CHECK_THROWS_WITH_AS(record_task_state(s, 2, big_state(true, 50)), doctest::Contains("no tries left"), std::invalid_argument);
   CHECK(item(2)["status"] == "incorrect");
@@ -261,15 +263,32 @@ TEST_CASE("assignment session: tries are counted, limited, told, saved and resum
   REQUIRE(resume_session(r, json::parse(st["suspend"].dump())).empty());
   CHECK(assignment_session_json(r) == st);
   CHECK_THROWS_AS(record_exercise_answer(r, 0, "1"), std::invalid_argument);
-  // More tries than the item allows is refused whole; a suspend object from before tries were
-  // counted resumes with none counted.
+  // More tries than the item allows (its limit lowered since) resume as used up, the work kept.
   AssignmentSession r2 = start_assignment_session(*p.assignment, "student-7");
-  const std::vector<std::string> errors = resume_session(r2, json::parse(R"({"v": 1, "c": 0, "s": 0, "a": [[0, "1", 3]]})"));
+  REQUIRE(resume_session(r2, json::parse(R"({"v": 1, "c": 0, "s": 0, "a": [[0, "1", 3]]})")).empty());
+  CHECK(r2.answers[0]->text == "1");
+  CHECK(r2.answers[0]->tries == 2);
+  CHECK(tries_left(r2, 0) == 0u);
+  // Saved without a count (from before tries, or the count deleted by hand): one try for each
+  // graded answer, none for one the lab cannot read; a bad count is refused whole.
+  AssignmentSession r3 = start_assignment_session(*p.assignment, "student-7");
+  REQUIRE(resume_session(r3, json::parse(R"({"v": 1, "c": 0, "s": 0, "a": [[0, "1"], [2, {"solved": false}]]})")).empty());
+  CHECK(r3.answers[0]->tries == 1);
+  CHECK(r3.answers[2]->tries == 1);
+  REQUIRE(resume_session(r3, json::parse(R"({"v": 1, "c": 0, "s": 0, "a": [[0, "((("]]})")).empty());
+  CHECK(r3.answers[0]->tries == 0);
+  const std::vector<std::string> errors = resume_session(r3, json::parse(R"({"v": 1, "c": 0, "s": 0, "a": [[0, "1", 0]]})"));
   REQUIRE(errors.size() == 1);
   CHECK(errors[0].find("tries: ") != std::string::npos);
-  CHECK(!r2.answers[0]);
-  REQUIRE(resume_session(r2, json::parse(R"({"v": 1, "c": 0, "s": 0, "a": [[0, "1"]]})")).empty());
-  CHECK(r2.answers[0]->tries == 0);
+  CHECK(r3.answers[0]->text == "(((");
+
+  // Submitted: no item has a try left, and the feedback no longer counts them.
+  s.submitted = true;
+  const json done = assignment_session_json(s);
+  CHECK(done["items"][0]["tries_left"] == 0);
+  CHECK(done["items"][2]["tries_left"] == 0);
+  CHECK(done["items"][0]["feedback"] == "Right.");
+  CHECK(done["items"][1]["tries_left"].is_null());
 }
 
 TEST_CASE("assignment session: without a limit every graded check is still counted") {
@@ -283,4 +302,8 @@ TEST_CASE("assignment session: without a limit every graded check is still count
   CHECK(it["tries_left"].is_null());
   CHECK(it["tries_text"] == "Tries: 2.");
   CHECK(it["feedback"].get<std::string>().find("left") == std::string::npos);
+  s.submitted = true;
+  const json done = assignment_session_json(s)["items"][0];
+  CHECK(done["tries_left"] == 0);
+  CHECK(done["feedback"] == "Not right.");
 }

@@ -35,10 +35,10 @@
 //       characters, required. Points default 0.
 //   {"kind": "task", "title": "...", "prompt": "...", "lesson": "step-prm", "scene": {...},
 //    "params": {...}, "points": 1, "check": CONDITION, "tries": 5}
-//       A task checked from the lesson's state() when the student submits it: CONDITION as in
-//       state_condition.hpp. Title and prompt required. Points default 1. "tries" as for an
-//       exercise. An answer hidden by
-//       the instructor (hide=, restrictions.hpp) is not in state(): a check on its field fails.
+//       A task checked from the lesson's state() when the student checks the lab ("Check my
+//       lab" records that state): CONDITION as in state_condition.hpp. Title and prompt
+//       required. Points default 1. "tries" as for an exercise. An answer hidden by the
+//       instructor (hide=, restrictions.hpp) is not in state(): a check on its field fails.
 // Unknown fields anywhere are errors (a typo is not silently ignored). A scene names no
 // bundled scene: the core does not know the app's bundled scenes; paste the scene's JSON.
 #include <nlohmann/json.hpp>

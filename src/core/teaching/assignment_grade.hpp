@@ -10,8 +10,8 @@
 //                {"item": 2, "state": {...}}]}          a task: the lesson's state() at submission
 // Each item at most once, with the field its kind takes; items without an answer are not
 // attempted. An exercise's or task's answer may say how many times it was checked, "tries": an
-// integer >= 1, at most the item's own "tries" (the page's assignment mode counts them); it is
-// reported, not graded. Unknown fields are errors, as in the assignment.
+// integer >= 1 (the page's assignment mode counts them); it is reported beside the item's own
+// limit, not graded. Unknown fields are errors, as in the assignment.
 //
 // Per item: attempted, correct, points (all of the item's points when correct, else 0),
 // expected (an exercise's answer; a task's condition in words), explanation. Totals as SCORM

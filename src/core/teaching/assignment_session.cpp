@@ -82,7 +82,7 @@ void record_exercise_answer(AssignmentSession& s, std::size_t index, const std::
   if (text.size() > kMaxAnswerText)
     throw std::invalid_argument("answer: at most " + std::to_string(kMaxAnswerText) + " characters");
   const std::optional<AssignmentAnswer>& before = s.answers[index];
-  if (before && before->text == text) return;  // the recorded answer checked again: no new try
+  if (before && trim(before->text) == trim(text)) return;  // the recorded answer checked again: no new try
   require_try(s, index);
   AssignmentAnswer a;
   a.item = index;
@@ -217,7 +217,7 @@ std::vector<std::string> resume_session(AssignmentSession& s, const json& suspen
       if (kind == AssignmentItemKind::Exercise) answer["answer"] = e[1];
       else if (kind == AssignmentItemKind::Explore) answer["visited"] = e[1] == 1 ? json(true) : e[1];
       else answer["state"] = e[1];
-      if (e.size() == 3) answer["tries"] = e[2];  // checked by the reader: an integer, at most the item's
+      if (e.size() == 3) answer["tries"] = e[2];  // checked by the reader: an integer >= 1
       sheet["answers"].push_back(std::move(answer));
     }
   }
@@ -226,7 +226,17 @@ std::vector<std::string> resume_session(AssignmentSession& s, const json& suspen
   if (!errors.empty()) return errors;
   std::vector<std::optional<AssignmentAnswer>> answers(n);
   for (AssignmentAnswer& a : parsed.sheet->answers) {
-    if (s.assignment.items[a.item].kind == AssignmentItemKind::Explore && !a.visited) continue;
+    const AssignmentItem& item = s.assignment.items[a.item];
+    if (item.kind == AssignmentItemKind::Explore && !a.visited) continue;
+    // Saved without a count (a suspend object from before tries, or one edited by hand): one try
+    // for an answer that was graded, never none, so that deleting the count does not give back
+    // every try.
+    if (item.kind != AssignmentItemKind::Explore && a.tries == 0)
+      a.tries = item.kind == AssignmentItemKind::Task ||
+                check_exercise(assignment_exercise(s.assignment, a.item, s.learner), a.text).readable;
+    // More than the item allows (the instructor lowered its "tries"): used up, the answer final,
+    // rather than the whole resume refused and the student's work lost.
+    if (item.tries && a.tries > *item.tries) a.tries = *item.tries;
     answers[a.item] = std::move(a);
   }
   s.answers = std::move(answers);
@@ -245,7 +255,9 @@ json assignment_session_json(const AssignmentSession& s) {
     const std::optional<AssignmentAnswer>& ans = s.answers[i];
     const std::string id = "item-" + std::to_string(i + 1);
     const unsigned used = ans ? ans->tries : 0;
-    const std::optional<unsigned> left = tries_left(s, i);
+    // Submitted, no item has a try left: every answer is final.
+    const std::optional<unsigned> left =
+        s.submitted && item.kind != AssignmentItemKind::Explore ? std::optional<unsigned>(0) : tries_left(s, i);
     const bool final_answer = left && *left == 0;
     json j{{"index", i}, {"id", id}, {"kind", assignment_item_kind_name(item.kind)}, {"title", item.title},
            {"points", item.points}, {"status", item_status(s, r)}, {"score", r.points}, {"max", r.max_points},
@@ -296,7 +308,9 @@ json assignment_session_json(const AssignmentSession& s) {
     }
     if (used) answers.back()["tries"] = used;
     // With a limit, what is left is part of the answer's feedback: "Not right yet." has a "yet".
-    if (item.tries && ans)
+    if (item.kind == AssignmentItemKind::Task && final_answer && feedback.rfind("Not yet: ", 0) == 0)
+      feedback.replace(0, 9, "Not done: ");
+    if (item.tries && ans && !s.submitted)
       feedback += final_answer ? " No tries left: this answer is final." : " " + tries_count(*left) + " left.";
     j["feedback"] = feedback;
     if (s.submitted) {
