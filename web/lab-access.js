@@ -150,10 +150,10 @@ class CSpaceLabAccess {
     const newest = log.length ? log[log.length - 1] : null;
     const key = newest ? newest.step + '\u0000' + newest.text : '';
     if (key !== this.seen.log) {
-      // The first poll shows where the lesson stands without announcing it as news.
+      // First poll: where the lesson stands, not news. No line: '' (not stale).
       const first = this.seen.log === undefined;
       this.seen.log = key;
-      if (newest && !first) this.announce(newest.text);
+      if (!first) this.announce(newest?.text ?? '');
     }
   }
 

@@ -162,6 +162,16 @@ test('parallel DOM: lessons, parameters both ways, steps into the live region, t
       .getAttribute('aria-disabled') === 'true', SEL);
     await screenshot(page, 'access-dom-run.png');
 
+    // (e) Another lesson: Step PRM's last line does not stay under "Latest event". Distances
+    // logs nothing, so the region empties; back on Step PRM it reads that lesson's newest line.
+    assert.notEqual(await page.locator(`${SEL} .lab-access-log`).textContent(), '');
+    await press(page, `${SEL} button[data-lesson="distances"]`);
+    assert.deepEqual(await api(page, 'log'), []);
+    await page.waitForFunction((s) => document.querySelector(`${s} .lab-access-log`).textContent === '', SEL);
+    await press(page, `${SEL} button[data-lesson="step-prm"]`);
+    const back = (await api(page, 'log')).at(-1).text;
+    await page.waitForFunction(([s, t]) => document.querySelector(`${s} .lab-access-log`).textContent === t, [SEL, back]);
+
     // Tab leaves the lab from the section's last control: no trap.
     const focusable = await page.locator(`${SEL} :is(button, input, select)`).all();
     await focusable.at(-1).focus();  // the last: Display's contrast
