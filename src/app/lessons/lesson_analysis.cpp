@@ -297,7 +297,11 @@ class AnalysisLesson : public Lesson, private NoSteps {
             {"trials", "trials", &kLabExperimentTrials},
             {"tab", "tab", nullptr, {"bound", "tiling", "visibility"}},
             {"mc_trials", "Monte Carlo samples", &kLabVisibilityTrials},
-            {"mc_seed", "Monte Carlo seed", &kMcSeed}};
+            {"mc_seed", "Monte Carlo seed", &kMcSeed},
+            // P9's square, whose wall is at x = 1/2, and the p that tabs 2.1 and P8 solve n for.
+            {"gap", "gap d", nullptr, {}, "the height of the opening in the middle of the wall (a number in [0, 1])"},
+            {"point", "point (x1, y1)", nullptr, {}, "the configuration that looks through the gap, comma-separated: x1 in [0, 1/2), y1 in [0, 1]"},
+            {"target", "target p", nullptr, {}, "the failure probability that n is solved for on tabs Bound (2.1) and Cube (P8), 0 < p < 1"}};
   }
 
   // What the open tab shows. P9's square is not the scene: its wall and gap are the tab's own.
