@@ -43,6 +43,8 @@ constexpr double kCircleHalf = 1.45;  // the circle view shows [-1.45, 1.45]^2: 
 constexpr ImU32 kQ1 = theme::kBlue;
 constexpr ImU32 kQ2 = theme::kVermillion;
 constexpr ImU32 kShortArc = theme::kOrange;
+// The names of the circle's ticks at 0, π/2, π and 3π/2.
+const char* const kTickNames[] = {"0 = 2π", "π/2", "π", "3π/2"};
 constexpr ImU32 kLongArc = theme::rgba(86, 180, 233, 110);  // sky blue, faint
 const ImU32& kSegment = theme::kInk;
 constexpr ImU32 kClosest = theme::kPurple;
@@ -453,9 +455,6 @@ class DistancesLesson : public Lesson {
       const ImVec2 in = v.to_screen(Vec2(0.95 * std::cos(angle), 0.95 * std::sin(angle)));
       const ImVec2 out = v.to_screen(Vec2(1.05 * std::cos(angle), 1.05 * std::sin(angle)));
       dl->AddLine(in, out, kGuide, 2.0f);
-      static const char* const kNames[] = {"0 = 2π", "π/2", "π", "3π/2"};
-      const ImVec2 at = v.to_screen(Vec2(1.17 * std::cos(angle), 1.12 * std::sin(angle)));
-      boxed_text_centred(dl, at, theme::kLabel, kNames[k]);
     }
     // The arcs: from q1 by the shorter turn (orange), and the rest of the circle (faint). When
     // they are equally long both are drawn alike, dashed by alternating colours.
@@ -467,19 +466,25 @@ class DistancesLesson : public Lesson {
     } else if (a.kind == S1Case::General) {
       arc(v, a.wrapped1, other, kLongArc, 5.0f);
       arc(v, a.wrapped1, turn, kShortArc, 8.0f);
-      arc_label(v, a.wrapped1 + 0.5 * turn, "d = " + num(a.distance), theme::kTextAmount);
-      arc_label(v, a.wrapped1 + 0.5 * other, "2π − d = " + num(kTwoPi - a.distance), theme::kTextKey);
     } else if (a.kind == S1Case::Antipodal) {
       dashed_arc(v, a.wrapped1, turn);
       dashed_arc(v, a.wrapped1, other);
-      arc_label(v, a.wrapped1 + 0.5 * turn, "π", theme::kTextAmount);
-      arc_label(v, a.wrapped1 + 0.5 * other, "π", theme::kTextAmount);
     }
     // The unit vectors (cos q, sin q): the first columns of R(q1) and R(q2).
     for (int which = 0; which < 2; ++which) {
       const double w = which == 0 ? a.wrapped1 : a.wrapped2;
       const ImU32 colour = which == 0 ? kQ1 : kQ2;
       dl->AddLine(o, v.to_screen(Vec2(std::cos(w), std::sin(w))), theme::with_alpha(colour, 170), 2.0f);
+    }
+    // The ticks' names over the arcs (on a phone "0 = 2π" reaches the circle), then the arcs'
+    // lengths, over the vectors (which may cross them once moved aside).
+    for (int k = 0; k < 4; ++k) boxed_text_centred(dl, tick_name_at(v, k), theme::kLabel, kTickNames[k]);
+    if (!hidden && a.kind == S1Case::General) {
+      arc_label(v, a.wrapped1 + 0.5 * turn, "d = " + num(a.distance), theme::kTextAmount);
+      arc_label(v, a.wrapped1 + 0.5 * other, "2π − d = " + num(kTwoPi - a.distance), theme::kTextKey);
+    } else if (!hidden && a.kind == S1Case::Antipodal) {
+      arc_label(v, a.wrapped1 + 0.5 * turn, "π", theme::kTextAmount);
+      arc_label(v, a.wrapped1 + 0.5 * other, "π", theme::kTextAmount);
     }
     // The handles, q2 over q1 (equal angles: both show, q2's ring around q1's dot).
     // Their labels one above the other when the points coincide.
@@ -532,8 +537,41 @@ class DistancesLesson : public Lesson {
       arc(v, from + turn * i / kPieces, turn / kPieces, i % 2 == 0 ? kShortArc : theme::kSkyBlue, 6.0f);
   }
 
+  // Where the name of the circle's tick k (at angle k π/2) is centred.
+  static ImVec2 tick_name_at(const WorkspaceView& v, int k) {
+    const double angle = k * kPi / 2;
+    return v.to_screen(Vec2(1.17 * std::cos(angle), 1.12 * std::sin(angle)));
+  }
+
+  // An arc's label at 0.58 of the radius towards the arc's middle (`angle`), moved aside (to
+  // its own side of that line) until it is clear of the ticks and their names. On a phone the
+  // circle is about as wide as "2π − d = 5.3000": the label sat on the name "π" or "0 = 2π". A
+  // desktop's circle leaves the labels where they were.
   static void arc_label(const WorkspaceView& v, double angle, const std::string& text, ImU32 colour) {
-    const ImVec2 at = v.to_screen(Vec2(0.58 * std::cos(angle), 0.58 * std::sin(angle)));
+    const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+    const float ux = static_cast<float>(std::cos(angle)), uy = static_cast<float>(-std::sin(angle));  // y down
+    const ImVec2 o = v.to_screen(Vec2(0, 0));
+    const float r = 0.58f * v.scale();
+    // Half of each box as boxed_text draws it, and 2 px between boxes.
+    const float hw = 0.5f * size.x + 5.0f, hh = 0.5f * size.y + 3.0f;
+    const auto clashes = [&](ImVec2 c) {
+      for (int k = 0; k < 4; ++k) {
+        const ImVec2 at = tick_name_at(v, k), name = ImGui::CalcTextSize(kTickNames[k]);
+        const ImVec2 tick = v.to_screen(Vec2(std::cos(k * kPi / 2), std::sin(k * kPi / 2)));
+        // The name's box and the tick (0.95 to 1.05 of the radius), as one rectangle.
+        const float x0 = std::min(at.x - 0.5f * name.x - 3.0f, tick.x - 0.06f * v.scale()),
+                    x1 = std::max(at.x + 0.5f * name.x + 3.0f, tick.x + 0.06f * v.scale()),
+                    y0 = std::min(at.y - 0.5f * name.y - 1.0f, tick.y - 0.06f * v.scale()),
+                    y1 = std::max(at.y + 0.5f * name.y + 1.0f, tick.y + 0.06f * v.scale());
+        if (c.x + hw > x0 && c.x - hw < x1 && c.y + hh > y0 && c.y - hh < y1) return true;
+      }
+      return false;
+    };
+    ImVec2 at(o.x + r * ux, o.y + r * uy);
+    for (int step = 0; step < 40 && clashes(at); ++step) {
+      at.x -= 2.0f * uy;
+      at.y += 2.0f * ux;
+    }
     boxed_text_centred(v.draw_list(), at, colour, text);
   }
 
