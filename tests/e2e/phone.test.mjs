@@ -183,6 +183,32 @@ test('Phone upright: a finger draws and moves a disk, two fingers zoom, the stri
   assert.deepEqual(errors, []);
 }));
 
+test('Phone upright: P13\'s two plots have the View tab, its forces table the Controls tab, uncut',
+  () => withBrowser(async ({ browser, url }) => {
+  const { page, errors, press, layout, fingerDrag } = await phone(browser, url, PORTRAIT, '?lesson=step-prm');
+  await api(page, 'open_problem', { id: 'P13', seed: 7 });
+  await waitFrames(page, 3);
+  await press('tab:view');
+  // Under the views the table left each of them 179 px (a plot of 108 px).
+  const l = await layout();
+  for (const name of ['workspace', 'cspace'])
+    assert.ok(view(l, name).h >= 240, `${name} is ${view(l, name).h} px tall`);
+  await screenshot(page, 'phone-portrait-P13-views.png');
+  // On the Controls tab: every row of the table, its columns within the width (in two tables).
+  await press('tab:controls');
+  await waitFrames(page, 3);
+  // Under the card and the lesson's examples: swiped up to (drawn only where it is seen).
+  let s = await api(page, 'state', { layout: true });
+  for (let i = 0; i < 6 && s.forces_layout.rows.length === 0; ++i) {
+    await fingerDrag({ x: 195, y: 700 }, { x: 195, y: 450 });
+    s = await api(page, 'state', { layout: true });
+  }
+  assert.equal(s.forces_layout.rows.length, 4, 'a row per vertex');
+  assert.ok(s.forces_layout.table_right <= s.forces_layout.area_right, JSON.stringify(s.forces_layout));
+  await screenshot(page, 'phone-portrait-P13-controls.png');
+  assert.deepEqual(errors, []);
+}));
+
 test('Phone on its side: compact, views side by side, PRM stepped', () => withBrowser(async ({ browser, url }) => {
   const { page, errors, press, layout } = await phone(browser, url, LANDSCAPE, '?lesson=torus');
   let l = await layout();

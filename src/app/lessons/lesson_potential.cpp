@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
+#include <initializer_list>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -167,6 +168,9 @@ class PotentialLesson : public Lesson, private Stepper {
       if (ui::small_button(e.label)) set_example(e.scene, ctx);
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", e.tooltip);
     }
+    // In the compact layout (a phone) the forces area is here, the whole width, and scrolls with
+    // the panel: under the views it left the two plots 108 px of a 390 x 844 screen.
+    if (ctx.compact) forces_area(ImVec2(ImGui::GetContentRegionAvail().x, forces_panel_height()));
 
     if (panel::fold("Field")) field_controls();
     if (panel::fold("Gradient descent")) descent_controls(ctx);
@@ -232,11 +236,11 @@ class PotentialLesson : public Lesson, private Stepper {
     status_text();
   }
 
-  // The views on top, the forces table under them (the panel is too narrow for its vectors).
+  // The views on top, the forces table under them (the panel is too narrow for its vectors). In
+  // the compact layout the views have the whole area; the table is on the Controls tab (panel()).
   void views(LabContext& ctx, ImVec2 size) override {
-    // (On a phone the views come first: the forces table scrolls in less of the height.)
-    const float below = std::min(forces_height(size), ctx.compact ? 0.3f * size.y : size.y);
-    const ImVec2 top(size.x, std::max(120.0f, size.y - below - ImGui::GetStyle().ItemSpacing.y));
+    const float below = ctx.compact ? 0.0f : forces_height(size);
+    const ImVec2 top(size.x, ctx.compact ? size.y : std::max(120.0f, size.y - below - ImGui::GetStyle().ItemSpacing.y));
     if (robot_kind() == Kind::Point) {
       workspace(ctx, top);
     } else {
@@ -246,7 +250,7 @@ class PotentialLesson : public Lesson, private Stepper {
       between(s);
       cspace(ctx, s.second);
     }
-    forces_area(ImVec2(size.x, below));
+    if (!ctx.compact) forces_area(ImVec2(size.x, below));
     editor_.help_window();
   }
 
@@ -629,7 +633,8 @@ class PotentialLesson : public Lesson, private Stepper {
     }
   }
 
-  // U at the robot, in the descent's status; the table of every control point is under the views.
+  // U at the robot, in the descent's status; the table of every control point is under the views
+  // (in the compact layout, in the panel).
   void robot_summary() {
     const PotentialReport r = field_->evaluate(shown());
     if (r.contact) {
@@ -777,34 +782,14 @@ class PotentialLesson : public Lesson, private Stepper {
     ImGui::BeginChild("##forces", ImVec2(size.x, avail), false);
     ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(ImGui::GetStyle().ItemSpacing.x, 2.0f));
     ImGui::PushStyleVar(ImGuiStyleVar_CellPadding, ImVec2(2.0f, 1.0f));
-    const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerV |
-                                  ImGuiTableFlags_NoHostExtendX;
-    if (ImGui::BeginTable("##vertex-forces", 6, flags)) {
-      for (const char* h : t.header) ImGui::TableSetupColumn(h);
-      ImGui::TableHeadersRow();
-      for (std::size_t i = 0; i < t.rows.size(); ++i) {
-        ImGui::TableNextRow();
-        ImGui::TableNextColumn();
-        const bool chosen = static_cast<int>(i) == t.chosen;
-        const ImGuiSelectableFlags fixed = instructor::param_locked("point") ? ImGuiSelectableFlags_Disabled : 0;
-        if (ImGui::Selectable(t.rows[i][0].c_str(), chosen, ImGuiSelectableFlags_SpanAllColumns | fixed)) chosen_ = static_cast<int>(i);
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("work (5.5) and (5.6) for %s", t.rows[i][0].c_str());
-        const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
-        layout_.rows.push_back({lo.x, lo.y, hi.x, hi.y});
-        for (int c = 1; c < 6; ++c) {
-          ImGui::TableNextColumn();
-          const ImVec4 colour = c == 3 ? (t.outside[i] ? theme::vec4(theme::kTextDim) : theme::vec4(theme::kTextBad))
-                                : c == 4 ? theme::vec4(theme::kTextGood) : ImGui::GetStyleColorVec4(ImGuiCol_Text);
-          ImGui::TextColored(colour, "%s", t.rows[i][static_cast<std::size_t>(c)].c_str());
-        }
-      }
-      ImGui::TableNextRow();
-      for (const std::string& cell : t.sum) {
-        ImGui::TableNextColumn();
-        ImGui::TextUnformatted(cell.c_str());
-      }
-      ImGui::EndTable();
-      layout_.table_right = ImGui::GetItemRectMax().x;
+    // One table where its six columns fit; narrower (a phone), two under each other, the point's
+    // name in both: ρ, ∇ρ and F_rep,i, then F_att,i and J_i^T F_i (they were cut off on the right).
+    layout_.table_right = 0.0f;
+    if (table_width(t, {0, 1, 2, 3, 4, 5}) <= ImGui::GetContentRegionAvail().x) {
+      forces_table(t, "##vertex-forces", {0, 1, 2, 3, 4, 5}, true);
+    } else {
+      forces_table(t, "##vertex-forces", {0, 1, 2, 3}, true);
+      forces_table(t, "##vertex-forces-2", {0, 4, 5}, false);
     }
     layout_.area_right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
     // Room for the longest case under the table (tau, and (5.5), (5.6) with one of them wrapped:
@@ -851,6 +836,64 @@ class PotentialLesson : public Lesson, private Stepper {
       begin = end < text.size() ? end + 1 : end;
       first = false;
     }
+  }
+
+  // The width a table of `columns` of the forces takes (fixed-fit columns: the widest cell, the
+  // cell padding, an inner border).
+  static float table_width(const ForcesText& t, std::initializer_list<int> columns) {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    float total = 0.0f;
+    for (const int c : columns) {
+      float w = ImGui::CalcTextSize(t.header[static_cast<std::size_t>(c)]).x;
+      for (const auto& row : t.rows) w = std::max(w, ImGui::CalcTextSize(row[static_cast<std::size_t>(c)].c_str()).x);
+      w = std::max(w, ImGui::CalcTextSize(t.sum[static_cast<std::size_t>(c)].c_str()).x);
+      total += w + 2.0f * style.CellPadding.x + 1.0f;
+    }
+    return total;
+  }
+
+  // A table of the forces' `columns` (0: the point, a row to click; 3, 4: F_rep, F_att, coloured).
+  // `rows`: record where its rows are (the tests click them).
+  void forces_table(const ForcesText& t, const char* id, std::initializer_list<int> columns, bool rows) {
+    const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerV |
+                                  ImGuiTableFlags_NoHostExtendX;
+    const float left = ImGui::GetCursorScreenPos().x;
+    if (!ImGui::BeginTable(id, static_cast<int>(columns.size()), flags)) return;
+    for (const int c : columns) ImGui::TableSetupColumn(t.header[static_cast<std::size_t>(c)]);
+    ImGui::TableHeadersRow();
+    for (std::size_t i = 0; i < t.rows.size(); ++i) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      const bool chosen = static_cast<int>(i) == t.chosen;
+      const ImGuiSelectableFlags fixed = instructor::param_locked("point") ? ImGuiSelectableFlags_Disabled : 0;
+      if (ImGui::Selectable(t.rows[i][0].c_str(), chosen, ImGuiSelectableFlags_SpanAllColumns | fixed)) chosen_ = static_cast<int>(i);
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("work (5.5) and (5.6) for %s", t.rows[i][0].c_str());
+      const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+      if (rows) layout_.rows.push_back({lo.x, lo.y, hi.x, hi.y});
+      for (const int c : columns) {
+        if (c == 0) continue;  // the point: the row's Selectable
+        ImGui::TableNextColumn();
+        const ImVec4 colour = c == 3 ? (t.outside[i] ? theme::vec4(theme::kTextDim) : theme::vec4(theme::kTextBad))
+                              : c == 4 ? theme::vec4(theme::kTextGood) : ImGui::GetStyleColorVec4(ImGuiCol_Text);
+        ImGui::TextColored(colour, "%s", t.rows[i][static_cast<std::size_t>(c)].c_str());
+      }
+    }
+    ImGui::TableNextRow();
+    for (const int c : columns) {
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(t.sum[static_cast<std::size_t>(c)].c_str());
+    }
+    ImGui::EndTable();
+    // (The item's rectangle ends at the clip: the width it needs tells a table cut off.)
+    layout_.table_right = std::max({layout_.table_right, ImGui::GetItemRectMax().x, left + table_width(t, columns)});
+  }
+
+  // The forces area's height on the panel: all of its content (the panel scrolls).
+  float forces_panel_height() const {
+    ImGui::PushFont(fonts().small);
+    const float header = ImGui::GetFrameHeightWithSpacing();
+    ImGui::PopFont();
+    return forces_open_ ? header + forces_content_h_ : header;
   }
 
   // How tall the area under the views is: what its content took last frame, at most half of
