@@ -15,13 +15,15 @@ namespace {
 using json = nlohmann::json;
 using namespace csl;
 
-Assignment example() {
-  const json j = json::parse(R"({"format": "cspacelab-assignment", "version": 1, "title": "Week 3", "pass": 0.5,
+// `tries`: the exercise's and the task's limit, if any.
+Assignment example(std::optional<unsigned> tries = std::nullopt) {
+  json j = json::parse(R"({"format": "cspacelab-assignment", "version": 1, "title": "Week 3", "pass": 0.5,
     "items": [
       {"kind": "exercise", "problem": "P10", "points": 2},
       {"kind": "explore", "title": "Look", "prompt": "Step it.", "lesson": "step-prm"},
       {"kind": "task", "title": "Find a path", "prompt": "At most 50 samples.", "lesson": "step-prm", "points": 3,
        "check": {"all": [{"pointer": "/solved", "equals": true}, {"pointer": "/params/samples", "max": 50}]}}]})");
+  if (tries) j["items"][0]["tries"] = j["items"][2]["tries"] = *tries;
   AssignmentParse p = parse_assignment(j);
   REQUIRE(p.assignment);
   return *p.assignment;
@@ -189,15 +191,8 @@ TEST_CASE("assignment session: an answer that would overflow the suspend data is
 }
 
 TEST_CASE("assignment session: tries are counted, limited, told, saved and resumed") {
-  json j = json::parse(R"({"format": "cspacelab-assignment", "version": 1, "title": "Tries",
-    "items": [
-      {"kind": "exercise", "problem": "P10", "tries": 2},
-      {"kind": "explore", "title": "Look", "prompt": "Step it.", "lesson": "step-prm"},
-      {"kind": "task", "title": "Find a path", "prompt": "At most 50 samples.", "lesson": "step-prm", "tries": 2,
-       "check": {"all": [{"pointer": "/solved", "equals": true}, {"pointer": "/params/samples", "max": 50}]}}]})");
-  AssignmentParse p = parse_assignment(j);
-  REQUIRE(p.assignment);
-  AssignmentSession s = start_assignment_session(*p.assignment, "student-7");
+  const Assignment two = example(2);
+  AssignmentSession s = start_assignment_session(two, "student-7");
   const Exercise e = assignment_exercise(s.assignment, 0, "student-7");
   const auto item = [&](std::size_t i) { return assignment_session_json(s)["items"][i]; };
   CHECK(item(0)["tries"] == 0);
@@ -259,19 +254,19 @@ TEST_CASE("assignment session: tries are counted, limited, told, saved and resum
   // Saved and resumed: the count comes back, and the answer stays final.
   CHECK(st["suspend"]["a"][0] == json({0, s1_answer(e), 2}));
   CHECK(st["suspend"]["a"][1] == json({1, 1}));
-  AssignmentSession r = start_assignment_session(*p.assignment, "student-7");
+  AssignmentSession r = start_assignment_session(two, "student-7");
   REQUIRE(resume_session(r, json::parse(st["suspend"].dump())).empty());
   CHECK(assignment_session_json(r) == st);
   CHECK_THROWS_AS(record_exercise_answer(r, 0, "1"), std::invalid_argument);
   // More tries than the item allows (its limit lowered since) resume as used up, the work kept.
-  AssignmentSession r2 = start_assignment_session(*p.assignment, "student-7");
+  AssignmentSession r2 = start_assignment_session(two, "student-7");
   REQUIRE(resume_session(r2, json::parse(R"({"v": 1, "c": 0, "s": 0, "a": [[0, "1", 3]]})")).empty());
   CHECK(r2.answers[0]->text == "1");
   CHECK(r2.answers[0]->tries == 2);
   CHECK(tries_left(r2, 0) == 0u);
   // Saved without a count (from before tries, or the count deleted by hand): one try for each
   // graded answer, none for one the lab cannot read; a bad count is refused whole.
-  AssignmentSession r3 = start_assignment_session(*p.assignment, "student-7");
+  AssignmentSession r3 = start_assignment_session(two, "student-7");
   REQUIRE(resume_session(r3, json::parse(R"({"v": 1, "c": 0, "s": 0, "a": [[0, "1"], [2, {"solved": false}]]})")).empty());
   CHECK(r3.answers[0]->tries == 1);
   CHECK(r3.answers[2]->tries == 1);
