@@ -69,7 +69,8 @@ test('exercises: each learner their own numbers, the same on a rerun, fixed seed
   assert.equal(ann.items[1].format_hint, 'radians, e.g. 1.57 or pi/2 (within 0.01 in this assignment)');
   assert.equal(ann.items[3].lesson, 'step-prm');
   assert.equal(ann.items[3].scene.obstacles.length, 2);
-  assert.equal(ann.items[4].check_text, 'solved is true and the parameter samples is at most 50');
+  assert.equal(ann.items[4].check_text,
+               'solved is true and the parameter samples is at most 50 and scene name is "A passage through a thick wall"');
   for (const item of ann.items) {
     assert.ok(!('answer' in item) && !('expected' in item) && !('worked' in item), JSON.stringify(item));
   }
@@ -91,7 +92,7 @@ test('grade: answers computed here earn their points; totals, completion and suc
       { item: 1, answer: s1(p10.q1, p10.q2).toFixed(4) },
       { item: 2, answer: String(minGrid(p12.center, p12.radius)) },
       { item: 3, visited: true },
-      { item: 4, state: { solved: true, nodes: 47, params: { samples: 45, seed: 9 } } },
+      { item: 4, state: { solved: true, nodes: 47, params: { samples: 45, seed: 9 }, scene_name: 'A passage through a thick wall' } },
     ],
   };
   const out = json('assignment', 'grade', EXAMPLE, '--answers', temp(answers));

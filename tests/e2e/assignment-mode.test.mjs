@@ -165,7 +165,8 @@ test('an assignment done in the card: exercises by keyboard and mouse, the task 
   await press(page, 'assignment-check-lab');
   st = await state(page);
   assert.equal(st.items[4].status, 'correct', st.items[4].feedback);
-  assert.deepEqual(st.items[4].answer, { solved: true, params: { samples: 50 } }, 'what the check read, kept');
+  assert.deepEqual(st.items[4].answer, { solved: true, params: { samples: 50 }, scene_name: 'A passage through a thick wall' },
+                   'what the check read, kept');
   const card = await screenshot(page, 'assignment-task.png');
   assert.ok((await inspectPng(browser, card.png)).colours > 25);
 
@@ -492,6 +493,7 @@ test('tries: P12 allows 3; every graded check counts, and used up the answer is 
   const given = exercises('')[2].given;
   const n = minGrid(given.center, given.radius);
   await press(page, 'assignment-item-2');
+  let st;
   let it = (await state(page)).items[2];
   assert.deepEqual([it.tries, it.tries_allowed, it.tries_left, it.tries_text], [0, 3, 3, 'Tries: 0 of 3 used.']);
 
@@ -515,8 +517,11 @@ test('tries: P12 allows 3; every graded check counts, and used up the answer is 
   // API refuses, and the page's copy says so and makes its field read-only.
   await typeAnswer(page, String(n), { enter: false });
   await press(page, 'assignment-check');
-  it = (await state(page)).items[2];
+  st = await state(page);
+  it = st.items[2];
   assert.deepEqual([it.answer, it.status, it.tries], [String(n - 1), 'incorrect', 3]);
+  // Not refused by core either: the disabled Check sent nothing (a refusal would be the card's note).
+  assert.equal(st.note, '', 'the disabled Check did not send the answer');
   assert.match(await page.evaluate(() => {
     try { window.cspacelab.call('assignment_answer', { index: 2, answer: '1' }); } catch (e) { return e.message; }
     return 'taken';
@@ -533,7 +538,7 @@ test('tries: P12 allows 3; every graded check counts, and used up the answer is 
 
   // Counted where an instructor looks: the interaction (SCORM 2004's description), the answers
   // the CLI grades (with their tries), and the review.
-  let st = await state(page);
+  st = await state(page);
   assert.equal(st.interactions[2].description, `${st.items[2].title} (3 tries)`);
   assert.deepEqual(st.answers.answers.find((a) => a.item === 2), { item: 2, answer: String(n - 1), tries: 3 });
   const graded = cli('assignment', 'grade', FILE, '--answers', tempJson(st.answers));

@@ -17,7 +17,7 @@ const EXAMPLE = fs.readFileSync(fileURLToPath(new URL('../../docs/assignment-exa
 // --answers ANSWERS --learner stu-17`, ANSWERS = GRADED below): the fake's right answers and the
 // grade the fake is checked against.
 const GRADE = JSON.parse(fs.readFileSync(fileURLToPath(new URL('./fixtures/assignment-grade-stu-17.json', import.meta.url)), 'utf8'));
-const SOLVED = { solved: true, params: { samples: 40 } };
+const SOLVED = { solved: true, params: { samples: 40 }, scene_name: 'A passage through a thick wall' };
 const GRADED = [[0, 'T^2'], [1, '3.05'], [2, '7'], [4, SOLVED]];
 
 /**
@@ -41,7 +41,10 @@ function fakeApp() {
   function judge(item, index, answer) {
     if (answer === undefined) return { attempted: false, correct: false };
     if (item.kind === 'explore') return { attempted: true, correct: true };
-    if (item.kind === 'task') return { attempted: true, correct: answer.solved === true && answer.params.samples <= 50 };
+    if (item.kind === 'task') {
+      return { attempted: true,
+               correct: answer.solved === true && answer.params.samples <= 50 && answer.scene_name === item.check.all[2].equals };
+    }
     const expected = GRADE.items[index].expected;
     if (notation(item)) return { attempted: answer.trim() !== '', correct: answer.trim() === expected };
     const x = Number(answer);
