@@ -110,9 +110,10 @@ test('Phone upright: every lesson\'s main view takes the width', () => withBrows
     assert.ok(v.h >= 150, `${id}: ${main[id]} is ${v.h} px tall`);
     await screenshot(page, `phone-portrait-${id}.png`);
   }
-  // The tabs' buttons are touch targets: at least 44 px high.
-  for (const name of ['tab:view', 'tab:controls', 'lesson-menu'])
-    assert.ok((await control(name)).h >= 44, `${name} is 44 px high`);
+  // The tabs' buttons, the lesson menu and the top bar's buttons are touch targets: at least
+  // 44 px high (Homework, Share, Embed and File were 26 px).
+  for (const name of ['tab:view', 'tab:controls', 'lesson-menu', 'homework', 'share', 'embed', 'file'])
+    assert.ok((await control(name)).h >= 44, `${name} is ${(await control(name)).h} px high, not 44`);
   // Controls: the side panel, the whole width; no view is drawn meanwhile.
   await press('tab:controls');
   l = await layout();

@@ -226,9 +226,14 @@ void App::compact_bar() {
   // (On a phone upright the lab's name gives way: Homework and the page's actions then share
   // the first row, and the lesson menu below names what is on screen.)
   const bool titled = web::page().minimal || ImGui::GetContentRegionAvail().x >= kTitledWidth;
+  ui::tall_bar() = input::touch();  // until the page's actions below
   if (titled) {
     ImGui::PushFont(fonts().title);
+    // Centred on the row's buttons, 44 px high by touch.
+    const float pad = ui::tall_bar() ? 0.5f * (bar_h - ImGui::GetFontSize()) : ImGui::GetStyle().FramePadding.y;
+    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(ImGui::GetStyle().FramePadding.x, pad));
     ImGui::AlignTextToFramePadding();
+    ImGui::PopStyleVar();
     ImGui::TextUnformatted(web::page().minimal ? current_name.c_str() : "C-Space Lab");
     ImGui::PopFont();
   }
@@ -281,6 +286,7 @@ void App::compact_bar() {
   }
   if (after() + actions_w <= right) ImGui::SameLine(std::max(after(), right - actions_w));
   web::top_bar_actions(ctx_, current_name);
+  ui::tall_bar() = false;
   if (!menu_done) lesson_menu(-1);
   // Row 3: the tabs, each half the width (or, on a wide screen, the start of a row that holds
   // the playback strip and the tools too).

@@ -205,7 +205,7 @@ void HomeworkPanel::register_api(JsApi& api) {
 }
 
 void HomeworkPanel::menu_button() {
-  if (ImGui::Button("Homework") || want_map_) {
+  if (ui::bar_button("Homework") || want_map_) {
     want_map_ = false;
     ImGui::OpenPopup("homework-map");
     web::dismiss_welcome();

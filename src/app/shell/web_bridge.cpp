@@ -7,6 +7,7 @@
 
 #include "app/shell/bundled_scenes.hpp"
 #include "app/shell/theme.hpp"
+#include "app/shell/ui.hpp"
 #include "core/base/version.hpp"
 #include "imgui.h"
 
@@ -284,21 +285,21 @@ void top_bar_actions(LabContext& ctx, const std::string& lesson_name) {
   const char* restore = kRestore;
   if (!s.previous.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Button, theme::vec4(theme::kRestoreButton));
-    if (ImGui::Button(restore)) page_action("restore-previous");
+    if (ui::bar_button(restore)) page_action("restore-previous");
     record("restore-previous");
     ImGui::PopStyleColor();
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("bring back %s (what you have now becomes the previous work)", s.previous.c_str());
     ImGui::SameLine();
   }
-  if (ImGui::Button("Share")) page_action("share");
+  if (ui::bar_button("Share")) page_action("share");
   record("share");
   tooltip("a link to exactly this: lesson, scene, parameters, seed and step (copied to the clipboard)");
   ImGui::SameLine();
-  if (ImGui::Button("Embed")) page_action("embed");
+  if (ui::bar_button("Embed")) page_action("embed");
   record("embed");
   tooltip("HTML to put this lab, as it is now, in a course page");
   ImGui::SameLine();
-  if (ImGui::Button("File")) ImGui::OpenPopup("##file-menu");
+  if (ui::bar_button("File")) ImGui::OpenPopup("##file-menu");
   record("file");
   tooltip("import, export, reset");
   if (ImGui::BeginPopup("##file-menu")) {
