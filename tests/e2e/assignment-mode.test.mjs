@@ -520,8 +520,9 @@ test('tries: P12 allows 3; every graded check counts, and used up the answer is 
   st = await state(page);
   it = st.items[2];
   assert.deepEqual([it.answer, it.status, it.tries], [String(n - 1), 'incorrect', 3]);
-  // Not refused by core either: the disabled Check sent nothing (a refusal would be the card's note).
-  assert.equal(st.note, '', 'the disabled Check did not send the answer');
+  // Not refused by core either: the disabled field took no keys (the typed count, had it gone
+  // in and been sent, would have been refused, and the refusal shown as the card's note).
+  assert.equal(st.note, '', 'the disabled field took the typed count');
   assert.match(await page.evaluate(() => {
     try { window.cspacelab.call('assignment_answer', { index: 2, answer: '1' }); } catch (e) { return e.message; }
     return 'taken';

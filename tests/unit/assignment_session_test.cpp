@@ -232,6 +232,7 @@ TEST_CASE("assignment session: tries are counted, limited, told, saved and resum
   record_task_state(s, 2, big_state(true, 80));
   CHECK(item(2)["tries"] == 1);
   CHECK(item(2)["status"] == "incorrect");
+  CHECK(item(2)["feedback"].get<std::string>().rfind("Not yet: ", 0) == 0);  // it may still be checked again
   CHECK(item(2)["feedback"].get<std::string>().find("1 try left.") != std::string::npos);
   record_task_state(s, 2, big_state(false, 70));
   CHECK(item(2)["tries_left"] == 0);
@@ -258,12 +259,15 @@ TEST_CASE("assignment session: tries are counted, limited, told, saved and resum
   REQUIRE(resume_session(r, json::parse(st["suspend"].dump())).empty());
   CHECK(assignment_session_json(r) == st);
   CHECK_THROWS_AS(record_exercise_answer(r, 0, "1"), std::invalid_argument);
-  // More tries than the item allows (its limit lowered since) resume as used up, the work kept.
+  // More tries than the item allows (its limit lowered since) resume as used up, the work and
+  // the true count kept.
   AssignmentSession r2 = start_assignment_session(two, "student-7");
   REQUIRE(resume_session(r2, json::parse(R"({"v": 1, "c": 0, "s": 0, "a": [[0, "1", 3]]})")).empty());
   CHECK(r2.answers[0]->text == "1");
-  CHECK(r2.answers[0]->tries == 2);
+  CHECK(r2.answers[0]->tries == 3);
   CHECK(tries_left(r2, 0) == 0u);
+  CHECK(assignment_session_json(r2)["items"][0]["tries_text"] == "Tries: 3 (2 allowed).");
+  CHECK(session_suspend(r2)["a"][0][2] == 3);
   // Saved without a count (from before tries, or the count deleted by hand): one try for each
   // graded answer, none for one the lab cannot read; a bad count is refused whole.
   AssignmentSession r3 = start_assignment_session(two, "student-7");

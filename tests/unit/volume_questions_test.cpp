@@ -47,6 +47,8 @@ TEST_CASE("volume questions: the space's name and dimension") {
   const csl::ExerciseCheck garbled = csl::check_volume_question("name", a, 0.5, "((");
   CHECK_FALSE(garbled.correct);
   CHECK_FALSE(garbled.readable);
+  CHECK(garbled.explanation.find("could not read") == std::string::npos);  // the lesson says "not an answer: "
+  CHECK(!garbled.explanation.empty());
   CHECK(right(p, "dimension", "3"));
   CHECK(right(a, "dimension", " 3 "));
   CHECK_FALSE(right(a, "dimension", "2"));

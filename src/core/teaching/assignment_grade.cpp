@@ -165,7 +165,7 @@ AssignmentGrade grade_assignment(const Assignment& a, const AnswerSheet& sheet, 
         const ConditionResult c = evaluate_state_condition(item.check, ans->state);
         r.attempted = true;
         r.correct = c.met;
-        r.explanation = c.met ? "Done: " : "Not yet: ";
+        r.explanation = c.met ? "Done: " : "Not done: ";
         for (std::size_t k = 0; k < c.lines.size(); ++k) r.explanation += (k ? "; " : "") + c.lines[k];
         r.explanation += ".";
         break;

@@ -7,7 +7,7 @@
 //   {"learner": "ID",                       optional: whose numbers the exercises are
 //    "answers": [{"item": 0, "answer": "pi/2"},        an exercise: what the student typed
 //                {"item": 1, "visited": true},         an explore item: the student went there
-//                {"item": 2, "state": {...}}]}          a task: the lesson's state() at submission
+//                {"item": 2, "state": {...}}]}          a task: the lesson's state() that Check my lab recorded
 // Each item at most once, with the field its kind takes; items without an answer are not
 // attempted. An exercise's or task's answer may say how many times it was checked, "tries": an
 // integer >= 1 (the page's assignment mode counts them); it is reported beside the item's own

@@ -59,9 +59,12 @@ void require_try(const AssignmentSession& s, std::size_t index) {
 
 std::string tries_count(unsigned n) { return std::to_string(n) + (n == 1 ? " try" : " tries"); }
 
-// "Tries: 1 of 3 used." with a limit; "Tries: 2." without one, once there are any.
+// "Tries: 1 of 3 used." with a limit ("Tries: 3 (2 allowed)." over one lowered since); "Tries:
+// 2." without one, once there are any.
 std::string tries_text(const AssignmentItem& item, unsigned used) {
   if (item.kind == AssignmentItemKind::Explore) return "";
+  if (item.tries && used > *item.tries)
+    return "Tries: " + std::to_string(used) + " (" + std::to_string(*item.tries) + " allowed).";
   if (item.tries) return "Tries: " + std::to_string(used) + " of " + std::to_string(*item.tries) + " used.";
   return used ? "Tries: " + std::to_string(used) + "." : "";
 }
@@ -234,9 +237,9 @@ std::vector<std::string> resume_session(AssignmentSession& s, const json& suspen
     if (item.kind != AssignmentItemKind::Explore && a.tries == 0)
       a.tries = item.kind == AssignmentItemKind::Task ||
                 check_exercise(assignment_exercise(s.assignment, a.item, s.learner), a.text).readable;
-    // More than the item allows (the instructor lowered its "tries"): used up, the answer final,
-    // rather than the whole resume refused and the student's work lost.
-    if (item.tries && a.tries > *item.tries) a.tries = *item.tries;
+    // More than the item allows (the instructor lowered its "tries") is kept as counted: the
+    // answer is final (tries_left() is 0), the work kept rather than the resume refused, and the
+    // count an LMS holds stays the true one.
     answers[a.item] = std::move(a);
   }
   s.answers = std::move(answers);
@@ -308,8 +311,10 @@ json assignment_session_json(const AssignmentSession& s) {
     }
     if (used) answers.back()["tries"] = used;
     // With a limit, what is left is part of the answer's feedback: "Not right yet." has a "yet".
-    if (item.kind == AssignmentItemKind::Task && final_answer && feedback.rfind("Not yet: ", 0) == 0)
-      feedback.replace(0, 9, "Not done: ");
+    // A task's grade says "Not done: " (a grade is of a final answer); while it can still be
+    // checked again, "Not yet: ".
+    if (item.kind == AssignmentItemKind::Task && !final_answer && feedback.rfind("Not done: ", 0) == 0)
+      feedback.replace(0, 10, "Not yet: ");
     if (item.tries && ans && !s.submitted)
       feedback += final_answer ? " No tries left: this answer is final." : " " + tries_count(*left) + " left.";
     j["feedback"] = feedback;

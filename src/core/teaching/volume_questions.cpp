@@ -133,6 +133,9 @@ ExerciseCheck check_volume_question(const std::string& id, const Scene& scene, d
     c.readable = a.readable;  // "((" is no attempt at a name, as an unreadable number is none
     c.expected = configuration_space(robot).notation;
     c.explanation = a.explanation;
+    // The lesson says "not an answer: " before an unreadable one: not "could not read" twice.
+    constexpr std::string_view kUnread = "could not read the answer: ";
+    if (!a.readable && c.explanation.rfind(kUnread, 0) == 0) c.explanation.erase(0, kUnread.size());
     return c;
   }
   if (id == "dimension") {
