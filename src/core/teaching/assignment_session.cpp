@@ -156,7 +156,9 @@ AssignmentGrade grade_session(const AssignmentSession& s) {
 }
 
 std::optional<unsigned> tries_left(const AssignmentSession& s, std::size_t index) {
-  const std::optional<unsigned> allowed = s.assignment.items.at(index).tries;
+  const AssignmentItem& item = s.assignment.items.at(index);
+  if (s.submitted && item.kind != AssignmentItemKind::Explore) return 0;  // every answer final
+  const std::optional<unsigned> allowed = item.tries;
   if (!allowed) return std::nullopt;
   const unsigned used = s.answers[index] ? s.answers[index]->tries : 0;
   return used < *allowed ? *allowed - used : 0;
@@ -258,9 +260,7 @@ json assignment_session_json(const AssignmentSession& s) {
     const std::optional<AssignmentAnswer>& ans = s.answers[i];
     const std::string id = "item-" + std::to_string(i + 1);
     const unsigned used = ans ? ans->tries : 0;
-    // Submitted, no item has a try left: every answer is final.
-    const std::optional<unsigned> left =
-        s.submitted && item.kind != AssignmentItemKind::Explore ? std::optional<unsigned>(0) : tries_left(s, i);
+    const std::optional<unsigned> left = tries_left(s, i);
     const bool final_answer = left && *left == 0;
     json j{{"index", i}, {"id", id}, {"kind", assignment_item_kind_name(item.kind)}, {"title", item.title},
            {"points", item.points}, {"status", item_status(s, r)}, {"score", r.points}, {"max", r.max_points},

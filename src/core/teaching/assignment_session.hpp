@@ -72,7 +72,8 @@ nlohmann::json session_suspend(const AssignmentSession& s);
 /// item, answered with 1"); `s` changes only if there is none.
 std::vector<std::string> resume_session(AssignmentSession& s, const nlohmann::json& suspend);
 
-/// The tries item `index` has left: nullopt if it has no limit.
+/// The tries item `index` has left: nullopt if it has no limit; 0 for an exercise or task once
+/// the session was submitted (every answer final).
 std::optional<unsigned> tries_left(const AssignmentSession& s, std::size_t index);
 
 /// What the page's assignment_state answers (docs/web.md): {title, description, learner, pass,
