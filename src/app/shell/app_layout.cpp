@@ -152,7 +152,7 @@ void App::top_bar() {
   ImGui::SameLine(0, 24);
   if (!web::page().minimal) {
     // The way in for students: the handout's problems by number, next to the title.
-    homework_.menu_button();
+    homework_.menu_button(false);
     ImGui::SameLine(0, 18);
   }
   const ImVec2 first_row = ImGui::GetCursorPos();
@@ -226,11 +226,10 @@ void App::compact_bar() {
   // (On a phone upright the lab's name gives way: Homework and the page's actions then share
   // the first row, and the lesson menu below names what is on screen.)
   const bool titled = web::page().minimal || ImGui::GetContentRegionAvail().x >= kTitledWidth;
-  ui::tall_bar() = input::touch();  // until the page's actions below
   if (titled) {
     ImGui::PushFont(fonts().title);
     // Centred on the row's buttons, 44 px high by touch.
-    const float pad = ui::tall_bar() ? 0.5f * (bar_h - ImGui::GetFontSize()) : ImGui::GetStyle().FramePadding.y;
+    const float pad = input::touch() ? 0.5f * (bar_h - ImGui::GetFontSize()) : ImGui::GetStyle().FramePadding.y;
     ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(ImGui::GetStyle().FramePadding.x, pad));
     ImGui::AlignTextToFramePadding();
     ImGui::PopStyleVar();
@@ -239,7 +238,7 @@ void App::compact_bar() {
   }
   if (!web::page().minimal) {
     if (titled) ImGui::SameLine(0, 12);
-    homework_.menu_button();
+    homework_.menu_button(input::touch());
   }
   const float actions_w = web::top_bar_actions_width();
   const auto after = [&] { return ImGui::GetItemRectMax().x - ImGui::GetWindowPos().x + 12; };
@@ -286,7 +285,6 @@ void App::compact_bar() {
   }
   if (after() + actions_w <= right) ImGui::SameLine(std::max(after(), right - actions_w));
   web::top_bar_actions(ctx_, current_name);
-  ui::tall_bar() = false;
   if (!menu_done) lesson_menu(-1);
   // Row 3: the tabs, each half the width (or, on a wide screen, the start of a row that holds
   // the playback strip and the tools too).

@@ -193,9 +193,9 @@ void AssignmentPanel::register_api(JsApi& api) {
   api.add("assignment_state",
           "the open assignment: {title, description, learner, pass, current, submitted, note, items: [{index, id, kind, "
           "title, prompt, points, problem?, status: open|answered|correct|incorrect|viewed, score, max, answer, feedback, "
-          "tries, tries_allowed, tries_left, tries_text, expected?, explanation?}], grade: {raw, min, max, scaled, completed, passed}, interactions: [{id, type, "
-          "description, learner_response, result, weighting, correct_response?}], answers (cspacelab assignment grade's), "
-          "suspend} (docs/web.md)",
+          "tries, tries_allowed, tries_left, tries_text, expected?, explanation?}], grade: {raw, min, max, scaled, "
+          "completed, passed}, interactions: [{id, type, description, learner_response, result, weighting, "
+          "correct_response?}], answers (cspacelab assignment grade's), suspend} (docs/web.md)",
           [this](const json&) {
             if (!session_) throw ApiError("no assignment is open (assignment_open first)");
             return state_json();

@@ -204,8 +204,8 @@ void HomeworkPanel::register_api(JsApi& api) {
           [this](const json&) { return state_json(); });
 }
 
-void HomeworkPanel::menu_button() {
-  if (ui::bar_button("Homework") || want_map_) {
+void HomeworkPanel::menu_button(bool tall) {
+  if (ui::bar_button("Homework", tall) || want_map_) {
     want_map_ = false;
     ImGui::OpenPopup("homework-map");
     web::dismiss_welcome();

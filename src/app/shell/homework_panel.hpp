@@ -30,8 +30,8 @@ class HomeworkPanel {
   /// homework, open_problem, exercise, check_answer, show_solution, show_exercise, close_problem,
   /// homework_state.
   void register_api(JsApi& api);
-  /// The top bar's "Homework" button and its map.
-  void menu_button();
+  /// The top bar's "Homework" button and its map; `tall`: as ui::bar_button.
+  void menu_button(bool tall);
   /// Above the lesson's panel: the welcome on a first visit, and the open problem's card while
   /// its lesson is on screen.
   void card(const std::string& lesson_id);

@@ -275,7 +275,7 @@ float top_bar_actions_width() {
 }
 
 void top_bar_actions(LabContext& ctx, const std::string& lesson_name) {
-  (void)ctx;
+  const bool tall = ctx.compact && input::touch();  // ui::bar_button
   const PageState& s = state();
   if (!s.attached) {
     ImGui::AlignTextToFramePadding();
@@ -285,21 +285,21 @@ void top_bar_actions(LabContext& ctx, const std::string& lesson_name) {
   const char* restore = kRestore;
   if (!s.previous.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Button, theme::vec4(theme::kRestoreButton));
-    if (ui::bar_button(restore)) page_action("restore-previous");
+    if (ui::bar_button(restore, tall)) page_action("restore-previous");
     record("restore-previous");
     ImGui::PopStyleColor();
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("bring back %s (what you have now becomes the previous work)", s.previous.c_str());
     ImGui::SameLine();
   }
-  if (ui::bar_button("Share")) page_action("share");
+  if (ui::bar_button("Share", tall)) page_action("share");
   record("share");
   tooltip("a link to exactly this: lesson, scene, parameters, seed and step (copied to the clipboard)");
   ImGui::SameLine();
-  if (ui::bar_button("Embed")) page_action("embed");
+  if (ui::bar_button("Embed", tall)) page_action("embed");
   record("embed");
   tooltip("HTML to put this lab, as it is now, in a course page");
   ImGui::SameLine();
-  if (ui::bar_button("File")) ImGui::OpenPopup("##file-menu");
+  if (ui::bar_button("File", tall)) ImGui::OpenPopup("##file-menu");
   record("file");
   tooltip("import, export, reset");
   if (ImGui::BeginPopup("##file-menu")) {

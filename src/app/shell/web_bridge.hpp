@@ -48,7 +48,8 @@ void register_api(JsApi& api, LabContext& ctx);
 float top_bar_actions_width();
 
 /// Draws the page's actions from the cursor on (the version text alone when no page is
-/// attached), and the reset confirmation when it is open. The caller places them.
+/// attached), and the reset confirmation when it is open. The caller places them. In the compact
+/// layout by touch they are 44 px high (ui::bar_button).
 void top_bar_actions(LabContext& ctx, const std::string& lesson_name);
 
 /// Records where the last item is, under `name`, for page_state's buttons (this frame only): a
