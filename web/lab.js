@@ -82,11 +82,10 @@
   }
 
   /**
-   * fetch() of a file of the lab. A page of another origin (a course page embedding the lab with
-   * the script tag) may read it only if the lab's server sends Access-Control-Allow-Origin; the
-   * browser then says no more than "Failed to fetch". So a failed fetch across origins is tried
-   * once more without reading it (mode no-cors): if the server answers that, it is the header
-   * that is missing, and the error says which one to add.
+   * fetch() of a file of the lab. A page of another origin (a course page) may read it only if
+   * the lab's server sends Access-Control-Allow-Origin; else the browser says "Failed to fetch".
+   * So a failed fetch across origins is tried once more without reading it (mode no-cors): if
+   * the server answers that, the header is missing, and the error says which one to add.
    */
   async function fetchFile(url) {
     try {
@@ -272,9 +271,10 @@
     }
     // The parallel DOM: what the canvas shows, as HTML a screen reader and the keyboard reach.
     root.cspacelabAccess = new window.CSpaceLabAccess(root, canvas, api, { ui });
-    // The homework card's copy, fetched after the first frame.
-    need('CSpaceLabHomeworkAccess', 'lab-homework-access.js')
-      .then(() => window.CSpaceLabHomeworkAccess(root.cspacelabAccess)).catch(console.warn);
+    // The copies of the homework card and of the top bar, fetched after the first frame.
+    for (const n of ['Homework', 'Actions'])
+      need(`CSpaceLab${n}Access`, `lab-${n.toLowerCase()}-access.js`)
+        .then(() => window[`CSpaceLab${n}Access`](root.cspacelabAccess)).catch(console.warn);
     // Printed, the lab is a worksheet: its picture, task and parameters, no controls.
     root.cspacelabPrint = new window.CSpaceLabPrint(root, canvas, api, shell);
     root.cspacelab = api;
