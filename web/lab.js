@@ -29,7 +29,7 @@
 (function () {
   const script = document.currentScript;
   const pageUrl = location.href.split(/[?#]/)[0];
-  // The folder of this script; an inlined copy (the single-file build) uses the page's.
+  // The folder of this script; an inlined copy (single-file build) uses the page's.
   const base = script && script.src ? new URL('.', script.src).href : new URL('.', pageUrl).href;
   const PARTS = [['createCSpaceLab', 'cspacelab.js'], ['CSpaceLabApi', 'lab-api.js'],
                  ['CSpaceLabUrl', 'lab-url.js'], ['CSpaceLabShell', 'lab-shell.js'],
@@ -271,8 +271,8 @@
     }
     // The parallel DOM: what the canvas shows, as HTML a screen reader and the keyboard reach.
     root.cspacelabAccess = new window.CSpaceLabAccess(root, canvas, api, { ui });
-    // The copies of the homework card and of the top bar, fetched after the first frame.
-    for (const n of ['Homework', 'Actions'])
+    // The homework card's, top bar's and tables' copies, fetched after the first frame.
+    for (const n of ['Homework', 'Actions', 'Tables'])
       need(`CSpaceLab${n}Access`, `lab-${n.toLowerCase()}-access.js`)
         .then(() => window[`CSpaceLab${n}Access`](root.cspacelabAccess)).catch(console.warn);
     // Printed, the lab is a worksheet: its picture, task and parameters, no controls.
