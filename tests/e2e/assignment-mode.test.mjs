@@ -497,13 +497,16 @@ test('tries: P12 allows 3; every graded check counts, and used up the answer is 
   let it = (await state(page)).items[2];
   assert.deepEqual([it.tries, it.tries_allowed, it.tries_left, it.tries_text], [0, 3, 3, 'Tries: 0 of 3 used.']);
 
-  // A wrong count costs a try; a typo costs none and says why; the same answer again costs none.
+  // A wrong count costs a try; a typo costs none and says why, and leaves the checked answer on
+  // the record (it would have taken its grade away); the same answer again costs none.
   await typeAnswer(page, String(n + 1));
   it = (await state(page)).items[2];
   assert.deepEqual([it.status, it.tries, it.feedback], ['incorrect', 1, 'Not right yet. 2 tries left.']);
   await typeAnswer(page, `${n}x`);
-  it = (await state(page)).items[2];
-  assert.deepEqual([it.status, it.tries], ['answered', 1], it.feedback);
+  st = await state(page);
+  it = st.items[2];
+  assert.deepEqual([it.status, it.tries, it.answer], ['incorrect', 1, String(n + 1)], it.feedback);
+  assert.match(st.note, new RegExp(`^"${n}x" is not .*Your checked answer "${n + 1}" stands\\.$`));
   assert.match(it.feedback, /2 tries left\.$/);
   await typeAnswer(page, String(n + 2));
   await typeAnswer(page, String(n + 2));

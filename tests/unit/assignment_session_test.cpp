@@ -190,6 +190,30 @@ TEST_CASE("assignment session: an answer that would overflow the suspend data is
   CHECK(session_suspend(s).dump().size() < kMaxSuspendChars);
 }
 
+TEST_CASE("assignment session: a slip over a checked answer is refused and keeps its grade") {
+  AssignmentSession s = start_assignment_session(example(2), "student-7");
+  const Exercise e = assignment_exercise(s.assignment, 0, "student-7");
+  const auto item = [&](std::size_t i) { return assignment_session_json(s)["items"][i]; };
+  // Unreadable with nothing recorded: recorded, as it was (the card says what could not be read).
+  record_exercise_answer(s, 0, "2 pi +");
+  CHECK(item(0)["answer"] == "2 pi +");
+  CHECK(item(0)["status"] == "answered");
+  record_exercise_answer(s, 0, s1_answer(e));
+  const json right = assignment_session_json(s);
+  CHECK(right["items"][0]["status"] == "correct");
+  CHECK(right["grade"]["raw"] == 2);
+  // A slip typed over it ("8x", an empty field) would have made it "answered" with no points.
+  const std::string stands = "Your checked answer \"" + s1_answer(e) + "\" stands.";
+  for (const char* slip : {"8x", "", "2 pi +"}) {
+    CHECK_THROWS_WITH_AS(record_exercise_answer(s, 0, slip), doctest::Contains(stands.c_str()), std::invalid_argument);
+    CHECK(assignment_session_json(s) == right);
+  }
+  // A readable wrong one still replaces it: that is the student's new answer, and a try.
+  record_exercise_answer(s, 0, "0.5");
+  CHECK(item(0)["status"] == "incorrect");
+  CHECK(item(0)["tries"] == 2);
+}
+
 TEST_CASE("assignment session: tries are counted, limited, told, saved and resumed") {
   const Assignment two = example(2);
   AssignmentSession s = start_assignment_session(two, "student-7");
@@ -293,7 +317,7 @@ TEST_CASE("assignment session: tries are counted, limited, told, saved and resum
 TEST_CASE("assignment session: without a limit every graded check is still counted") {
   AssignmentSession s = start_assignment_session(example(), "student-7");
   record_exercise_answer(s, 0, "1");
-  record_exercise_answer(s, 0, "abc");
+  CHECK_THROWS_AS(record_exercise_answer(s, 0, "abc"), std::invalid_argument);  // a slip over it: refused, no try
   record_exercise_answer(s, 0, "2");
   record_exercise_answer(s, 0, "2");
   const json it = assignment_session_json(s)["items"][0];

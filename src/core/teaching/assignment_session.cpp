@@ -87,12 +87,17 @@ void record_exercise_answer(AssignmentSession& s, std::size_t index, const std::
   const std::optional<AssignmentAnswer>& before = s.answers[index];
   if (before && trim(before->text) == trim(text)) return;  // the recorded answer checked again: no new try
   require_try(s, index);
+  const Exercise exercise = assignment_exercise(s.assignment, index, s.learner);
+  const ExerciseCheck check = check_exercise(exercise, text);
+  // An answer the lab cannot read (a typo, an empty field) is told so and costs no try. Over a
+  // graded answer it is refused, so that a slip does not take the graded one (and its points)
+  // off the record: the card's note says why, and the field keeps the slip to correct.
+  if (!check.readable && before && check_exercise(exercise, before->text).readable)
+    throw std::invalid_argument(check.feedback + " Your checked answer \"" + before->text + "\" stands.");
   AssignmentAnswer a;
   a.item = index;
   a.text = text;
-  // An answer the lab cannot read (a typo, an empty field) is told so and costs no try.
-  const bool readable = check_exercise(assignment_exercise(s.assignment, index, s.learner), text).readable;
-  a.tries = (before ? before->tries : 0) + (readable ? 1 : 0);
+  a.tries = (before ? before->tries : 0) + (check.readable ? 1 : 0);
   record(s, std::move(a));
 }
 

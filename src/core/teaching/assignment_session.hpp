@@ -45,8 +45,9 @@ AssignmentSession start_assignment_session(Assignment assignment, std::string le
 /// Records an answer to item `index` (replacing an earlier one), counting a try as the top of
 /// this file says. Throws std::invalid_argument, changing nothing, if the session was submitted,
 /// the index is out of range, the item is of another kind, its tries are used up (unless the
-/// answer is the one recorded), an exercise's text is longer than kMaxAnswerText, or the suspend
-/// object would grow past kMaxSuspendChars.
+/// answer is the one recorded), an exercise's text is longer than kMaxAnswerText or cannot be
+/// read while a readable answer is recorded (it would take a graded answer off the record), or
+/// the suspend object would grow past kMaxSuspendChars.
 void record_exercise_answer(AssignmentSession& s, std::size_t index, const std::string& text);
 void record_visit(AssignmentSession& s, std::size_t index);
 /// `state`: the lesson's state() as the lab has it now; what is kept of it is its excerpt.
