@@ -210,6 +210,43 @@ test('Phone upright: P13\'s two plots have the View tab, its forces table the Co
   assert.deepEqual(errors, []);
 }));
 
+for (const [held, viewport] of [['upright', PORTRAIT], ['on its side', LANDSCAPE]]) {
+  test(`Phone ${held}: P10's caption and P13's forces header end within the screen; P13's numbers stay by its table`,
+    () => withBrowser(async ({ browser, url }) => {
+    const { page, errors, press, layout, control, fingerDrag } = await phone(browser, url, viewport, '?lesson=step-prm');
+    // P10: the circle's caption broken into lines the view's width (upright it ran past the
+    // screen's right edge: "…the short way passes 0" lost its last word).
+    await api(page, 'open_problem', { id: 'P10', seed: 7 });
+    await waitFrames(page, 3);
+    await press('tab:view');
+    const caption = (await api(page, 'state', { layout: true })).caption_layout;
+    assert.ok(caption, 'the distances lesson says where its caption is');
+    assert.ok(caption.box[2] <= caption.view_right && caption.view_right <= viewport.width, JSON.stringify(caption));
+    await screenshot(page, `phone-${viewport.width}-P10-caption.png`);
+    // P13: the forces area's header, its title within its frame (upright it was cut after "ρ, ∇ρ,").
+    await api(page, 'open_problem', { id: 'P13', seed: 7 });
+    await waitFrames(page, 3);
+    assert.equal((await layout()).tab, 'controls');
+    await api(page, 'check_answer', { answer: '0' });
+    await waitFrames(page, 3);
+    // "Show these numbers in the tool": the numbers P13 asks about are the forces table's, on
+    // the Controls tab of a phone: the tab stays, the table open and scrolled to (it went to
+    // the View tab, where the table is not). On its side the card is taller than the screen:
+    // swiped up to the button first.
+    for (let i = 0; i < 4 && (await control('show-in-tool')).y > viewport.height - 40; ++i)
+      await fingerDrag({ x: viewport.width / 2, y: viewport.height - 60 }, { x: viewport.width / 2, y: viewport.height - 200 });
+    await press('show-in-tool');
+    await waitFrames(page, 4);
+    assert.equal((await layout()).tab, 'controls', 'the forces table is where P13\'s numbers are');
+    const forces = (await api(page, 'state', { layout: true })).forces_layout;
+    assert.ok(forces.header_right <= forces.header_clip && forces.header_clip <= viewport.width, JSON.stringify(forces));
+    assert.ok(forces.rows.length >= 1, `the table is on screen without a swipe (${JSON.stringify(forces)})`);
+    if (viewport === PORTRAIT) assert.equal(forces.rows.length, 4, 'every vertex\'s row on screen');
+    await screenshot(page, `phone-${viewport.width}-P13-shown.png`);
+    assert.deepEqual(errors, []);
+  }));
+}
+
 test('Phone on its side: compact, views side by side, PRM stepped', () => withBrowser(async ({ browser, url }) => {
   const { page, errors, press, layout } = await phone(browser, url, LANDSCAPE, '?lesson=torus');
   let l = await layout();

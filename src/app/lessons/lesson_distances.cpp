@@ -8,10 +8,12 @@
 //   clearance the lab's collision checker keeps instead.
 // The numbers come from core/teaching/distances.hpp; this file lays them out and handles the mouse.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "app/shell/input_mode.hpp"
 #include "app/shell/instructor.hpp"
@@ -167,7 +169,7 @@ class DistancesLesson : public Lesson {
     return {{"circle", &circle_view_, Vec2(-kCircleHalf, -kCircleHalf), Vec2(kCircleHalf, kCircleHalf)}, {"workspace", &view_, bounds_lo_, bounds_hi_}};
   }
 
-  json state(const json&) const override {
+  json state(const json& args) const override {
     const S1DistanceReport& a = s1_;
     const SegmentDiskReport& s = segment_;
     json out = params();
@@ -207,6 +209,10 @@ class DistancesLesson : public Lesson {
                       {"meets", s.meets},
                       {"case", segment_disk_case_name(s.where)}};
     out["dragging"] = drag_name();
+    // Where the caption was drawn last frame (canvas px): only when asked, as it depends on the window.
+    if (args.is_object() && args.value("layout", false))
+      out["caption_layout"] = {{"box", std::vector<float>(caption_box_.begin(), caption_box_.begin() + 4)},
+                               {"view_right", caption_box_[4]}};
     return out;
   }
 
@@ -497,12 +503,28 @@ class DistancesLesson : public Lesson {
     hint(s1_hint());
   }
 
-  // The result over the view's top left corner.
-  static void caption(const WorkspaceView& v, const std::string& title) {
+  // The result over the view's top left corner, broken at spaces into lines as wide as the view
+  // (on a phone upright one line was cut at its right edge: "…the short way passes 0").
+  void caption(const WorkspaceView& v, const std::string& title) {
     ImDrawList* dl = v.draw_list();
+    const float left = v.canvas_min().x + 8, room = v.canvas_max().x - left - 7;  // boxed_text's margins
+    std::string text = title;
+    for (std::size_t begin = 0; ImGui::CalcTextSize(text.c_str() + begin).x > room;) {
+      std::size_t cut = std::string::npos;
+      for (std::size_t i = text.find(' ', begin); i != std::string::npos; i = text.find(' ', i + 1)) {
+        if (i > begin && ImGui::CalcTextSize(text.c_str() + begin, text.c_str() + i).x > room) break;
+        cut = i;
+      }
+      if (cut == std::string::npos || cut == begin) break;  // a word wider than the view
+      text[cut] = '\n';
+      while (cut + 1 < text.size() && text[cut + 1] == ' ') text.erase(cut + 1, 1);
+      begin = cut + 1;
+    }
     dl->PushClipRect(v.canvas_min(), v.canvas_max(), true);
-    boxed_text(dl, ImVec2(v.canvas_min().x + 8, v.canvas_min().y + 6), theme::kLabel, title);
+    boxed_text(dl, ImVec2(left, v.canvas_min().y + 6), theme::kLabel, text);
     dl->PopClipRect();
+    const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+    caption_box_ = {left - 3, v.canvas_min().y + 5, left + size.x + 3, v.canvas_min().y + 7 + size.y, v.canvas_max().x};
   }
 
   // How to use a view, in small print under it: the height it takes at this width, then the text.
@@ -892,6 +914,8 @@ class DistancesLesson : public Lesson {
   double q1_ = 0.5, q2_ = 5.8;  // the short way between them crosses 0
   Vec2 p1_{0.2, 0.3}, p2_{0.8, 0.6}, q_{0.55, 0.2};
   double r_ = 0.1;
+  // The last caption drawn: its box (left, top, right, bottom) and its view's right edge.
+  mutable std::array<float, 5> caption_box_{};
   S1DistanceReport s1_;
   SegmentDiskReport segment_;
   WorkspaceView circle_view_, view_;

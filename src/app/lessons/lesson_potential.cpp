@@ -157,6 +157,15 @@ class PotentialLesson : public Lesson, private Stepper {
     }
   }
 
+  // P13 asks about the forces at the vertices: in the compact layout their table is on the
+  // panel (the Controls tab), so the numbers stay there, the table open and scrolled to.
+  bool numbers_shown(LabContext& ctx) override {
+    if (!ctx.compact) return false;
+    forces_open_ = reveal_forces_ = true;
+    ctx.notify("The forces at the vertices: the table here. The robot and its arrows: the View tab.");
+    return true;
+  }
+
   void panel(LabContext& ctx) override {
     ImGui::TextWrapped("Every control point is pulled toward where it is at the goal and pushed away from each "
                        "obstacle closer than ρ₀. J^T turns each workspace force into a configuration-space "
@@ -355,6 +364,8 @@ class PotentialLesson : public Lesson, private Stepper {
     layout["table_right"] = layout_.table_right;
     layout["area_right"] = layout_.area_right;
     layout["scrolls"] = layout_.scrolls;
+    layout["header_right"] = layout_.header_right;
+    layout["header_clip"] = layout_.header_clip;
   }
 
   void set_params(const json& j) override {
@@ -763,13 +774,27 @@ class PotentialLesson : public Lesson, private Stepper {
   void forces_area(ImVec2 size) {
     ImGui::PushFont(fonts().small);  // compact: the views above need the height
     ImGui::SetNextItemOpen(forces_open_);
-    forces_open_ = ImGui::CollapsingHeader("Forces at the control points: ρ, ∇ρ, (5.5), (5.6), τ = Σ J^T F");
+    // The whole title where it fits; narrower (a phone upright, where it was cut at the right
+    // edge), the name alone, and what the area works out on a line under it.
+    const char* const what = "ρ, ∇ρ, (5.5), (5.6), τ = Σ J^T F";
+    const std::string full = std::string("Forces at the control points: ") + what;
+    const float text_x = ImGui::GetFontSize() + 3.0f * ImGui::GetStyle().FramePadding.x;  // the arrow
+    title_fits_ = text_x + ImGui::CalcTextSize(full.c_str()).x <= ImGui::GetContentRegionAvail().x;
+    const char* const title = title_fits_ ? full.c_str() : "Forces at the control points";
+    forces_open_ = ImGui::CollapsingHeader((std::string(title) + "###forces").c_str());
+    layout_.header_right = ImGui::GetItemRectMin().x + text_x + ImGui::CalcTextSize(title).x;
+    layout_.header_clip = ImGui::GetItemRectMax().x;
+    if (reveal_forces_) {
+      ImGui::SetScrollHereY(0.0f);  // the panel, to the header (numbers_shown)
+      reveal_forces_ = false;
+    }
     layout_.rows.clear();
     layout_.scrolls = false;
     if (!forces_open_) {
       ImGui::PopFont();
       return;
     }
+    if (!title_fits_) ImGui::TextDisabled("%s", what);
     if (instructor::hidden("p13_forces")) {
       // P13's numbers; the arrows in the view stay (directions, not values).
       instructor::hidden_line("ρ, ∇ρ, the forces and τ at the control points");
@@ -893,7 +918,8 @@ class PotentialLesson : public Lesson, private Stepper {
     ImGui::PushFont(fonts().small);
     const float header = ImGui::GetFrameHeightWithSpacing();
     ImGui::PopFont();
-    return forces_open_ ? header + forces_content_h_ : header;
+    if (!forces_open_) return header;
+    return header + forces_content_h_ + (title_fits_ ? 0.0f : ImGui::GetTextLineHeightWithSpacing());
   }
 
   // How tall the area under the views is: what its content took last frame, at most half of
@@ -1130,7 +1156,11 @@ class PotentialLesson : public Lesson, private Stepper {
     float table_right = 0.0f;                // the table's right edge...
     float area_right = 0.0f;                 // ...and the visible area's (without a scrollbar)
     bool scrolls = false;                    // its content did not fit
+    float header_right = 0.0f;               // the header's title ends here...
+    float header_clip = 0.0f;                // ...and its frame here
   } layout_;
+  bool title_fits_ = true;      // the header's whole title fits its width (forces_area)
+  bool reveal_forces_ = false;  // scroll the panel to the forces area next frame (numbers_shown)
   int drag_ = 0;
   bool refused_ = false;  // a press on the robot while its start is fixed (the notice says so)
   Vec2 grab_offset_{0, 0};

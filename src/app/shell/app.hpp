@@ -112,7 +112,10 @@ class App {
   HomeworkPanel homework_{[this](const HomeworkProblem& p, bool preset) { open_problem(p, preset); },
                           [this](const std::string& lesson, const nlohmann::json& setup) {
                             show_in_lesson(lesson, setup);
-                            if (ctx_.compact) tab_ = Tab::View;  // the numbers are in the tool: show it
+                            // The numbers are in the tool: show it, or the panel where the lesson
+                            // shows what the problem asks about (P13's forces table on a phone).
+                            const bool panel = lesson_->numbers_shown(ctx_);
+                            if (ctx_.compact) tab_ = panel ? Tab::Controls : Tab::View;
                           }};
   AssignmentPanel assignment_{
       [this](const std::string& lesson, const nlohmann::json& setup, bool preset, bool view) {

@@ -81,6 +81,10 @@ class Lesson {
   /// The scene editor of the view on screen, or nullptr: the compact layout puts its tool
   /// buttons over the views (the side panel, where they are, is another tab there).
   virtual SceneEditor* editor() { return nullptr; }
+  /// A homework problem's numbers went into the lesson ("Show these numbers in the tool"): true
+  /// when what the problem asks about is then read on the side panel, not in the views (the
+  /// compact layout stays on its Controls tab, and the lesson brings that part on screen).
+  virtual bool numbers_shown(LabContext&) { return false; }
   const Stepper* stepper() const { return const_cast<Lesson*>(this)->stepper(); }
 };
 
