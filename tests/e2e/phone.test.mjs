@@ -247,6 +247,34 @@ for (const [held, viewport] of [['upright', PORTRAIT], ['on its side', LANDSCAPE
   }));
 }
 
+test('A tablet on its side by touch: the lesson buttons and the top bar\'s are 44 px high; by mouse as before',
+  () => withBrowser(async ({ browser, url }) => {
+  const viewport = { width: 1180, height: 820 };
+  for (const touch of [true, false]) {
+    const ctx = await browser.newContext({ viewport, hasTouch: touch, isMobile: touch });
+    const page = await ctx.newPage();
+    await page.addInitScript(() => localStorage.setItem('cspacelab:v1:welcomed', '1'));
+    const errors = collectErrors(page);
+    await openLab(page, url + '?lesson=torus');
+    await waitFrames(page, 3);
+    const l = (await api(page, 'status')).layout;
+    assert.equal(l.mode, 'wide');
+    assert.equal(l.touch, touch);
+    const heights = await page.evaluate(() => Object.entries(window.cspacelab.pageState().buttons)
+      .filter(([k]) => /^(lesson:|homework$|share$|embed$|file$)/.test(k)).map(([k, r]) => [k, r[3] - r[1]]));
+    assert.equal(heights.length, 9 + 4, JSON.stringify(heights));
+    // By touch a finger's 44 px (they were 26); by mouse ImGui's frame, as they were.
+    for (const [name, h] of heights)
+      assert.ok(touch ? h >= 44 : h < 30, `${touch ? 'touch' : 'mouse'}: ${name} is ${h} px high`);
+    // The views keep most of the screen.
+    const ws = view(l, 'workspace');
+    assert.ok(ws.h >= 500, `the workspace is ${ws.h} px tall`);
+    await screenshot(page, `tablet-1180x820-${touch ? 'touch' : 'mouse'}.png`);
+    assert.deepEqual(errors, []);
+    await ctx.close();
+  }
+}));
+
 test('Phone on its side: compact, views side by side, PRM stepped', () => withBrowser(async ({ browser, url }) => {
   const { page, errors, press, layout } = await phone(browser, url, LANDSCAPE, '?lesson=torus');
   let l = await layout();

@@ -36,6 +36,11 @@ constexpr float kCompactRowWidth = 460.0f;
 
 // Narrower than this, the compact bar leaves the lab's name out.
 constexpr float kTitledWidth = 480.0f;
+// By touch, the wide layout's top bar (the lesson buttons, Homework, Share, Embed, File) is 44
+// px high, as the compact one is, on a screen at least this tall (a tablet either way): its
+// two or three rows then take about 40 px more. Shorter (a large phone on its side, 932 x 430,
+// keeps the wide layout), the views need that height more.
+constexpr float kTallBarMinHeight = 600.0f;
 
 bool wants_compact(ImVec2 size) {
   if (web::page().minimal) return size.x < kCompactMinimalWidth;
@@ -72,6 +77,7 @@ void App::frame() {
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoBringToFrontOnFocus |
                    ImGuiWindowFlags_NoSavedSettings);
   ctx_.compact = wants_compact(vp->WorkSize);
+  ctx_.tall_bar = input::touch() && (ctx_.compact || vp->WorkSize.y >= kTallBarMinHeight);
   // What this frame draws, for status().layout and the view API (a hidden tab draws none).
   ctx_.views.clear();
   ctx_.plots.clear();
@@ -146,13 +152,23 @@ void App::top_bar() {
   const ImGuiStyle& style = ImGui::GetStyle();
   const float right = ImGui::GetWindowContentRegionMax().x;  // window-local, like the cursor
   const float actions_w = web::top_bar_actions_width();
+  // By touch on a tablet every button of the bar is 44 px high (ctx_.tall_bar), and the title
+  // and the categories' labels are centred on them.
+  const bool tall = ctx_.tall_bar;
+  const auto align = [&] {
+    const float pad = tall ? 0.5f * (44.0f - ImGui::GetFontSize()) : style.FramePadding.y;
+    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(style.FramePadding.x, pad));
+    ImGui::AlignTextToFramePadding();
+    ImGui::PopStyleVar();
+  };
   ImGui::PushFont(fonts().title);
+  if (tall) align();
   ImGui::TextUnformatted(web::page().minimal ? current_name.c_str() : "C-Space Lab");
   ImGui::PopFont();
   ImGui::SameLine(0, 24);
   if (!web::page().minimal) {
     // The way in for students: the handout's problems by number, next to the title.
-    homework_.menu_button(false);
+    homework_.menu_button(tall);
     ImGui::SameLine(0, 18);
   }
   const ImVec2 first_row = ImGui::GetCursorPos();
@@ -191,7 +207,7 @@ void App::top_bar() {
         const std::string label = category + ":";
         // The label keeps its first lesson on the same row.
         place(ImGui::CalcTextSize(label.c_str()).x + style.ItemSpacing.x + button_w, 18);
-        ImGui::AlignTextToFramePadding();
+        align();
         ImGui::TextDisabled("%s", label.c_str());
         ImGui::SameLine();
       } else {
@@ -200,7 +216,8 @@ void App::top_bar() {
       const bool current = l.id == lesson_id_;
       if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
       ImGui::BeginDisabled(!instructor::lesson_allowed(l.id));
-      if (ImGui::Button(l.name.c_str())) select_lesson(l.id);
+      if (ui::bar_button(l.name.c_str(), tall)) select_lesson(l.id);
+      web::record_control(("lesson:" + l.id).c_str());
       ImGui::EndDisabled();
       if (!instructor::lesson_allowed(l.id) && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip("%s", instructor::lesson_refusal().c_str());

@@ -34,6 +34,9 @@ struct LabContext {
   std::map<std::string, std::pair<ImVec2, ImVec2>> areas;
   /// The app's layout (app_layout.cpp): narrow or short screens get the compact one.
   bool compact = false;
+  /// The top bar's buttons are 44 px high (ui::bar_button): by touch, in the compact layout and
+  /// in the wide one where the screen is tall enough to spare the rows (app_layout.cpp).
+  bool tall_bar = false;
 
   /// Shows a one-line notice for a few seconds.
   void notify(const std::string& text, double seconds = 5.0);

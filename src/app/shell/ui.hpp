@@ -16,11 +16,11 @@ inline float button_width(const char* label) {
 /// ImGui's SmallButton by mouse; by touch a whole button: a small one is 16 px high, under the
 /// 24 px that a finger's target needs at least (WCAG 2.5.8), and "Open the tool" was missed.
 inline bool small_button(const char* label) { return input::touch() ? ImGui::Button(label) : ImGui::SmallButton(label); }
-/// The top bar's buttons (Homework, Share, Embed, File). `tall`: the compact layout (a phone's)
-/// by touch, where they are 44 px high as its tabs and lesson menu are, the size a finger is
-/// sure of (they were 26 px, above WCAG's 24 but often missed beside each other). The wide
-/// layout's row of lesson buttons keeps ImGui's size, and so do its page buttons, so that one
-/// row stays one height.
+/// The top bar's buttons (Homework, Share, Embed, File; the wide layout's lesson buttons).
+/// `tall` (LabContext::tall_bar): by touch, in the compact layout (a phone's) and the wide one
+/// on a tablet, where they are 44 px high as the compact tabs and lesson menu are, the size a
+/// finger is sure of (they were 26 px, above WCAG's 24 but often missed beside each other). By
+/// mouse they keep ImGui's size; one row of the bar is always one height.
 inline bool bar_button(const char* label, bool tall) {
   if (!tall) return ImGui::Button(label);
   ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(ImGui::GetStyle().FramePadding.x, 0.5f * (44.0f - ImGui::GetFontSize())));

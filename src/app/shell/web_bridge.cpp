@@ -275,7 +275,7 @@ float top_bar_actions_width() {
 }
 
 void top_bar_actions(LabContext& ctx, const std::string& lesson_name) {
-  const bool tall = ctx.compact && input::touch();  // ui::bar_button
+  const bool tall = ctx.tall_bar;  // ui::bar_button
   const PageState& s = state();
   if (!s.attached) {
     ImGui::AlignTextToFramePadding();
