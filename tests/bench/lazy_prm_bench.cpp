@@ -143,10 +143,15 @@ int main(int argc, char** argv) {
     ompl.push_back(std::make_unique<bench::OmplScene>(s.world, s.resolution()));
 #endif
 
-  // Untimed runs first (wasm tiers its code up while it runs, see prm_bench.cpp; natively the caches).
-  if (!quick)
-    for (const bench::PlannerScene& s : scenes)
-      ours(s.world, bench::first_free(s.world, 1), bench::first_free(s.world, 2), 1000, s.resolution(), 1000);
+  // Untimed runs first, for a second at least (wasm tiers its code up while it runs, compiling in
+  // threads node's clock counts, see prm_bench.cpp; natively the caches).
+  if (!quick) {
+    const bench::Timer warm;
+    for (int round = 0; round < 2 || warm.seconds() < 1.0; ++round)
+      for (const bench::PlannerScene& s : scenes)
+        ours(s.world, bench::first_free(s.world, 1), bench::first_free(s.world, 2), 1000, s.resolution(),
+             1000 + static_cast<std::uint64_t>(round));
+  }
 
   if (!as_json) {
     std::printf("Lazy PRM, one query per scene, k = 10, edge checks every 1%% of the extent, medians of %d runs each, "
