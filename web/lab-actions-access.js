@@ -5,7 +5,7 @@
 // the app's notices ("Link copied", an import's error, the LMS's refusal), which the canvas shows
 // for a few seconds and a reader would never hear, in a polite live region.
 // lab.js loads it once the lab has started, as the homework's copy (the single-file lab has it
-// inline). A dialog it opens gives the focus back to the button that opened it, not the canvas.
+// inline). A dialog it opens (Share, Embed) gives the focus back to its button, not the canvas.
 'use strict';
 
 (function (global) {
@@ -29,7 +29,7 @@
       setTimeout(() => { notice.textContent = text; }, 50);  // the same words twice are read twice
     };
 
-    let opener = null;  // the last button pressed here, when, and the dialog it opened
+    let opener = null;  // the last button pressed here; when one that opens a dialog was; the dialog
     let pressed = -Infinity;
     let dialog = null;
     const button = (label, run, parent = g) => {
@@ -37,7 +37,6 @@
       b.addEventListener('click', () => {
         try {
           opener = b;
-          pressed = performance.now();
           const done = run();
           if (done && done.then) done.then(show, show);
         } catch (e) {
@@ -48,12 +47,16 @@
       return b;
     };
     const action = (name) => () => shell.action(name);
+    const dialogAction = (name) => () => {
+      pressed = performance.now();
+      return shell.action(name);
+    };
     const edit = (cmd, done, none) => () => say(api.call(cmd) ? done : none);
 
     button('Undo', edit('undo', 'Undone: the last scene edit.', 'Nothing to undo.'));
     button('Redo', edit('redo', 'Redone.', 'Nothing to redo.'));
-    button('Share a link to this state', action('share'));
-    button('Embed this lab in a page', action('embed'));
+    button('Share a link to this state', dialogAction('share'));
+    button('Embed this lab in a page', dialogAction('embed'));
     // The file picker opens in the click's own turn: a browser opens it only for a user's press.
     button('Import a scene (JSON)', action('import'));
     button('Export the scene (JSON)', action('export-scene'));
@@ -84,7 +87,12 @@
     const row = el('div', { className: 'lab-access-param' }, g);
     el('label', { for: id + '-history', text: 'Previous work' }, row);
     const history = el('select', { id: id + '-history' }, row);
-    button('Restore', () => shell.action('restore-history:' + history.selectedIndex), row);
+    // By the entry's id (an option's value): the list may have changed since it was shown.
+    button('Restore', () => {
+      const i = shell.historyIds.indexOf(history.value);
+      if (i < 0) return say('That previous work is not there any more (another tab may have restored it).');
+      return shell.action('restore-history:' + i);
+    }, row);
 
     // A dialog (Share, Embed) closes by focusing the canvas; one opened from here (within a few
     // seconds of the press: a link is built first) gives the focus back to its button.
@@ -108,13 +116,20 @@
       // A notice is read once; the same notice after it went is news again.
       if (status.notice !== seen.notice && status.notice) say(status.notice);
       seen.notice = status.notice;
-      question.textContent = `Reset ${shell.lessonName(status.lesson)} to its default scene and parameters? ` +
+      const q = `Reset ${shell.lessonName(status.lesson)} to its default scene and parameters? ` +
         'What you have now is kept: Previous work brings it back.';
-      const labels = (page.history || []).map((h) => h.label);
-      if (labels.join('\n') !== seen.history && document.activeElement !== history) {
-        seen.history = labels.join('\n');
+      if (question.textContent !== q) question.textContent = q;  // focused, it is not rewritten
+      // The labels and the ids are set together (the shell's refreshHistory).
+      const labels = (page.history || []).map((h, i) => [shell.historyIds[i], h.label]);
+      const key = JSON.stringify(labels);
+      if (key !== seen.history && document.activeElement !== history) {
+        seen.history = key;
+        const chosen = history.value;
         history.textContent = '';
-        for (const label of labels) el('option', { text: label }, history);
+        for (const [value, text] of labels) el('option', { value, text }, history);
+        if (labels.some(([v]) => v === chosen)) history.value = chosen;
+        // The last entry restored: the focus, on Restore, goes to Reset rather than nowhere.
+        if (!labels.length && row.contains(document.activeElement)) resetButton.focus();
         row.hidden = !labels.length;
       }
     }

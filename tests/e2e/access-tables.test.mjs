@@ -8,10 +8,17 @@ import assert from 'node:assert/strict';
 import { withPage, api } from './lib/harness.mjs';
 
 const T = '.lab-access-table';
-const cells = (page) => page.locator(`${T} table`).evaluate((t) =>
-  ({ caption: t.caption.textContent,
-     header: [...t.tHead.rows[0].cells].map((c) => c.textContent),
-     rows: [...t.tBodies[0].rows].map((r) => [...r.cells].map((c) => c.textContent)) }));
+// The table as a reader meets it: its heading, caption, column headers, rows (each led by a row
+// header) and the sums' row in its footer.
+const cells = (page) => page.locator(`${T} table`).evaluate((t) => {
+  const text = (r) => [...r.cells].map((c) => c.textContent);
+  const rows = [...t.tBodies[0].rows, ...(t.tFoot ? t.tFoot.rows : [])];
+  return { heading: document.getElementById(t.parentNode.getAttribute('aria-labelledby')).textContent,
+           caption: t.caption.textContent,
+           header: [...t.tHead.rows[0].cells].filter((c) => c.tagName === 'TH' && c.scope === 'col').map((c) => c.textContent),
+           rowHeaders: rows.every((r) => r.cells[0].tagName === 'TH' && r.cells[0].scope === 'row'),
+           rows: [...t.tBodies[0].rows].map(text), foot: t.tFoot ? [...t.tFoot.rows].map(text) : [] };
+});
 
 test('the bisection table: a row per step, its λ and η(t) as computed here', () =>
   withPage({ open: 'index.html?lesson=collision' }, async ({ page }) => {
@@ -27,7 +34,9 @@ test('the bisection table: a row per step, its λ and η(t) as computed here', (
     for (let i = 0; i < 9; ++i) await page.keyboard.press('Enter');
     await page.waitForFunction((t) => document.querySelector(`${t} tbody`)?.rows.length === 9, T);
     const table = await cells(page);
-    assert.match(table.caption, /a piece is free when λ < η₀\+η₁/);
+    assert.equal(table.heading, 'The bisection, step by step');
+    assert.match(table.caption, /piece is free when λ < η₀\+η₁/);
+    assert.ok(table.rowHeaders, 'each row is led by its row header');
     assert.deepEqual(table.header, ['#', 'piece', 'λ', 'λ against η₀+η₁', 'η₀+η₁', 't', 'η(t)']);
 
     const [p, q] = [[0.3, 0.5], [0.7, 0.5]];
@@ -50,6 +59,12 @@ test('the bisection table: a row per step, its λ and η(t) as computed here', (
     assert.ok(checked >= 6, `pieces checked: ${checked}`);
     assert.ok(table.rows.some((r) => r[3] === '<') && table.rows.some((r) => r[3] === '≥'), 'both outcomes are in nine steps');
 
+    // A step adds a row; the rows before it are the same elements (a reader keeps its place).
+    await page.evaluate((t) => { window.__row = document.querySelector(`${t} tbody`).rows[8]; }, T);
+    await page.keyboard.press('Enter');
+    await page.waitForFunction((t) => document.querySelector(`${t} tbody`).rows.length === 10, T);
+    assert.ok(await page.evaluate((t) => document.querySelector(`${t} tbody`).rows[8] === window.__row, T), 'not rebuilt');
+
     // A lesson without a table has none in the copy.
     await api(page, 'select_lesson', { id: 'distances' });
     await page.waitForFunction((t) => document.querySelector(t).hidden, T);
@@ -60,14 +75,25 @@ test('the forces table of P13, and hidden when the instructor hides P13\'s force
     await page.waitForSelector(`${T} table`, { state: 'attached' });
     const table = await cells(page);
     const state = (await api(page, 'state')).forces_table;
-    assert.equal(table.caption, 'Forces at the control points');
+    assert.equal(table.heading, 'Forces at the control points');
     assert.deepEqual(table.header, state.header);
-    assert.deepEqual(table.rows, state.rows.concat([state.sum]), 'each control point, then the sums');
-    assert.equal(table.rows.length, 5);
-    assert.deepEqual(table.rows.map((r) => r[0]), ['a₁', 'a₂', 'a₃', 'a₄', 'Σ'], 'named as the handout names them');
+    assert.deepEqual(table.rows, state.rows, 'each control point');
+    assert.deepEqual(table.foot, [state.sum], 'then the sums, in the footer');
+    assert.ok(table.rowHeaders);
+    assert.deepEqual(table.rows.map((r) => r[0]), ['a₁', 'a₂', 'a₃', 'a₄'], 'named as the handout names them');
     const text = await page.locator(T).textContent();
     assert.ok(text.includes(state.tau[0]), 'τ');
     for (const line of state.equations) assert.ok(text.includes(line), line);
+    // A wider ρ₀ pushes harder: the cells change in place, the table element is the same one.
+    const F_rep = () => page.evaluate((t) => [...document.querySelector(`${t} tbody`).rows].map((r) => r.cells[3].textContent).join('|'), T);
+    const before = await F_rep();
+    await page.evaluate((t) => { window.__table = document.querySelector(`${t} table`); }, T);
+    await api(page, 'set_params', { params: { rho0: 0.3 } });
+    await page.waitForFunction(([t, b]) => [...document.querySelector(`${t} tbody`).rows].map((r) => r.cells[3].textContent).join('|') !== b, [T, before]);
+    const moved = (await api(page, 'state')).forces_table;
+    assert.deepEqual((await cells(page)).rows, moved.rows);
+    assert.deepEqual((await cells(page)).foot, [moved.sum]);
+    assert.ok(await page.evaluate((t) => document.querySelector(`${t} table`) === window.__table, T), 'not rebuilt');
 
     const hidden = await browser.newPage();
     await hidden.goto(url + 'index.html?lesson=potential&hide=p13_forces');

@@ -116,10 +116,15 @@ test('the top bar by keyboard: undo, redo, share, export and import, reset and p
   await page.waitForSelector(`${G} select option`, { state: 'attached' });
   const options = await page.locator(`${G} select option`).allTextContents();
   assert.match(options[0], /reset.*Step PRM/i, 'the work before the reset is the newest previous work');
+  // Each entry is restored by its id, not its place in a list that may have changed since.
+  assert.deepEqual(await page.locator(`${G} select option`).evaluateAll((os) => os.map((o) => o.value)),
+                   await page.evaluate(() => document.querySelector('.lab').cspacelabShell.historyIds));
   await tabToButton(page, 'Restore', 3);
   await page.keyboard.press('Enter');
   await page.waitForFunction(() => window.cspacelab.call('get_scene').obstacles[0]?.center?.[0] === 0.314);
   await waitFrames(page, 2);
+  assert.equal(await focused(page), 'Restore', 'the focus stays (the reset default is now previous work)');
+  assert.match((await page.locator(`${G} select option`).allTextContents())[0], /before restoring other work · Step PRM$/);
   // What the student heard, once each, in order: the copy's own words and the canvas's notices.
   const expected = [/^Undone/, /^Undone/, /^Nothing to undo/, /^Redone/, /^Redone/, /^Link copied|^Copy the link/,
                     /^Import: "scene\.json" is not a scene.*radius.*Nothing changed\.$/, /^Imported "scene\.json"\.$/,

@@ -221,6 +221,8 @@ for (const [held, viewport] of [['upright', PORTRAIT], ['on its side', LANDSCAPE
     await press('tab:view');
     const caption = (await api(page, 'state', { layout: true })).caption_layout;
     assert.ok(caption, 'the distances lesson says where its caption is');
+    // Drawn (a box of zeros would pass the bound below), and within the view and the screen.
+    assert.ok(caption.box[2] - caption.box[0] > 100 && caption.box[3] > caption.box[1], JSON.stringify(caption));
     assert.ok(caption.box[2] <= caption.view_right && caption.view_right <= viewport.width, JSON.stringify(caption));
     await screenshot(page, `phone-${viewport.width}-P10-caption.png`);
     // P13: the forces area's header, its title within its frame (upright it was cut after "ρ, ∇ρ,").

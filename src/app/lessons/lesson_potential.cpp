@@ -158,9 +158,10 @@ class PotentialLesson : public Lesson, private Stepper {
   }
 
   // P13 asks about the forces at the vertices: in the compact layout their table is on the
-  // panel (the Controls tab), so the numbers stay there, the table open and scrolled to.
+  // panel (the Controls tab), so the numbers stay there, the table open and scrolled to. (Hidden
+  // by the instructor, the table holds no numbers: the View tab, as for other problems.)
   bool numbers_shown(LabContext& ctx) override {
-    if (!ctx.compact) return false;
+    if (!ctx.compact || instructor::hidden("p13_forces")) return false;
     forces_open_ = reveal_forces_ = true;
     ctx.notify("The forces at the vertices: the table here. The robot and its arrows: the View tab.");
     return true;
