@@ -7,7 +7,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
-import { withPage, api, drawDisk, waitFrames } from './lib/harness.mjs';
+import { withPage, api, drawDisk, waitFrames, recordLive } from './lib/harness.mjs';
 
 const G = '.lab-access-actions';
 const focused = (page) => page.evaluate(() => document.activeElement.textContent);
@@ -21,15 +21,6 @@ async function tabToButton(page, label, max = 80) {
   throw new Error(`${label} not reached in ${max} presses of Tab`);
 }
 
-// Records every text the copy's live region gets, in order.
-async function listen(page) {
-  await page.evaluate((g) => {
-    window.__said = [];
-    const live = document.querySelector(`${g} [aria-live]`);
-    new MutationObserver(() => { if (live.textContent) window.__said.push(live.textContent); })
-      .observe(live, { childList: true, characterData: true, subtree: true });
-  }, G);
-}
 const heard = (page, re) => page.waitForFunction((src) => window.__said.some((t) => new RegExp(src).test(t)), re.source, { timeout: 5000 })
   .catch(async (e) => { throw new Error(`not heard: ${re}; heard: ${(await said(page)).join(' | ')}; focus: ${await focused(page)}`); });
 const said = (page) => page.evaluate(() => window.__said);
@@ -37,7 +28,7 @@ const said = (page) => page.evaluate(() => window.__said);
 test('the top bar by keyboard: undo, redo, share, export and import, reset and previous work',
   () => withPage({ open: 'index.html?lesson=step-prm' }, async ({ page }) => {
   await page.waitForSelector(`${G} button`, { state: 'attached' });
-  await listen(page);
+  await recordLive(page, `${G} [aria-live]`);
   await api(page, 'set_scene', { scene: { version: 1, start: [0.1, 0.1], goal: [0.9, 0.9] } });
   await drawDisk(page, [0.5, 0.5], [0.6, 0.5]);  // one edit, with the mouse, to undo
   const drawn = await api(page, 'get_scene');

@@ -7,7 +7,7 @@
 // made on the canvas's card followed by the copy, and a minimal embed with a problem link.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { withPage, withBrowser, collectErrors, openLab, api, waitFrames } from './lib/harness.mjs';
+import { withPage, withBrowser, collectErrors, openLab, api, waitFrames, recordLive } from './lib/harness.mjs';
 import { s1, visibility } from '../lib/homework-answers.mjs';
 
 const G = '.lab-access-homework';
@@ -37,13 +37,7 @@ async function typeAnswer(page, text) {
 test('homework by keyboard alone: P10 from the list, wrong and right, its numbers, New numbers, Close',
   () => withPage({ open: 'index.html?lesson=step-prm' }, async ({ page }) => {
   await page.waitForSelector(`${G} select`, { state: 'attached' });
-  // Every word the live region gets, in order (it is emptied and set again for a repeat).
-  await page.evaluate((g) => {
-    window.__said = [];
-    const live = document.querySelector(`${g} [aria-live]`);
-    new MutationObserver(() => { if (live.textContent) window.__said.push(live.textContent); })
-      .observe(live, { childList: true, characterData: true, subtree: true });
-  }, G);
+  await recordLive(page, `${G} [aria-live]`);  // every word it gets, in order
   const list = await api(page, 'homework');
   assert.deepEqual(await page.locator(`${G} option`).allTextContents(), list.map((p) => `${p.id}: ${p.title}`));
   assert.equal(await page.locator(`${G}-card`).isHidden(), true, 'no card before a problem is open');

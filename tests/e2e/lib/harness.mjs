@@ -74,6 +74,19 @@ export async function withPage(options, fn) {
   });
 }
 
+/**
+ * Records every text the live region `selector` gets, in order, in the page's window.__said (a
+ * region emptied and set again, for a repeat, is heard twice).
+ */
+export async function recordLive(page, selector) {
+  await page.evaluate((sel) => {
+    window.__said = [];
+    const live = document.querySelector(sel);
+    new MutationObserver(() => { if (live.textContent) window.__said.push(live.textContent); })
+      .observe(live, { childList: true, characterData: true, subtree: true });
+  }, selector);
+}
+
 /** Waits until the app has drawn at least `count` more frames. */
 export async function waitFrames(page, count = 2) {
   const start = await page.evaluate(() => window.cspacelab.status().frames);
