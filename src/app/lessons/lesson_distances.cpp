@@ -915,7 +915,7 @@ class DistancesLesson : public Lesson {
   Vec2 p1_{0.2, 0.3}, p2_{0.8, 0.6}, q_{0.55, 0.2};
   double r_ = 0.1;
   // The last caption drawn: its box (left, top, right, bottom) and its view's right edge.
-  mutable std::array<float, 5> caption_box_{};
+  std::array<float, 5> caption_box_{};
   S1DistanceReport s1_;
   SegmentDiskReport segment_;
   WorkspaceView circle_view_, view_;

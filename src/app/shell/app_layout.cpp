@@ -155,14 +155,8 @@ void App::top_bar() {
   // By touch on a tablet every button of the bar is 44 px high (ctx_.tall_bar), and the title
   // and the categories' labels are centred on them.
   const bool tall = ctx_.tall_bar;
-  const auto align = [&] {
-    const float pad = tall ? 0.5f * (44.0f - ImGui::GetFontSize()) : style.FramePadding.y;
-    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(style.FramePadding.x, pad));
-    ImGui::AlignTextToFramePadding();
-    ImGui::PopStyleVar();
-  };
   ImGui::PushFont(fonts().title);
-  if (tall) align();
+  if (tall) ui::align_to_bar(true);
   ImGui::TextUnformatted(web::page().minimal ? current_name.c_str() : "C-Space Lab");
   ImGui::PopFont();
   ImGui::SameLine(0, 24);
@@ -207,7 +201,7 @@ void App::top_bar() {
         const std::string label = category + ":";
         // The label keeps its first lesson on the same row.
         place(ImGui::CalcTextSize(label.c_str()).x + style.ItemSpacing.x + button_w, 18);
-        align();
+        ui::align_to_bar(tall);
         ImGui::TextDisabled("%s", label.c_str());
         ImGui::SameLine();
       } else {
@@ -245,17 +239,13 @@ void App::compact_bar() {
   const bool titled = web::page().minimal || ImGui::GetContentRegionAvail().x >= kTitledWidth;
   if (titled) {
     ImGui::PushFont(fonts().title);
-    // Centred on the row's buttons, 44 px high by touch.
-    const float pad = input::touch() ? 0.5f * (bar_h - ImGui::GetFontSize()) : ImGui::GetStyle().FramePadding.y;
-    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(ImGui::GetStyle().FramePadding.x, pad));
-    ImGui::AlignTextToFramePadding();
-    ImGui::PopStyleVar();
+    ui::align_to_bar(ctx_.tall_bar);  // centred on the row's buttons, 44 px high by touch
     ImGui::TextUnformatted(web::page().minimal ? current_name.c_str() : "C-Space Lab");
     ImGui::PopFont();
   }
   if (!web::page().minimal) {
     if (titled) ImGui::SameLine(0, 12);
-    homework_.menu_button(input::touch());
+    homework_.menu_button(ctx_.tall_bar);
   }
   const float actions_w = web::top_bar_actions_width();
   const auto after = [&] { return ImGui::GetItemRectMax().x - ImGui::GetWindowPos().x + 12; };

@@ -21,12 +21,22 @@ inline bool small_button(const char* label) { return input::touch() ? ImGui::But
 /// on a tablet, where they are 44 px high as the compact tabs and lesson menu are, the size a
 /// finger is sure of (they were 26 px, above WCAG's 24 but often missed beside each other). By
 /// mouse they keep ImGui's size; one row of the bar is always one height.
+/// The vertical frame padding of the bar's items in the current font: 44 px high when `tall`.
+inline float bar_padding_y(bool tall) {
+  return tall ? 0.5f * (44.0f - ImGui::GetFontSize()) : ImGui::GetStyle().FramePadding.y;
+}
 inline bool bar_button(const char* label, bool tall) {
   if (!tall) return ImGui::Button(label);
-  ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(ImGui::GetStyle().FramePadding.x, 0.5f * (44.0f - ImGui::GetFontSize())));
+  ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(ImGui::GetStyle().FramePadding.x, bar_padding_y(true)));
   const bool pressed = ImGui::Button(label);
   ImGui::PopStyleVar();
   return pressed;
+}
+/// Text that comes next on the bar's row (the title, a category's label) centred on its buttons.
+inline void align_to_bar(bool tall) {
+  ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(ImGui::GetStyle().FramePadding.x, bar_padding_y(tall)));
+  ImGui::AlignTextToFramePadding();
+  ImGui::PopStyleVar();
 }
 
 /// Width of a radio button or checkbox with this label.
