@@ -7,20 +7,9 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
-import { withPage, api, drawDisk, waitFrames, recordLive } from './lib/harness.mjs';
+import { withPage, api, drawDisk, waitFrames, recordLive, focused, tabToButton } from './lib/harness.mjs';
 
 const G = '.lab-access-actions';
-const focused = (page) => page.evaluate(() => document.activeElement.textContent);
-
-// Presses Tab until the focus is on the button `label`; fails after `max` presses.
-async function tabToButton(page, label, max = 80) {
-  for (let n = 1; n <= max; ++n) {
-    await page.keyboard.press('Tab');
-    if (await focused(page) === label) return n;
-  }
-  throw new Error(`${label} not reached in ${max} presses of Tab`);
-}
-
 const heard = (page, re) => page.waitForFunction((src) => window.__said.some((t) => new RegExp(src).test(t)), re.source, { timeout: 5000 })
   .catch(async (e) => { throw new Error(`not heard: ${re}; heard: ${(await said(page)).join(' | ')}; focus: ${await focused(page)}`); });
 const said = (page) => page.evaluate(() => window.__said);
@@ -36,7 +25,7 @@ test('the top bar by keyboard: undo, redo, share, export and import, reset and p
 
   // From the lab's focus, Tab reaches Undo (through the homework, lessons, parameters, steps).
   await page.locator('canvas').focus();
-  await tabToButton(page, 'Undo');
+  await tabToButton(page, 'Undo', 80);  // through the homework, lessons, parameters, steps
   await page.keyboard.press('Enter');
   await heard(page, /^Undone/);
   assert.equal((await api(page, 'get_scene')).obstacles.length, 0, 'the disk is undone');

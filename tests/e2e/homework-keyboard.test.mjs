@@ -7,23 +7,12 @@
 // made on the canvas's card followed by the copy, and a minimal embed with a problem link.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { withPage, withBrowser, collectErrors, openLab, api, waitFrames, recordLive } from './lib/harness.mjs';
+import { withPage, withBrowser, collectErrors, openLab, api, waitFrames, recordLive, focused, tabTo,
+         tabToButton } from './lib/harness.mjs';
 import { s1, visibility } from '../lib/homework-answers.mjs';
 
 const G = '.lab-access-homework';
 
-// Presses Tab until `is(activeElement)` holds, at most `max` times; returns how many it took.
-async function tabTo(page, is, max, what) {
-  for (let n = 1; n <= max; ++n) {
-    await page.keyboard.press('Tab');
-    if (await page.evaluate(is)) return n;
-  }
-  const at = await page.evaluate(() => document.activeElement.outerHTML.slice(0, 120));
-  throw new Error(`${what} not reached in ${max} presses of Tab; the focus is on ${at}`);
-}
-const tabToButton = (page, label, max = 12) =>
-  tabTo(page, new Function(`return document.activeElement.textContent === ${JSON.stringify(label)}`), max, label);
-const focused = (page) => page.evaluate(() => document.activeElement.textContent);
 const verdict = (page) => page.locator(`${G} [aria-live]`).textContent();
 
 // Types into the focused answer field (clearing it first) and presses Enter.

@@ -74,6 +74,23 @@ export async function withPage(options, fn) {
   });
 }
 
+/** The focused element's text (a button's label, a heading). */
+export const focused = (page) => page.evaluate(() => document.activeElement.textContent);
+
+/** Presses Tab until `is(activeElement)` holds, at most `max` times; returns how many it took. */
+export async function tabTo(page, is, max, what) {
+  for (let n = 1; n <= max; ++n) {
+    await page.keyboard.press('Tab');
+    if (await page.evaluate(is)) return n;
+  }
+  const at = await page.evaluate(() => document.activeElement.outerHTML.slice(0, 120));
+  throw new Error(`${what} not reached in ${max} presses of Tab; the focus is on ${at}`);
+}
+
+/** tabTo() the control whose text is `label`. */
+export const tabToButton = (page, label, max = 12) =>
+  tabTo(page, new Function(`return document.activeElement.textContent === ${JSON.stringify(label)}`), max, label);
+
 /**
  * Records every text the live region `selector` gets, in order, in the page's window.__said (a
  * region emptied and set again, for a repeat, is heard twice).
