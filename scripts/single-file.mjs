@@ -1,8 +1,8 @@
 // Builds the single-file lab: one self-contained HTML page (for an LMS that takes one file, or
 // to open from disk) from the built site.
 //   node scripts/single-file.mjs DIST OUT.html
-// Takes DIST/index.html and inlines its stylesheet and scripts (and lab-homework-access.js,
-// lab-actions-access.js and lab-tables-access.js, which lab.js would fetch); the wasm goes in as a gzip'd,
+// Takes DIST/index.html and inlines its stylesheet and scripts (and LATE below, which lab.js
+// would fetch); the wasm goes in as a gzip'd,
 // base64'd data block (<script type="application/octet-stream" id="cspacelab-wasm">) that
 // lab.js unpacks with DecompressionStream and hands to the module as wasmBinary: nothing is
 // fetched, so the page works from file:// too. The page keeps a Content-Security-Policy with
@@ -32,15 +32,16 @@ html = html.replace(/<link rel="stylesheet" href="([^"]+)">/g, (_, href) => {
   styleHash = sha256(css);
   return `<style data-lab-css>${css}</style>`;
 });
-// lab.js loads the homework's, the top bar's and the tables' accessible copies once a lab has
-// started; here they come inline first.
+// lab.js loads the homework's, the top bar's and the tables' accessible copies and the print
+// worksheet once a lab has started; here they come inline first.
+const LATE = ['lab-homework-access.js', 'lab-actions-access.js', 'lab-tables-access.js', 'lab-print.js'];
 const inline = (src) => {
   const js = '\n' + guard(read(src), 'script') + '\n';
   scriptHashes.push(sha256(js));
   return `<script>${js}</script>`;
 };
 html = html.replace(/<script src="([^"]+)"><\/script>/g, (_, src) =>
-  (src === 'lab.js' ? ['homework', 'actions', 'tables'].map((n) => inline(`lab-${n}-access.js`)).join('\n  ') + '\n  ' : '') +
+  (src === 'lab.js' ? LATE.map(inline).join('\n  ') + '\n  ' : '') +
   inline(src));
 if (scriptHashes.length === 0 || styleHash === null) throw new Error('index.html has no scripts or stylesheet to inline');
 

@@ -27,6 +27,7 @@ class CSpaceLabAccess {
     this.lastAnnounced = -Infinity;  // when the live region last changed (ms)
     this.pendingLine = null;         // a newer log line waiting for the rate limit
     this.announceTimer = 0;
+    this.watchers = [];              // the late copies' (lab-*-access.js) show(status, page)
     this.build();
     this.timer = setInterval(() => this.poll(), CSpaceLabAccess.POLL_MS);
     this.poll();
@@ -133,13 +134,13 @@ class CSpaceLabAccess {
 
   poll() {
     if (document.hidden || !this.section.isConnected) return;
-    let status, specs, text, log;
+    let status, specs, text, log, page;
     try {
       status = this.api.status();
       specs = this.api.paramSpecs();
       text = this.api.describe();
       log = this.api.log();
-      this.showDisplay(this.api.pageState());
+      this.showDisplay(page = this.api.pageState());
     } catch {
       return;  // a lab that stopped: its shell shows why; the section keeps its last state
     }
@@ -155,6 +156,21 @@ class CSpaceLabAccess {
       this.seen.log = key;
       if (!first) this.announce(newest?.text ?? '');
     }
+    for (const show of this.watchers) show(status, page);
+  }
+
+  /** A late copy's show(status, page): called on each poll (one status a poll for all), and now. */
+  watch(show) {
+    this.watchers.push(show);
+    try {
+      show(this.api.status(), this.api.pageState());
+    } catch { /* a lab that stopped: its shell shows why */ }
+  }
+
+  /** Into a live region: emptied, then set, so that the same words twice are read twice. */
+  static say(region, text) {
+    region.textContent = '';
+    setTimeout(() => { region.textContent = text; }, 50);
   }
 
   // Play: a line a second (the newest). A step: at once.

@@ -24,10 +24,7 @@
     access.section.insertBefore(heading, display);
     access.section.insertBefore(g, display);
     const notice = el('p', { className: 'lab-access-notice', 'aria-live': 'polite' }, g);
-    const say = (text) => {
-      notice.textContent = '';
-      setTimeout(() => { notice.textContent = text; }, 50);  // the same words twice are read twice
-    };
+    const say = (text) => global.CSpaceLabAccess.say(notice, text);
 
     let opener = null;  // the last button pressed here; when one that opens a dialog was; the dialog
     let pressed = -Infinity;
@@ -38,7 +35,7 @@
         try {
           opener = b;
           const done = run();
-          if (done && done.then) done.then(show, show);
+          if (done && done.then) done.then(() => show(), () => show());
         } catch (e) {
           say(e.message);
         }
@@ -105,11 +102,10 @@
     }).observe(access.root, { childList: true });
 
     const seen = { notice: '', history: null };
-    function show() {
-      let status, page;
+    function show(status, page) {
       try {
-        status = api.status();
-        page = api.pageState();
+        status = status || api.status();
+        page = page || api.pageState();
       } catch {
         return;  // a lab that stopped: its shell shows why
       }
@@ -134,12 +130,7 @@
       }
     }
 
-    // On a timer of its own, as lab-access.js's poll (and not while the page is hidden).
-    const timer = setInterval(() => {
-      if (!access.section.isConnected) clearInterval(timer);
-      else if (!document.hidden) show();
-    }, global.CSpaceLabAccess.POLL_MS);
-    show();
+    access.watch(show);  // on each of lab-access.js's polls (not while the page is hidden)
   }
 
   global.CSpaceLabActionsAccess = mirrorActions;

@@ -93,15 +93,14 @@
     function say(text, repeat) {
       if (text === said && !repeat) return;
       said = text;
-      verdict.textContent = '';
-      setTimeout(() => { verdict.textContent = text; }, 50);
+      global.CSpaceLabAccess.say(verdict, text);
     }
 
-    function show() {
+    function show(status) {
       let st, lesson;
       try {
         st = call('homework_state');
-        lesson = access.api.status().lesson;
+        lesson = (status || access.api.status()).lesson;
       } catch {
         return;  // a lab that stopped: its shell shows why; the copy keeps its last state
       }
@@ -147,12 +146,7 @@
       again = false;
     }
 
-    // On a timer of its own, as lab-access.js's poll (and not while the page is hidden).
-    const timer = setInterval(() => {
-      if (!access.section.isConnected) clearInterval(timer);
-      else if (!document.hidden) show();
-    }, global.CSpaceLabAccess.POLL_MS);
-    show();
+    access.watch(show);  // on each of lab-access.js's polls (not while the page is hidden)
   }
 
   global.CSpaceLabHomeworkAccess = mirrorHomework;

@@ -35,10 +35,10 @@
       row.forEach((cell, c) => put(tr.cells[c] || el(c ? 'td' : 'th', c ? {} : { scope: 'row' }, tr), cell));
     }
 
-    function show() {
-      let status, spec, table;
+    function show(status) {
+      let spec, table;
       try {
-        status = access.api.status();
+        status = status || access.api.status();
         spec = TABLES[status.lesson];
         table = spec && access.api.call('state')[spec[0]];
       } catch {
@@ -75,12 +75,7 @@
       while (notes.children.length > lines.length) notes.lastChild.remove();
     }
 
-    // On a timer of its own, as lab-access.js's poll (and not while the page is hidden).
-    const timer = setInterval(() => {
-      if (!access.section.isConnected) clearInterval(timer);
-      else if (!document.hidden) show();
-    }, global.CSpaceLabAccess.POLL_MS);
-    show();
+    access.watch(show);  // on each of lab-access.js's polls (not while the page is hidden)
   }
 
   global.CSpaceLabTablesAccess = mirrorTables;

@@ -19,7 +19,7 @@
 //
 // author=1 opens the instructor's Author view (lab-author.js, loaded only then).
 //
-// This script loads the rest (PARTS below; the homework's accessible copy after the start) from
+// This script loads the rest (PARTS below; the accessible copies and print after the start) from
 // its own folder unless the page has them; from a course page of another origin when the lab's
 // server sends Access-Control-Allow-Origin (the wasm is fetched; docs/web.md, "Cross-origin
 // embedding"). Each lab's API is element.cspacelab once it has started (the element then fires
@@ -33,8 +33,7 @@
   const base = script && script.src ? new URL('.', script.src).href : new URL('.', pageUrl).href;
   const PARTS = [['createCSpaceLab', 'cspacelab.js'], ['CSpaceLabApi', 'lab-api.js'],
                  ['CSpaceLabUrl', 'lab-url.js'], ['CSpaceLabShell', 'lab-shell.js'],
-                 ['CSpaceLabAccess', 'lab-access.js'], ['CSpaceLabTask', 'lab-task.js'],
-                 ['CSpaceLabPrint', 'lab-print.js']];
+                 ['CSpaceLabAccess', 'lab-access.js'], ['CSpaceLabTask', 'lab-task.js']];
   const registry = window.CSpaceLab = window.CSpaceLab || { instances: [] };
   const shells = [];  // every lab's page shell, started or not (traps are routed to them)
 
@@ -271,12 +270,13 @@
     }
     // The parallel DOM: what the canvas shows, as HTML a screen reader and the keyboard reach.
     root.cspacelabAccess = new window.CSpaceLabAccess(root, canvas, api, { ui });
-    // The homework card's, top bar's and tables' copies, fetched after the first frame.
+    // Fetched after the first frame: the homework card's, top bar's and tables' copies, and the
+    // worksheet the lab prints as (its picture, task and parameters, no controls).
     for (const n of ['Homework', 'Actions', 'Tables'])
       need(`CSpaceLab${n}Access`, `lab-${n.toLowerCase()}-access.js`)
         .then(() => window[`CSpaceLab${n}Access`](root.cspacelabAccess)).catch(console.warn);
-    // Printed, the lab is a worksheet: its picture, task and parameters, no controls.
-    root.cspacelabPrint = new window.CSpaceLabPrint(root, canvas, api, shell);
+    need('CSpaceLabPrint', 'lab-print.js')
+      .then(() => { root.cspacelabPrint = new window.CSpaceLabPrint(root, canvas, api, shell); }).catch(console.warn);
     root.cspacelab = api;
     registry.instances.push(api);
     if (index === 0) window.cspacelab = api;  // the first lab in the page's order

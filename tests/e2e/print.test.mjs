@@ -15,7 +15,7 @@ const TASK = ['Find the gap in the wall.', 'How many samples does seed 3 need to
 async function settled(page, selector = '[data-lab]') {
   await page.waitForFunction((s) => !document.querySelector(s).cspacelab.status().busy, selector, { timeout: 30000 });
   const t0 = await page.evaluate(() => performance.now());
-  await page.waitForFunction(([s, t]) => document.querySelector(s).cspacelabPrint.copiedAt > t, [selector, t0], { timeout: 10000 });
+  await page.waitForFunction(([s, t]) => document.querySelector(s).cspacelabPrint?.copiedAt > t, [selector, t0], { timeout: 10000 });
 }
 
 /** What is laid out (has a box) among the page's controls and canvases, outside the printed sheets. */
