@@ -101,7 +101,7 @@
       if (dialog) pressed = -Infinity;
     }).observe(access.root, { childList: true });
 
-    const seen = { notice: '', history: null };
+    const seen = { notices: undefined, history: null };
     function show(status, page) {
       try {
         status = status || api.status();
@@ -109,9 +109,9 @@
       } catch {
         return;  // a lab that stopped: its shell shows why
       }
-      // A notice is read once; the same notice after it went is news again.
-      if (status.notice !== seen.notice && status.notice) say(status.notice);
-      seen.notice = status.notice;
+      // A notice is read once: each has its number, so the same words again are news again.
+      if (status.notices !== seen.notices && status.notice) say(status.notice);
+      seen.notices = status.notices;
       const q = `Reset ${shell.lessonName(status.lesson)} to its default scene and parameters? ` +
         'What you have now is kept: Previous work brings it back.';
       if (question.textContent !== q) question.textContent = q;  // focused, it is not rewritten

@@ -35,7 +35,7 @@ class CSpaceLabApi {
 
   /** The commands the app offers, with one line of help each. */
   help() { return this.call('help'); }
-  /** Frames drawn, frame times, version, pixel ratio, current lesson, current notice. */
+  /** Frames drawn, frame times, version, pixel ratio, current lesson, current notice and their count. */
   status() { return this.call('status'); }
   lessons() { return this.call('lessons'); }
   selectLesson(id) { return this.call('select_lesson', { id }); }

@@ -53,6 +53,14 @@ test('the top bar by keyboard: undo, redo, share, export and import, reset and p
   await page.keyboard.press('Escape');
   await dialog.waitFor({ state: 'detached' });
   assert.equal(await focused(page), 'Share a link to this state', 'the focus is back where the student was');
+  // Again, at once: the same words are a new notice, and they are heard again.
+  await page.keyboard.press('Enter');
+  await dialog.waitFor();
+  await page.waitForFunction(() => window.__said.filter((t) => /^(Link copied|Copy the link)/.test(t)).length === 2,
+                             null, { timeout: 5000 })
+    .catch(async () => { throw new Error(`the second Share was not heard: ${(await said(page)).join(' | ')}`); });
+  await page.keyboard.press('Escape');
+  await dialog.waitFor({ state: 'detached' });
 
   // Export the scene: the file is the scene on screen.
   await tabToButton(page, 'Export the scene (JSON)', 3);
@@ -107,6 +115,7 @@ test('the top bar by keyboard: undo, redo, share, export and import, reset and p
   assert.match((await page.locator(`${G} select option`).allTextContents())[0], /before restoring other work · Step PRM$/);
   // What the student heard, once each, in order: the copy's own words and the canvas's notices.
   const expected = [/^Undone/, /^Undone/, /^Nothing to undo/, /^Redone/, /^Redone/, /^Link copied|^Copy the link/,
+                    /^Link copied|^Copy the link/,
                     /^Import: "scene\.json" is not a scene.*radius.*Nothing changed\.$/, /^Imported "scene\.json"\.$/,
                     /^Step PRM is back to its default\./, /^Restored .*reset.*Step PRM/];
   const words = await said(page);

@@ -230,6 +230,7 @@ void App::register_api() {
                 {"ui_ms", {{"mean", f.mean_ui_ms}, {"p95", f.p95_ui_ms}, {"max", f.max_ui_ms}}},
                 {"vertices", f.vertices},
                 {"notice", ImGui::GetTime() < ctx_.notice_until ? ctx_.notice : ""},
+                {"notices", ctx_.notices},  // the notice's number: a repeat is news too
                 {"panel", panel::state()},
                 {"layout", layout_},
                 {"busy", busy_json()},

@@ -21,6 +21,7 @@ int Playback::due(double dt) {
 void LabContext::notify(const std::string& text, double seconds) {
   notice = text;
   notice_until = ImGui::GetTime() + seconds;
+  ++notices;
 }
 
 }  // namespace csl::app

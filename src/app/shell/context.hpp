@@ -24,6 +24,8 @@ struct LabContext {
   EventLog log;
   std::string notice;          ///< one line shown prominently (a refused edit, a warning)
   double notice_until = 0.0;   ///< ImGui time after which it fades
+  /// How many notices were shown: the same words again are a new notice (the page's copy reads it).
+  int notices = 0;
   /// The lesson's views by name ("workspace", "cspace"), for the JS API's coordinate queries and
   /// the F key (fit the view).
   std::map<std::string, WorkspaceView*> views;
