@@ -5,10 +5,11 @@
 // what it says to the LMS: it finds the LMS's API object in a parent frame or the opener (SCORM
 // 1.2's window.API, 2004's window.API_1484_11), initialises, opens the assignment for the LMS's
 // learner id with the suspend data of the last session, and on every 'cspacelab:assignment'
-// event of the lab's root writes score, status, one interaction per item and the suspend data,
-// then commits. It terminates once, on a pagehide not into the back-forward cache. Without an
-// LMS the suspend data goes to localStorage instead. Anything the LMS refuses becomes the app's one-line notice: the lab
-// itself goes on. Nothing received from the LMS is evaluated.
+// event of the lab's root writes score, status, one interaction per item (and one more per
+// check: a journal) and the suspend data, then commits. It terminates once, on a pagehide not
+// into the back-forward cache. Without an LMS the suspend data goes to localStorage instead.
+// Anything the LMS refuses becomes the app's one-line notice: the lab itself goes on. Nothing
+// received from the LMS is evaluated.
 'use strict';
 
 (function (global) {
@@ -128,12 +129,12 @@
   }
 
   /**
-   * The values one state writes, in order ([element, value]): score, status, interactions,
-   * suspend data. SCORM 1.2's raw score is compared with the manifest's masteryscore (0-100) and
-   * kept within 0-100 by runtimes, so 1.2 reports core's scaled as a percentage; 2004 reports
-   * points and scaled. Passed/failed only once submitted (core's `completed`: all attempted).
+   * The values one state writes, in order ([element, value]): score, status, interactions (the
+   * items', then `journal`'s from index `base`: see report), suspend data. SCORM 1.2's raw score
+   * is compared with the manifest's masteryscore (0-100) and kept within 0-100 by runtimes, so
+   * 1.2 reports core's scaled as a percentage; 2004 reports points and scaled. Passed/failed only once submitted (core's `completed`: all attempted).
    */
-  function valuesOf(state, v) {
+  function valuesOf(state, v, journal = [], base = 0) {
     const g = state.grade || {};
     const out = [];
     const result = state.submitted === true ? (g.passed ? 'passed' : 'failed') : null;
@@ -147,8 +148,9 @@
       out.push(['cmi.completion_status', result ? 'completed' : 'incomplete']);
       out.push(['cmi.success_status', result || 'unknown']);
     }
-    (state.interactions || []).forEach((it, n) => {
-      const p = `cmi.interactions.${n}.`;
+    const its = state.interactions || [];
+    its.concat(journal).forEach((it, n) => {
+      const p = `cmi.interactions.${n < its.length ? n : base + n - its.length}.`;
       const response = text(it.learner_response);
       const correct = text(it.correct_response);
       // A numeric item answered with text ("pi/2") is reported as fill-in: the runtime refuses
@@ -166,6 +168,8 @@
         out.push([p + 'correct_responses.0.pattern', correct.slice(0, 250)]);
       if (v.results[it.result]) out.push([p + 'result', v.results[it.result]]);
       if (typeof it.weighting === 'number') out.push([p + 'weighting', decimal(it.weighting)]);
+      // 2004's time(second,10,0) puts a zone only after hundredths: 2026-11-27T20:10:05.12Z.
+      if (it.at) out.push(v === V12 ? [p + 'time', it.at.toTimeString().slice(0, 8)] : [p + 'timestamp', it.at.toISOString().slice(0, 22) + 'Z']);
     });
     if (state.suspend !== undefined) out.push(['cmi.suspend_data', JSON.stringify(state.suspend)]);
     return out;
@@ -185,6 +189,9 @@
       this.written = new Map();  // element -> the value last set (each is written when it changes)
       this.refused = new Set();  // elements whose refusal was shown (once each)
       this.state = null;
+      this.tries = null;   // each item's tries when last reported
+      this.journal = [];   // an interaction per try (report)
+      this.base = 0;       // where the journal starts: after what the LMS holds from before
       this.started = Date.now();
       this.finished = false;
       this.commitTimer = null;
@@ -263,6 +270,7 @@
           this.win.addEventListener('pageshow', this.onShow);
           learner = this.lmsCall(v.get, v.learner) || undefined;
           resume = this.lmsCall(v.get, 'cmi.suspend_data') || null;
+          this.base = Number(this.lmsCall(v.get, 'cmi.interactions._count')) || 0;
         }
       }
       if (!this.lms) {
@@ -322,8 +330,18 @@
         return;
       }
       const { v } = this.lms;
+      // Each item's interaction shows its latest answer; a try also adds one of its own after
+      // them, which later tries leave as it was: the LMS keeps every check and when it was made
+      // (SCORM allows 250). Tries from an earlier session were written then.
+      const its = state.interactions || [];
+      const base = Math.max(this.base, its.length);
+      (state.items || []).forEach((item, i) => {
+        for (let t = this.tries ? this.tries[i] + 1 : Infinity; t <= item.tries && base + this.journal.length < 250; t++)
+          this.journal.push({ ...its[i], id: `${its[i].id}-try-${t}`, description: `${item.title} (try ${t})`, at: new Date() });
+      });
+      this.tries = (state.items || []).map((item) => item.tries);
       let changed = false;
-      for (const [element, value] of valuesOf(state, v)) {
+      for (const [element, value] of valuesOf(state, v, this.journal, base)) {
         if (this.written.get(element) === value) continue;
         if (this.lmsCall(v.set, element, value) !== null) this.written.set(element, value);
         changed = true;

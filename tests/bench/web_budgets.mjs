@@ -4,7 +4,7 @@
 //   hide, 1.8 MB until the planners of issue 24: see docs/web.md, Budgets) and
 //   JS <= 250 KB uncompressed (what every page loads); lab-assignment.js and
 //   lab-assignment-access.js, loaded only by a lab in assignment mode (assignment=, the SCORM
-//   packages' launch page), on their own <= 24 KB (16 KB until the card's accessible mirror);
+//   packages' launch page), on their own <= 26 KB (24 KB until the LMS journal, 16 KB until the card's accessible mirror);
 //   lab-author.js and lab-scorm-package.js, loaded only by the instructor's Author view, <= 48 KB;
 //   lab-homework-access.js, lab-actions-access.js, lab-tables-access.js and lab-print.js, which
 //   every lab loads once it has started (after its first frame, so not in the 250 KB), <= 8 KB each;
@@ -24,7 +24,7 @@ const args = process.argv.slice(2);
 const quick = args.includes('--quick');
 const runs = Number(args[args.indexOf('--runs') + 1]) || (quick ? 2 : 10);
 const KB = 1024;
-const budgets = { wasm: 2.0 * KB * KB, js: 250 * KB, assignmentJs: 24 * KB, authorJs: 48 * KB, lateJs: 8 * KB,
+const budgets = { wasm: 2.0 * KB * KB, js: 250 * KB, assignmentJs: 26 * KB, authorJs: 48 * KB, lateJs: 8 * KB,
                   firstFrameMs: 1000 };
 
 function size(file) {

@@ -46,7 +46,9 @@ const LMS_JS = `'use strict';
     const cmi = version === '1.2' ? { core: { student_id: ${JSON.stringify(LEARNER)}, student_name: 'Ann' } }
                                   : { learner_id: ${JSON.stringify(LEARNER)}, learner_name: 'Ann' };
     if (previous) {
+      // An LMS keeps the attempt's interactions as well (the journal goes on after them).
       cmi.suspend_data = previous.suspend_data;
+      cmi.interactions = previous.interactions;
       const resume = (version === '1.2' ? previous.core.exit : previous.exit) === 'suspend' ? 'resume' : '';
       if (version === '1.2') cmi.core.entry = resume; else cmi.entry = resume;
     }
@@ -206,7 +208,8 @@ for (const version of ['1.2', '2004']) {
       state = await call(frame, 'assignment_state');
       assert.deepEqual(state.items.map((i) => i.status), ['incorrect', 'correct', 'correct', 'viewed', 'open']);
       assert.equal(state.current, 3);
-      await page.waitForFunction(() => Object.keys(window.lms.api.renderCMIToJSONObject().cmi.interactions).length === 5);
+      // An interaction per item, then one per check made (P3, P10, P12; the visit is none).
+      await page.waitForFunction(() => Object.keys(window.lms.api.renderCMIToJSONObject().cmi.interactions).length === 8);
       const before = await call(frame, 'assignment_state');
       const rec = await lmsRecord(page);
       const responses = Object.values(rec.interactions).map((i) => i[v12 ? 'student_response' : 'learner_response']);
@@ -262,8 +265,14 @@ for (const version of ['1.2', '2004']) {
         assert.equal(await lmsGet(page, 'cmi.completion_status'), 'completed');
         assert.equal(await lmsGet(page, 'cmi.success_status'), 'passed');
       }
-      const done = Object.values((await lmsRecord(page)).interactions);
-      assert.equal(done.length, 5);
+      const all = Object.values((await lmsRecord(page)).interactions);
+      assert.equal(all.length, 9, 'five items, and the journal of four checks across two launches');
+      const done = all.slice(0, 5);
+      const journal = all.slice(5);
+      assert.deepEqual(journal.map((i) => [i.id, i.result, i[v12 ? 'student_response' : 'learner_response']]),
+                       [['item-1-try-1', v12 ? 'wrong' : 'incorrect', ANSWERS[0]], ['item-2-try-1', 'correct', ANSWERS[1]],
+                        ['item-3-try-1', 'correct', ANSWERS[2]], ['item-5-try-1', 'correct', done[4][v12 ? 'student_response' : 'learner_response']]]);
+      for (const it of journal) assert.match(v12 ? it.time : it.timestamp, v12 ? /^\d\d:\d\d:\d\d$/ : /^\d{4}-\d\d-\d\dT\d\d:\d\d:\d\d\.\d\dZ$/);
       const wrong = v12 ? 'wrong' : 'incorrect';
       assert.deepEqual([0, 1, 2, 4].map((i) => done[i].result), [wrong, 'correct', 'correct', 'correct']);
       assert.deepEqual(done.slice(0, 3).map((i) => i[v12 ? 'student_response' : 'learner_response']), [ANSWERS[0], ANSWERS[1], ANSWERS[2]]);

@@ -25,7 +25,7 @@ const GRADED = [[0, 'T^2'], [1, '3.05'], [2, '7'], [4, SOLVED]];
  * assignment_session.cpp): an item is attempted when answered readably (an explore item when
  * visited); completed = every item attempted; raw = the points of the right ones; scaled =
  * raw / max (1 when max is 0 and completed); passed = scaled >= pass, whether submitted or not;
- * an interaction's result is neutral until attempted; suspend = {v: 1, c, s, a: [[item, answer]]}.
+ * an interaction's result is neutral until attempted; suspend = {v: 1, c, s, a: [[item, answer, tries]]}.
  * Right answers are core's for stu-17 (GRADE); a task is answered here with a state ({index,
  * state}) where the app reads its lesson's.
  */
@@ -37,6 +37,7 @@ function fakeApp() {
   let current = 0;
   let submitted = false;
   let answers = [];
+  let tries = [];  // every answer but a visit counts one (core spares a typo or a repeat: not needed here)
   const notation = (item) => /^P[1-7]$/.test(item.problem);
   function judge(item, index, answer) {
     if (answer === undefined) return { attempted: false, correct: false };
@@ -57,7 +58,7 @@ function fakeApp() {
       const points = item.points ?? (item.kind === 'explore' ? 0 : 1);
       return { index, id: `item-${index + 1}`, kind: item.kind, title: item.title || item.problem, points,
                status: answers[index] === undefined ? 'open' : item.kind === 'explore' ? 'viewed' : !g.attempted ? 'answered' : g.correct ? 'correct' : 'incorrect',
-               score: g.correct ? points : 0, max: points };
+               score: g.correct ? points : 0, max: points, tries: tries[index] || 0 };
     });
     const max = items.reduce((s, i) => s + i.max, 0);
     const raw = items.reduce((s, i) => s + i.score, 0);
@@ -74,7 +75,7 @@ function fakeApp() {
         learner_response: response(a.items[i], answers[i]),
         result: !graded[i].attempted ? 'neutral' : graded[i].correct ? 'correct' : 'incorrect' })),
       suspend: { v: 1, c: current, s: submitted ? 1 : 0,
-                 a: answers.flatMap((x, i) => (x === undefined ? [] : [[i, a.items[i].kind === 'explore' ? 1 : x]])) },
+                 a: answers.flatMap((x, i) => (x === undefined ? [] : [[i, a.items[i].kind === 'explore' ? 1 : x].concat(tries[i] || [])])) },
     };
   }
   const api = {
@@ -93,13 +94,17 @@ function fakeApp() {
         current = r ? r.c : 0;
         submitted = r ? r.s === 1 : false;
         answers = [];
-        for (const [i, x] of r ? r.a : []) answers[i] = x;
+        tries = [];
+        for (const [i, x, t] of r ? r.a : []) answers[i] = x, tries[i] = t ?? 0;
         return state();
       }
       if (cmd === 'assignment_state') return state();
       if (submitted && cmd === 'assignment_answer') throw new Error('assignment_answer: submitted');
       if (cmd === 'assignment_go') current = args.index;
-      else if (cmd === 'assignment_answer') answers[args.index] = a.items[args.index].kind === 'explore' ? 1 : args.answer ?? args.state;
+      else if (cmd === 'assignment_answer') {
+        answers[args.index] = a.items[args.index].kind === 'explore' ? 1 : args.answer ?? args.state;
+        if (a.items[args.index].kind !== 'explore') tries[args.index] = (tries[args.index] || 0) + 1;
+      }
       else if (cmd === 'assignment_submit') submitted = true;
       else throw new Error('unknown command ' + cmd);
       const s = state();
@@ -215,10 +220,20 @@ for (const version of ['1.2', '2004']) {
       ['item-3', 'numeric', '7', v12 ? 'wrong' : 'incorrect'],
       ['item-4', other, 'visited', 'correct'],
       ['item-5', other, 'solved: true', 'correct'],
+      // The journal: a check each (a visit is none), in the order made.
+      ['item-1-try-1', 'fill-in', 'T^2', 'correct'],
+      ['item-2-try-1', 'numeric', '3.05', 'correct'],
+      ['item-3-try-1', 'numeric', '7', v12 ? 'wrong' : 'incorrect'],
+      ['item-5-try-1', other, 'solved: true', 'correct'],
     ]);
-    assert.deepEqual(interactions(lms).map((it) => Number(it.weighting)), [1, 2, 2, 0, 3]);
+    assert.deepEqual(interactions(lms).map((it) => Number(it.weighting)), [1, 2, 2, 0, 3, 1, 2, 2, 3]);
+    for (const it of interactions(lms).slice(5)) {
+      if (v12) assert.match(it.time, /^\d\d:\d\d:\d\d$/);
+      else assert.ok(Math.abs(Date.parse(it.timestamp) - Date.now()) < 60000, it.timestamp);
+    }
+    if (!v12) assert.match(interaction(lms, 7).description, /^.+ \(try 1\)$/);
     assert.deepEqual(JSON.parse(record(lms).suspend_data),
-                     { v: 1, c: 4, s: 1, a: [[0, 'T^2'], [1, '3.05'], [2, '7'], [3, 1], [4, SOLVED]] });
+                     { v: 1, c: 4, s: 1, a: [[0, 'T^2', 1], [1, '3.05', 1], [2, '7', 1], [3, 1], [4, SOLVED, 1]] });
 
     win.dispatchEvent(new Event('pagehide'));
     win.dispatchEvent(new Event('pagehide'));
@@ -228,6 +243,31 @@ for (const version of ['1.2', '2004']) {
     assert.equal(v12 ? record(lms).core.exit : record(lms).exit, 'suspend', 'the next launch resumes');
     assert.match(v12 ? record(lms).core.session_time : record(lms).session_time, v12 ? /^\d{2,4}:\d\d:\d\d(\.\d{1,2})?$/ : /^PT\d+H\d+M[\d.]+S$/);
     assert.deepEqual(app.api.notices, [], 'the LMS took every value');
+  });
+
+  test(`SCORM ${version}: the journal keeps every check, across sessions`, async () => {
+    const parent = lmsParent(version);
+    const app = fakeApp();
+    const a = await run(fakeWindow(parent), app);
+    answer(app, 2, '9');
+    answer(app, 2, '7');
+    const lms = parent.lms;
+    const row = (it) => [it.id, it[v12 ? 'student_response' : 'learner_response'], it.result];
+    const wrong = v12 ? 'wrong' : 'incorrect';
+    assert.deepEqual(interactions(lms).slice(2).map(row), [['item-3', '7', wrong], ['item-4', '', 'neutral'], ['item-5', '', 'neutral'],
+                                                            ['item-3-try-1', '9', wrong], ['item-3-try-2', '7', wrong]]);
+    a.finish();
+    // The next launch: the LMS holds 7 interactions and the suspend data; the journal goes on after them.
+    const parent2 = lmsParent(version, { ...record(lms), ...(v12 ? { core: { entry: 'resume' } } : { entry: 'resume' }) });
+    const app2 = fakeApp();
+    await run(fakeWindow(parent2), app2);
+    const right = String(GRADE.items[2].expected);
+    answer(app2, 2, right);
+    const rows = interactions(parent2.lms).map(row);
+    assert.equal(rows.length, 8, 'resumed tries are not journaled again');
+    assert.deepEqual(rows.slice(2), [['item-3', right, 'correct'], ['item-4', '', 'neutral'], ['item-5', '', 'neutral'],
+                                     ['item-3-try-1', '9', wrong], ['item-3-try-2', '7', wrong], ['item-3-try-3', right, 'correct']]);
+    assert.deepEqual(app2.api.notices, []);
   });
 
   test(`SCORM ${version}: a relaunch resumes from the suspend data`, async () => {
@@ -276,11 +316,11 @@ test('without an LMS: a plain page that resumes from localStorage', async () => 
   app.api.call('assignment_go', { index: 1 });
   const key = 'cspacelab:v1:assignment:http://lab.test/assignment.json#motion-planning-week3';
   assert.deepEqual([...storage.keys()], [key], 'by the file\'s URL and its seed_key');
-  assert.deepEqual(JSON.parse(storage.get(key)), { v: 1, c: 1, s: 0, a: [[1, '3.05']] });
+  assert.deepEqual(JSON.parse(storage.get(key)), { v: 1, c: 1, s: 0, a: [[1, '3.05', 1]] });
   const again = fakeApp();
   const a = await run(fakeWindow(null, EXAMPLE, storage), again);
   assert.equal(again.api.calls[0][1].learner, undefined);
-  assert.deepEqual(again.api.calls[0][1].resume, { v: 1, c: 1, s: 0, a: [[1, '3.05']] });
+  assert.deepEqual(again.api.calls[0][1].resume, { v: 1, c: 1, s: 0, a: [[1, '3.05', 1]] });
   assert.equal(a.state.current, 1);
 });
 
@@ -461,5 +501,5 @@ test('without an LMS: two courses\' files of one title keep their work apart', a
                                          'cspacelab:v1:assignment:http://lab.test/planning/week3.json']);
   const again = fakeApp();
   await run(fakeWindow(null, file, storage), again, 'http://lab.test/robotics/week3.json');
-  assert.deepEqual(again.api.calls[0][1].resume.a, [[1, '3.05']]);
+  assert.deepEqual(again.api.calls[0][1].resume.a, [[1, '3.05', 1]]);
 });
