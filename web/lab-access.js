@@ -5,8 +5,9 @@
 // what the view shows (describe), and the event log's newest line as a polite live region.
 //
 // Visually it is hidden (clipped, as screen-reader-only text) until the keyboard enters it: Tab
-// from the canvas lands in it, and while focus is inside it shows as a panel over the lab's
-// bottom. Tab from its last control leaves the lab: nothing traps the keyboard.
+// from the canvas lands in it, and while focus is inside it shows as a panel over the app's side
+// panel (showPlace), or the lab's bottom. Tab from its last control leaves the lab: nothing
+// traps the keyboard.
 //
 // It polls the app on a short timer (not while the page is hidden) and touches the DOM only
 // where something changed. Nothing received is parsed as HTML: text goes in as textContent.
@@ -144,6 +145,7 @@ class CSpaceLabAccess {
     } catch {
       return;  // a lab that stopped: its shell shows why; the section keeps its last state
     }
+    this.showPlace(status.layout || {});
     this.showLessons(status.lesson, (status.restrictions || {}).locked_lesson || null);
     this.showParams(status.lesson, specs);
     this.showSteps(status.stepping || { controls: false }, !!status.busy);
@@ -157,6 +159,17 @@ class CSpaceLabAccess {
       if (!first) this.announce(newest?.text ?? '');
     }
     for (const show of this.watchers) show(status, page);
+  }
+
+  // Shown, the section covers the app's side panel in the wide layout (whose controls it
+  // repeats), not the views a step changes; elsewhere (narrow, the phone's tabs) the lab's bottom.
+  showPlace(layout) {
+    const views = layout.mode === 'wide' ? layout.views || [] : [];
+    const side = views.length ? Math.floor(Math.min(...views.map((v) => v.x))) : 0;
+    if (side === this.seen.side) return;
+    this.seen.side = side;
+    this.section.style.setProperty('--lab-side', side + 'px');
+    this.section.classList.toggle('lab-access-side', side >= 280);
   }
 
   /** A late copy's show(status, page): called on each poll (one status a poll for all), and now. */
