@@ -32,9 +32,10 @@ html = html.replace(/<link rel="stylesheet" href="([^"]+)">/g, (_, href) => {
   styleHash = sha256(css);
   return `<style data-lab-css>${css}</style>`;
 });
-// lab.js loads the homework's, the top bar's and the tables' accessible copies and the print
-// worksheet once a lab has started; here they come inline first.
-const LATE = ['lab-homework-access.js', 'lab-actions-access.js', 'lab-tables-access.js', 'lab-print.js'];
+// lab.js loads the homework's, the top bar's, the tables' and the scene's accessible copies and
+// the print worksheet once a lab has started; here they come inline first.
+const LATE = ['lab-homework-access.js', 'lab-actions-access.js', 'lab-tables-access.js', 'lab-scene-access.js',
+              'lab-print.js'];
 const inline = (src) => {
   const js = '\n' + guard(read(src), 'script') + '\n';
   scriptHashes.push(sha256(js));

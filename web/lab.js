@@ -270,9 +270,9 @@
     }
     // The parallel DOM: what the canvas shows, as HTML a screen reader and the keyboard reach.
     root.cspacelabAccess = new window.CSpaceLabAccess(root, canvas, api, { ui });
-    // Fetched after the first frame: the homework card's, top bar's and tables' copies, and the
-    // worksheet the lab prints as (its picture, task and parameters, no controls).
-    for (const n of ['Homework', 'Actions', 'Tables'])
+    // Fetched after the first frame: the homework card's, top bar's, tables' and scene's copies,
+    // and the worksheet the lab prints as (its picture, task and parameters, no controls).
+    for (const n of ['Homework', 'Actions', 'Tables', 'Scene'])
       need(`CSpaceLab${n}Access`, `lab-${n.toLowerCase()}-access.js`)
         .then(() => window[`CSpaceLab${n}Access`](root.cspacelabAccess)).catch(console.warn);
     need('CSpaceLabPrint', 'lab-print.js')

@@ -6,8 +6,9 @@
 //   lab-assignment-access.js, loaded only by a lab in assignment mode (assignment=, the SCORM
 //   packages' launch page), on their own <= 26 KB (24 KB until the LMS journal, 16 KB until the card's accessible mirror);
 //   lab-author.js and lab-scorm-package.js, loaded only by the instructor's Author view, <= 48 KB;
-//   lab-homework-access.js, lab-actions-access.js, lab-tables-access.js and lab-print.js, which
-//   every lab loads once it has started (after its first frame, so not in the 250 KB), <= 8 KB each;
+//   lab-homework-access.js, lab-actions-access.js, lab-tables-access.js, lab-scene-access.js and
+//   lab-print.js, which every lab loads once it has started (after its first frame, so not in the
+//   250 KB), <= 8 KB each;
 //   first frame <= 1 s after navigation on localhost in headless Chromium.
 //   node tests/bench/web_budgets.mjs [--quick] [--runs N]
 // First frame = performance.now() (milliseconds since the navigation started) when Emscripten's
@@ -41,7 +42,8 @@ const assignmentJs = ['lab-assignment.js', 'lab-assignment-access.js'].map(size)
   .reduce((a, f) => ({ raw: a.raw + f.raw, gzip: a.gzip + f.gzip }), { raw: 0, gzip: 0 });
 const authorJs = ['lab-author.js', 'lab-scorm-package.js'].map(size)
   .reduce((a, f) => ({ raw: a.raw + f.raw, gzip: a.gzip + f.gzip }), { raw: 0, gzip: 0 });
-const lateJs = ['lab-homework-access.js', 'lab-actions-access.js', 'lab-tables-access.js', 'lab-print.js']
+const lateJs = ['lab-homework-access.js', 'lab-actions-access.js', 'lab-tables-access.js', 'lab-scene-access.js',
+                'lab-print.js']
   .map((file) => ({ file, ...size(file) }));
 const single = size('cspacelab-single.html');
 
