@@ -100,6 +100,11 @@ test('the scene by keyboard: add a disk, its numbers, a refusal, the goal, delet
   await heard(page, /^Goal: \(0\.8, 0\.9\)\.$/);
   assert.deepEqual((await api(page, 'get_scene')).goal, [0.8, 0.9]);
   assert.equal(await named(page), 'Goal x, position');
+  await type(page, '5');  // outside the workspace: refused, and the goal stays
+  await page.keyboard.press('Enter');
+  await heard(page, /goal.*inside the workspace/);
+  assert.deepEqual((await api(page, 'get_scene')).goal, [0.8, 0.9]);
+  assert.equal(await page.evaluate(() => document.activeElement.value), '0.8');
 
   // Delete the disk; the focus goes to Add a disk; the top bar copy's Undo brings it back.
   await keyTo(page, 'Tab', 'Delete disk 1');
