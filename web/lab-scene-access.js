@@ -16,13 +16,13 @@ const inside = ([x, y], vs) => vs.reduce((c, [ax, ay], i) => {
 }, false);
 const PART = { center: 'centre', radius: 'radius', a: 'end a', b: 'end b', vertices: 'vertices ("x y, x y, …")' };
 
-// A scene's rows {key, name, i, fields: [[label, path, text?]], say}; r > 'o': point, polygon
+// A scene's rows {key, name, i, fields: [[label, path, text?]], say}
 function rowsOf(s) {
-  const r = s.robot.type, n = s.start.length;
+  const r = s.robot.type, n = s.start.length, arm = r.startsWith('arm');
   const rows = ['Start', 'Goal'].map((name) => {
     const q = name.toLowerCase();
-    return { key: q + r + n, name, say: `${name}: ${pt(s[q])}.`, fields: s[q].map((_, k) => [r > 'o' && k < 2 ? 'xy'[k] +
-      ', position' : `${r > 'o' ? 'angle' : 'joint ' + (k + 1)} θ (radians)`, [q, k]]) };
+    return { key: q + r + n, name, say: `${name}: ${pt(s[q])}.`, fields: s[q].map((_, k) => [!arm && k < 2 ? 'xy'[k] +
+      ', position' : `${arm ? 'joint ' + (k + 1) : 'angle'} θ (radians)`, [q, k]]) };
   });
   s.obstacles.forEach((o, i) => {
     const name = { disk: 'Disk ', polygon: 'Polygon ', segment: 'Wall ' }[o.type] + (i + 1), fields = [], say = [];
@@ -53,7 +53,7 @@ function mirrorScene(access) {
   const value = (f, s, v = get(s, f.path)) => (v == null ? v : f.text ? v.map((p) => p.join(' ')).join(', ') : '' + v);
   // NaN goes as null: the app refuses it with its message.
   const num = (x) => (x.trim() ? +x : NaN);
-  // One set_scene, if the row is still there (not undone)
+  // One set_scene, if the row is still there
   const edit = (row, change) => {
     const s = api.getScene();
     if (row.key && !rowsOf(s).some((r) => r.key === row.key)) throw new Error(row.name + ' is gone.');
@@ -111,7 +111,7 @@ function mirrorScene(access) {
     const r = +(0.05 * Math.min(hi[0] - lo[0], hi[1] - lo[1])).toPrecision(2);
     const away = [];  // [a, b, m]: clear of the segment ab by m
     for (const q of [s.start, s.goal]) {
-      if (rb.type > 'o') away.push([q, q, rb.vertices ? Math.max(...rb.vertices.map((v) => Math.hypot(...v))) : 0]);
+      if (!rb.type.startsWith('arm')) away.push([q, q, rb.vertices ? Math.max(...rb.vertices.map((v) => Math.hypot(...v))) : 0]);
       else {
         let p = rb.base, a = 0;
         rb.lengths.forEach((l, k) => away.push([p, p = [p[0] + l * Math.cos(a += q[k]), p[1] + l * Math.sin(a)], 0]));
