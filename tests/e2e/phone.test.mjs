@@ -213,7 +213,7 @@ test('Phone upright: P13\'s two plots have the View tab, its forces table the Co
 for (const [held, viewport] of [['upright', PORTRAIT], ['on its side', LANDSCAPE]]) {
   test(`Phone ${held}: P10's caption and P13's forces header end within the screen; P13's numbers stay by its table`,
     () => withBrowser(async ({ browser, url }) => {
-    const { page, errors, press, layout, control, fingerDrag } = await phone(browser, url, viewport, '?lesson=step-prm');
+    const { page, errors, press, layout, control } = await phone(browser, url, viewport, '?lesson=step-prm');
     // P10: the circle's caption broken into lines the view's width (upright it ran past the
     // screen's right edge: "…the short way passes 0" lost its last word).
     await api(page, 'open_problem', { id: 'P10', seed: 7 });
@@ -234,9 +234,9 @@ for (const [held, viewport] of [['upright', PORTRAIT], ['on its side', LANDSCAPE
     // "Show these numbers in the tool": the numbers P13 asks about are the forces table's, on
     // the Controls tab of a phone: the tab stays, the table open and scrolled to (it went to
     // the View tab, where the table is not). On its side the card is taller than the screen:
-    // swiped up to the button first.
-    for (let i = 0; i < 4 && (await control('show-in-tool')).y > viewport.height - 40; ++i)
-      await fingerDrag({ x: viewport.width / 2, y: viewport.height - 60 }, { x: viewport.width / 2, y: viewport.height - 200 });
+    // the check scrolled the panel to the button (it was under the bottom edge: a swipe).
+    const tool = await control('show-in-tool');
+    assert.ok(tool.y + tool.h / 2 <= viewport.height, `the button is on screen without a swipe (${JSON.stringify(tool)})`);
     await press('show-in-tool');
     await waitFrames(page, 4);
     assert.equal((await layout()).tab, 'controls', 'the forces table is where P13\'s numbers are');
@@ -245,6 +245,78 @@ for (const [held, viewport] of [['upright', PORTRAIT], ['on its side', LANDSCAPE
     assert.ok(forces.rows.length >= 1, `the table is on screen without a swipe (${JSON.stringify(forces)})`);
     if (viewport === PORTRAIT) assert.equal(forces.rows.length, 4, 'every vertex\'s row on screen');
     await screenshot(page, `phone-${viewport.width}-P13-shown.png`);
+    assert.deepEqual(errors, []);
+  }));
+}
+
+test('Phone on its side: a checked problem scrolls its result and buttons on screen, no swipe (P1 to P13)',
+  () => withBrowser(async ({ browser, url }) => {
+  const { page, errors } = await phone(browser, url, LANDSCAPE, '?lesson=step-prm');
+  // The card is taller than the screen on its side: "Show these numbers in the tool" was under
+  // the panel's bottom edge for P8 to P13 (P13's at 400 to 426 px of 390), seen only by a swipe.
+  for (let i = 1; i <= 13; ++i) {
+    const id = `P${i}`;
+    await api(page, 'open_problem', { id, seed: 7 });
+    await waitFrames(page, 3);
+    assert.equal((await api(page, 'status')).layout.tab, 'controls');
+    await api(page, 'check_answer', { answer: '0' });
+    await waitFrames(page, 4);
+    const b = await page.evaluate(() => window.cspacelab.pageState().buttons);
+    // Between the tabs and the "more below" row (the screen's edge without it).
+    const top = b['tab:controls'][3], bottom = b['panel-more'] ? b['panel-more'][1] : LANDSCAPE.height;
+    const shown = ['show-solution', 'show-in-tool', 'see-in-3d'].filter((n) => b[n]);
+    if (i >= 8) assert.ok(b['show-in-tool'], `${id} offers its numbers in the tool`);
+    for (const n of shown)
+      assert.ok(b[n][1] >= top && b[n][3] <= bottom, `${id}: ${n} at ${b[n]}, on screen from ${top} to ${bottom} px`);
+    if (id === 'P13') await screenshot(page, 'phone-844-P13-checked.png');
+  }
+  assert.deepEqual(errors, []);
+}));
+
+for (const [held, viewport] of [['upright', PORTRAIT], ['on its side', LANDSCAPE]]) {
+  test(`Phone ${held}: P13's shown numbers' notice names its tabs and covers none of the panel`,
+    () => withBrowser(async ({ browser, url }) => {
+    const { page, errors, press, layout, control } = await phone(browser, url, viewport, '?lesson=step-prm');
+    await api(page, 'open_problem', { id: 'P13', seed: 7 });
+    await waitFrames(page, 3);
+    await api(page, 'check_answer', { answer: '0' });
+    await waitFrames(page, 3);
+    await press('show-in-tool');
+    await screenshot(page, `phone-${viewport.width}-P13-notice.png`);  // first: the notice goes in 5 s
+    // Read aloud by the page's accessible copy too: "the table here" meant nothing there.
+    const { notice } = await api(page, 'status');
+    assert.match(notice, /Controls tab/);
+    assert.match(notice, /View tab/);
+    assert.doesNotMatch(notice, /\bhere\b/i);
+    // Over the top bar, above the tabs: not over the Field sliders at the bottom of the panel.
+    const box = (await layout()).notice;
+    assert.ok(box, 'the notice says where it is');
+    const tabs = await control('tab:controls');
+    assert.ok(box.y + box.h <= tabs.y - tabs.h / 2, `the notice ${JSON.stringify(box)} ends above the tabs (${JSON.stringify(tabs)})`);
+    assert.ok(box.x >= 0 && box.x + box.w <= viewport.width, JSON.stringify(box));
+    assert.deepEqual(errors, []);
+  }));
+
+  test(`Phone ${held}: P10's arc lengths keep off q₁'s and q₂'s dots`, () => withBrowser(async ({ browser, url }) => {
+    const { page, errors, press } = await phone(browser, url, viewport, '?lesson=step-prm');
+    await api(page, 'open_problem', { id: 'P10', seed: 7 });
+    await waitFrames(page, 3);
+    await press('tab:view');
+    const meets = (a, b) => a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3];
+    // The preset (on its side "d = 0.9832" sat on q₂'s dot), angles close together, across 0 and π.
+    for (const [q1, q2] of [[0.5, 5.8], [1.0, 1.4], [5.01, 1.89], [3.0, 3.3], [6.1, 0.3]]) {
+      await api(page, 'set_params', { params: { q1, q2 } });
+      await waitFrames(page, 3);
+      const c = (await api(page, 'state', { layout: true })).circle_layout;
+      assert.ok(c && c.arc_labels.length === 2, JSON.stringify(c));
+      const [d, rest] = c.arc_labels;
+      for (const dot of ['q1_dot', 'q2_dot']) {
+        assert.ok(!meets(d, c[dot]), `q = (${q1}, ${q2}): "d = …" ${d} over ${dot} ${c[dot]}`);
+        assert.ok(!meets(rest, c[dot]), `q = (${q1}, ${q2}): "2π − d = …" ${rest} over ${dot} ${c[dot]}`);
+      }
+      assert.ok(!meets(d, rest), `q = (${q1}, ${q2}): the two lengths overlap`);
+      if (q1 === 0.5) await screenshot(page, `phone-${viewport.width}-P10-labels.png`);
+    }
     assert.deepEqual(errors, []);
   }));
 }

@@ -213,6 +213,17 @@ class DistancesLesson : public Lesson {
     if (args.is_object() && args.value("layout", false))
       out["caption_layout"] = {{"box", std::vector<float>(caption_box_.begin(), caption_box_.begin() + 4)},
                                {"view_right", caption_box_[4]}};
+    // P10's circle: the arcs' length labels ("d = …" first) and the handles' dots and names.
+    if (args.is_object() && args.value("layout", false)) {
+      const auto boxes = [](const std::vector<Box>& bs) {
+        json out = json::array();
+        for (const Box& b : bs) out.push_back({b.x0, b.y0, b.x1, b.y1});
+        return out;
+      };
+      const auto at = [&](std::size_t i) { return i < handle_boxes_.size() ? boxes({handle_boxes_[i]})[0] : json(); };
+      out["circle_layout"] = {{"arc_labels", boxes(arc_boxes_)}, {"q1_dot", at(0)}, {"q2_dot", at(1)},
+                              {"q1_label", at(2)}, {"q2_label", at(3)}};
+    }
     return out;
   }
 
@@ -485,18 +496,30 @@ class DistancesLesson : public Lesson {
     // The ticks' names over the arcs (on a phone "0 = 2π" reaches the circle), then the arcs'
     // lengths, over the vectors (which may cross them once moved aside).
     for (int k = 0; k < 4; ++k) boxed_text_centred(dl, tick_name_at(v, k), theme::kLabel, kTickNames[k]);
-    if (!hidden && a.kind == S1Case::General) {
-      arc_label(v, a.wrapped1 + 0.5 * turn, "d = " + num(a.distance), theme::kTextAmount);
-      arc_label(v, a.wrapped1 + 0.5 * other, "2π − d = " + num(kTwoPi - a.distance), theme::kTextKey);
-    } else if (!hidden && a.kind == S1Case::Antipodal) {
-      arc_label(v, a.wrapped1 + 0.5 * turn, "π", theme::kTextAmount);
-      arc_label(v, a.wrapped1 + 0.5 * other, "π", theme::kTextAmount);
-    }
-    // The handles, q2 over q1 (equal angles: both show, q2's ring around q1's dot).
-    // Their labels one above the other when the points coincide.
+    // The handles, q2 over q1 (equal angles: both show, q2's ring around q1's dot), their labels
+    // one above the other when the points coincide. Where they are drawn is known first: the
+    // arcs' lengths keep off them (on a phone on its side "d = …" sat on q2's dot).
     const bool same = a.kind == S1Case::Equal;
-    handle(v, a.wrapped1, kQ1, "q₁", drag_ == Drag::Q1 || hover_ == Drag::Q1, 9.0f, same ? -11.0f : 0.0f);
-    handle(v, a.wrapped2, kQ2, "q₂", drag_ == Drag::Q2 || hover_ == Drag::Q2, same ? 14.0f : 9.0f, same ? 11.0f : 0.0f);
+    const Handle h1{a.wrapped1, kQ1, "q₁", drag_ == Drag::Q1 || hover_ == Drag::Q1, 9.0f, same ? -11.0f : 0.0f};
+    const Handle h2{a.wrapped2, kQ2, "q₂", drag_ == Drag::Q2 || hover_ == Drag::Q2, same ? 14.0f : 9.0f, same ? 11.0f : 0.0f};
+    std::vector<Box> dots{dot_box(v, h1), dot_box(v, h2)};
+    std::vector<Box> names{handle_label_box(v, h1), handle_label_box(v, h2)};
+    for (int k = 0; k < 4; ++k) names.push_back(tick_box(v, k));
+    arc_boxes_.clear();
+    const auto label = [&](double angle, const std::string& text, ImU32 colour) {
+      arc_boxes_.push_back(arc_label(v, angle, text, colour, dots, names));
+      dots.push_back(arc_boxes_.back());  // the second keeps off the first
+    };
+    if (!hidden && a.kind == S1Case::General) {
+      label(a.wrapped1 + 0.5 * turn, "d = " + num(a.distance), theme::kTextAmount);
+      label(a.wrapped1 + 0.5 * other, "2π − d = " + num(kTwoPi - a.distance), theme::kTextKey);
+    } else if (!hidden && a.kind == S1Case::Antipodal) {
+      label(a.wrapped1 + 0.5 * turn, "π", theme::kTextAmount);
+      label(a.wrapped1 + 0.5 * other, "π", theme::kTextAmount);
+    }
+    handle(v, h1);
+    handle(v, h2);
+    handle_boxes_ = {dots[0], dots[1], names[0], names[1]};
     v.pop_clip();
     // The case, over the view's top left corner.
     caption(v, hidden ? std::string("d(q₁, q₂): ") + instructor::kHidden : "d(q₁, q₂) = " + num(a.distance) + " rad: " + case_line());
@@ -565,51 +588,113 @@ class DistancesLesson : public Lesson {
     return v.to_screen(Vec2(1.17 * std::cos(angle), 1.12 * std::sin(angle)));
   }
 
-  // An arc's label at 0.58 of the radius towards the arc's middle (`angle`), moved aside (to
-  // its own side of that line) until it is clear of the ticks and their names. On a phone the
-  // circle is about as wide as "2π − d = 5.3000": the label sat on the name "π" or "0 = 2π". A
-  // desktop's circle leaves the labels where they were.
-  static void arc_label(const WorkspaceView& v, double angle, const std::string& text, ImU32 colour) {
+  // A label's box on the screen (left, top, right, bottom) as boxed_text draws it, centred at
+  // `c` and kept within the clip rectangle.
+  struct Box {
+    float x0, y0, x1, y1;
+    bool meets(const Box& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
+  };
+  static Box text_box(ImDrawList* dl, ImVec2 c, const std::string& text) {
     const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+    const ImVec2 lo = dl->GetClipRectMin(), hi = dl->GetClipRectMax();
+    const float x = std::max(lo.x + 4.0f, std::min(c.x - 0.5f * size.x, hi.x - size.x - 4.0f));
+    const float y = std::max(lo.y + 2.0f, std::min(c.y - 0.5f * size.y, hi.y - size.y - 2.0f));
+    return {x - 3, y - 1, x + size.x + 3, y + size.y + 1};
+  }
+
+  struct Handle {
+    double angle;
+    ImU32 colour;
+    const char* name;
+    bool hot;
+    float size, label_dy;
+    std::string label() const { return std::string(name) + " = " + num(angle); }
+  };
+  static ImVec2 on_circle(const WorkspaceView& v, double angle, double r = 1.0) {
+    return v.to_screen(Vec2(r * std::cos(angle), r * std::sin(angle)));
+  }
+  static Box dot_box(const WorkspaceView& v, const Handle& h) {
+    const ImVec2 c = on_circle(v, h.angle);
+    const float e = h.size + (h.hot ? 7.0f : 2.0f);  // the dot, its edge, the ring when hot
+    return {c.x - e, c.y - e, c.x + e, c.y + e};
+  }
+  static ImVec2 handle_label_at(const WorkspaceView& v, const Handle& h) {
+    const ImVec2 at = on_circle(v, h.angle, 1.3);
+    return ImVec2(at.x, at.y + h.label_dy);
+  }
+  static Box handle_label_box(const WorkspaceView& v, const Handle& h) {
+    return text_box(v.draw_list(), handle_label_at(v, h), h.label());
+  }
+  // Tick k's name where it is drawn (a narrow view moves "0 = 2π" in) and the tick itself (0.95
+  // to 1.05 of the radius), as one rectangle.
+  static Box tick_box(const WorkspaceView& v, int k) {
+    const Box name = text_box(v.draw_list(), tick_name_at(v, k), kTickNames[k]);
+    const ImVec2 tick = on_circle(v, k * kPi / 2);
+    const float t = 0.06f * v.scale();
+    return {std::min(name.x0, tick.x - t), std::min(name.y0, tick.y - t), std::max(name.x1, tick.x + t),
+            std::max(name.y1, tick.y + t)};
+  }
+
+  // An arc's label at 0.58 of the radius towards the arc's middle (`angle`), or the nearest
+  // place to it (2 px steps, the label's own side of that line first) where it keeps off the
+  // handles' dots (`dots`, which the other arc's label joins) and every name (`names`: the
+  // handles' and the ticks'). On a phone the circle is about as wide as "2π − d = 5.3000": the
+  // label sat on the name "π" or "0 = 2π", and on its side on q₂'s dot. A desktop's circle
+  // leaves the labels where they were.
+  static Box arc_label(const WorkspaceView& v, double angle, const std::string& text, ImU32 colour,
+                       const std::vector<Box>& dots, const std::vector<Box>& names) {
+    ImDrawList* dl = v.draw_list();
     const float ux = static_cast<float>(std::cos(angle)), uy = static_cast<float>(-std::sin(angle));  // y down
     const ImVec2 o = v.to_screen(Vec2(0, 0));
     const float r = 0.58f * v.scale();
-    // Half of each box as boxed_text draws it, and 2 px between boxes.
-    const float hw = 0.5f * size.x + 5.0f, hh = 0.5f * size.y + 3.0f;
-    const auto clashes = [&](ImVec2 c) {
-      for (int k = 0; k < 4; ++k) {
-        const ImVec2 at = tick_name_at(v, k), name = ImGui::CalcTextSize(kTickNames[k]);
-        const ImVec2 tick = v.to_screen(Vec2(std::cos(k * kPi / 2), std::sin(k * kPi / 2)));
-        // The name's box and the tick (0.95 to 1.05 of the radius), as one rectangle.
-        const float x0 = std::min(at.x - 0.5f * name.x - 3.0f, tick.x - 0.06f * v.scale()),
-                    x1 = std::max(at.x + 0.5f * name.x + 3.0f, tick.x + 0.06f * v.scale()),
-                    y0 = std::min(at.y - 0.5f * name.y - 1.0f, tick.y - 0.06f * v.scale()),
-                    y1 = std::max(at.y + 0.5f * name.y + 1.0f, tick.y + 0.06f * v.scale());
-        if (c.x + hw > x0 && c.x - hw < x1 && c.y + hh > y0 && c.y - hh < y1) return true;
-      }
-      return false;
+    const ImVec2 base(o.x + r * ux, o.y + r * uy);
+    const auto clear = [&](const Box& b, bool of_names) {
+      // 2 px between boxes
+      const Box g{b.x0 - 1, b.y0 - 1, b.x1 + 1, b.y1 + 1};
+      for (const Box& d : dots)
+        if (g.meets(d)) return false;
+      if (of_names)
+        for (const Box& n : names)
+          if (g.meets(n)) return false;
+      return true;
     };
-    ImVec2 at(o.x + r * ux, o.y + r * uy);
-    for (int step = 0; step < 40 && clashes(at); ++step) {
-      at.x -= 2.0f * uy;
-      at.y += 2.0f * ux;
+    constexpr int kDirections = 16;
+    // Clear of everything in the lesson's font, else in the small one (a phone on its side has a
+    // circle 120 px across), else clear of the dots.
+    for (const int tier : {0, 1, 2}) {
+      if (tier > 0) ImGui::PushFont(fonts().small);
+      for (int step = 0; step <= 60; ++step) {
+        const float reach = 2.0f * static_cast<float>(step);
+        for (int i = 0; i < (step == 0 ? 1 : kDirections); ++i) {
+          // From the label's own side of the line to the centre (-uy, ux), both ways round.
+          const float turn = static_cast<float>(kPi * ((i + 1) / 2) * (i % 2 ? 1 : -1) / (kDirections / 2));
+          const float dx = -uy * std::cos(turn) - ux * std::sin(turn), dy = ux * std::cos(turn) - uy * std::sin(turn);
+          const ImVec2 at(base.x + reach * dx, base.y + reach * dy);
+          const Box b = text_box(dl, at, text);
+          if (clear(b, tier < 2)) {
+            boxed_text_centred(dl, at, colour, text);
+            if (tier > 0) ImGui::PopFont();
+            return b;
+          }
+        }
+      }
+      if (tier > 0) ImGui::PopFont();
     }
-    boxed_text_centred(v.draw_list(), at, colour, text);
+    boxed_text_centred(dl, base, colour, text);
+    return text_box(dl, base, text);
   }
 
-  static void handle(const WorkspaceView& v, double angle, ImU32 colour, const char* label, bool hot, float size,
-                     float label_dy) {
+  static void handle(const WorkspaceView& v, const Handle& h) {
     ImDrawList* dl = v.draw_list();
-    const ImVec2 c = v.to_screen(Vec2(std::cos(angle), std::sin(angle)));
-    if (hot) dl->AddCircle(c, size + 5.0f, theme::with_alpha(colour, 140), 32, 3.0f);
-    if (size > 10.0f) {
-      dl->AddCircle(c, size, colour, 32, 4.0f);
+    const ImVec2 c = on_circle(v, h.angle);
+    if (h.hot) dl->AddCircle(c, h.size + 5.0f, theme::with_alpha(h.colour, 140), 32, 3.0f);
+    if (h.size > 10.0f) {
+      dl->AddCircle(c, h.size, h.colour, 32, 4.0f);
     } else {
-      dl->AddCircleFilled(c, size, colour, 24);
-      dl->AddCircle(c, size, theme::kCanvasBg, 24, 2.0f);
+      dl->AddCircleFilled(c, h.size, h.colour, 24);
+      dl->AddCircle(c, h.size, theme::kCanvasBg, 24, 2.0f);
     }
-    const ImVec2 at = v.to_screen(Vec2(1.3 * std::cos(angle), 1.3 * std::sin(angle)));
-    boxed_text_centred(dl, ImVec2(at.x, at.y + label_dy), colour, std::string(label) + " = " + num(angle));
+    boxed_text_centred(dl, handle_label_at(v, h), h.colour, h.label());
   }
 
   // Press on a handle and drag it round the circle: it turns by the mouse's turn about the
@@ -916,6 +1001,8 @@ class DistancesLesson : public Lesson {
   double r_ = 0.1;
   // The last caption drawn: its box (left, top, right, bottom) and its view's right edge.
   std::array<float, 5> caption_box_{};
+  // The last circle drawn: its arcs' labels, and its handles' dots then names (state's layout).
+  std::vector<Box> arc_boxes_, handle_boxes_;
   S1DistanceReport s1_;
   SegmentDiskReport segment_;
   WorkspaceView circle_view_, view_;

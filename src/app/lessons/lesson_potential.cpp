@@ -163,7 +163,8 @@ class PotentialLesson : public Lesson, private Stepper {
   bool numbers_shown(LabContext& ctx) override {
     if (!ctx.compact || instructor::hidden("p13_forces")) return false;
     forces_open_ = reveal_forces_ = true;
-    ctx.notify("The forces at the vertices: the table here. The robot and its arrows: the View tab.");
+    // Named tabs, not "here": the page's accessible copy reads it aloud, away from the canvas.
+    ctx.notify("Forces: the table on the Controls tab. The robot and its arrows: the View tab.");
     return true;
   }
 

@@ -555,17 +555,29 @@ void App::shortcuts() {
 }
 
 void App::notice() {
+  notice_box_ = {};
   if (ctx_.notice.empty() || ImGui::GetTime() > ctx_.notice_until) return;
   const ImGuiViewport* vp = ImGui::GetMainViewport();
-  ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x + vp->WorkSize.x * 0.5f, vp->WorkPos.y + vp->WorkSize.y - 24),
-                          ImGuiCond_Always, ImVec2(0.5f, 1.0f));
+  // At the bottom it covered a phone's panel (P13's Field sliders, for 5 s) or its views' strip:
+  // in the compact layout it is over the top bar, whose buttons are not what was just used (and
+  // take a tap through it).
+  if (ctx_.compact)
+    ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x + vp->WorkSize.x * 0.5f, vp->WorkPos.y + 4), ImGuiCond_Always,
+                            ImVec2(0.5f, 0.0f));
+  else
+    ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x + vp->WorkSize.x * 0.5f, vp->WorkPos.y + vp->WorkSize.y - 24),
+                            ImGuiCond_Always, ImVec2(0.5f, 1.0f));
   ImGui::SetNextWindowBgAlpha(0.92f);
   ImGui::Begin("##notice", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoFocusOnAppearing |
                    ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs);
-  ImGui::PushTextWrapPos(std::max(200.0f, vp->WorkSize.x * 0.7f));  // long notices wrap
+  // Long notices wrap (on a phone, within the screen's width).
+  ImGui::PushTextWrapPos(ctx_.compact ? vp->WorkSize.x - 4 * ImGui::GetStyle().WindowPadding.x
+                                      : std::max(200.0f, vp->WorkSize.x * 0.7f));
   ImGui::TextColored(theme::vec4(theme::kTextNotice), "%s", ctx_.notice.c_str());
   ImGui::PopTextWrapPos();
+  notice_box_ = {ImGui::GetWindowPos(), ImVec2(ImGui::GetWindowPos().x + ImGui::GetWindowWidth(),
+                                               ImGui::GetWindowPos().y + ImGui::GetWindowHeight())};
   ImGui::End();
 }
 

@@ -99,6 +99,7 @@ class App {
   Tab tab_ = Tab::View;   // the compact layout's tab
   bool log_open_ = false;  // the compact layout's log, unfolded
   nlohmann::json layout_;  // status().layout: the last frame's
+  std::pair<ImVec2, ImVec2> notice_box_;  // where the notice was drawn (zero: none), for layout_json
   // While something is locked: each lesson's scene (JSON, or null) and parameters as the lock
   // found them (or as the lesson began, opened later): what a restore or a reset gets.
   std::map<std::string, nlohmann::json> pins_;

@@ -388,6 +388,8 @@ json App::layout_json() const {
   for (const auto& [name, p] : ctx_.plots) views.push_back(rect_json(name, p->box_min(), p->box_max()));
   for (const auto& [name, r] : ctx_.areas) views.push_back(rect_json(name, r.first, r.second));
   json out{{"mode", ctx_.compact ? "compact" : "wide"}, {"touch", input::touch()}, {"views", views}};
+  // The one-line notice's window, while it shows.
+  if (notice_box_.second.x > notice_box_.first.x) out["notice"] = rect_json("notice", notice_box_.first, notice_box_.second);
   if (ctx_.compact) {
     out["tab"] = tab_ == Tab::View ? "view" : "controls";
     out["log_open"] = log_open_;

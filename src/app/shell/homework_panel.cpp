@@ -77,6 +77,7 @@ void HomeworkPanel::set_exercise(const std::string& id, std::uint64_t seed) {
   }
   checked_.reset();
   checked_answer_.clear();
+  reveal_result_ = 0;
   answer_[0] = '\0';
   focus_answer_ = true;
 }
@@ -95,6 +96,7 @@ json HomeworkPanel::check(const std::string& answer) {
   if (!exercise_) throw ApiError("no exercise is open (open_problem or exercise first)");
   checked_ = check_exercise(*exercise_, answer);
   checked_answer_ = answer;
+  reveal_result_ = 2;
   // The score counts answers the lab could read, and each exercise answered right once.
   Score& s = scores_[exercise_->id];
   if (checked_->readable) ++s.tried;
@@ -301,6 +303,9 @@ void HomeworkPanel::problem_body(const HomeworkProblem& problem) {
     check(answer_);
     focus_answer_ = true;  // correct it and press Enter again
   }
+  // Where the result and the buttons it brings end (screen y).
+  float result_bottom = ImGui::GetCursorScreenPos().y;
+  const auto result_end = [&] { result_bottom = ImGui::GetItemRectMax().y; };
   if (checked_) {
     // A wrong try is told what went wrong, not the answer: another try, or the solution on request.
     const bool whole = !solution_offered();
@@ -309,10 +314,13 @@ void HomeworkPanel::problem_body(const HomeworkProblem& problem) {
     ImGui::PushStyleColor(ImGuiCol_Text, checked_->correct ? theme::vec4(theme::kTextGood) : theme::vec4(theme::kTextBad));
     ImGui::TextWrapped("%s", text.substr(0, cut).c_str());
     ImGui::PopStyleColor();
+    result_end();
     if (cut != std::string::npos) card::paragraphs(text.substr(cut + 1));
+    result_end();
     if (!whole) {
       if (ui::small_button("Show the solution")) show_solution();
       web::record_control("show-solution");
+      result_end();
     }
   }
   // Predict, then reveal: the exercise's numbers go into the tool once the student has answered.
@@ -326,6 +334,7 @@ void HomeworkPanel::problem_body(const HomeworkProblem& problem) {
       }
     }
     web::record_control("show-in-tool");
+    result_end();
   }
   // P1, P2 and P5 are answered in notation; once answered (the lesson's title would give the
   // answer away before), the C-space itself, when the 3-D lesson has this robot's space.
@@ -339,6 +348,18 @@ void HomeworkPanel::problem_body(const HomeworkProblem& problem) {
       }
     }
     web::record_control("see-in-3d");
+    result_end();
+  }
+  if (checked_ && reveal_result_ > 0) {
+    // The card is taller than a phone on its side: a check's result and "Show these numbers in
+    // the tool" were under the panel's bottom edge, and a student who did not know to swipe did
+    // not see them. Scrolled up just so far that its last button is on screen (its first line
+    // stays where both fit).
+    --reveal_result_;
+    const float pad = ImGui::GetStyle().ItemSpacing.y;
+    const float bottom = ImGui::GetWindowPos().y + ImGui::GetWindowHeight();
+    const float below = result_bottom + pad - bottom;
+    if (below > 0.5f) ImGui::SetScrollY(ImGui::GetScrollY() + below);
   }
   if (ui::small_button("New numbers")) set_exercise(e.id, fresh_seed());
   web::record_control("new-numbers");

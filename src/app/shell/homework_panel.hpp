@@ -69,6 +69,9 @@ class HomeworkPanel {
   std::string checked_answer_;
   char answer_[256] = "";
   bool focus_answer_ = false;
+  // Frames left in which the card scrolls the panel to a new check's result and the buttons
+  // under it (two: the panel's "more below" row may take its height the frame after).
+  int reveal_result_ = 0;
   bool map_open_ = false;
   bool want_map_ = false;  // the welcome asked for the map
   std::string error_;  // why the last problem or numbers could not be shown, "" if they were
