@@ -310,9 +310,9 @@ for (const [held, viewport] of [['upright', PORTRAIT], ['on its side', LANDSCAPE
       const c = (await api(page, 'state', { layout: true })).circle_layout;
       assert.ok(c && c.arc_labels.length === 2, JSON.stringify(c));
       const [d, rest] = c.arc_labels;
-      for (const dot of ['q1_dot', 'q2_dot']) {
-        assert.ok(!meets(d, c[dot]), `q = (${q1}, ${q2}): "d = …" ${d} over ${dot} ${c[dot]}`);
-        assert.ok(!meets(rest, c[dot]), `q = (${q1}, ${q2}): "2π − d = …" ${rest} over ${dot} ${c[dot]}`);
+      for (const [k, dot] of c.handles.slice(0, 2).entries()) {  // q₁'s dot, q₂'s
+        assert.ok(!meets(d, dot), `q = (${q1}, ${q2}): "d = …" ${d} over q${k + 1}'s dot ${dot}`);
+        assert.ok(!meets(rest, dot), `q = (${q1}, ${q2}): "2π − d = …" ${rest} over q${k + 1}'s dot ${dot}`);
       }
       assert.ok(!meets(d, rest), `q = (${q1}, ${q2}): the two lengths overlap`);
       if (q1 === 0.5) await screenshot(page, `phone-${viewport.width}-P10-labels.png`);

@@ -210,19 +210,15 @@ class DistancesLesson : public Lesson {
                       {"case", segment_disk_case_name(s.where)}};
     out["dragging"] = drag_name();
     // Where the caption was drawn last frame (canvas px): only when asked, as it depends on the window.
-    if (args.is_object() && args.value("layout", false))
+    if (args.is_object() && args.value("layout", false)) {
       out["caption_layout"] = {{"box", std::vector<float>(caption_box_.begin(), caption_box_.begin() + 4)},
                                {"view_right", caption_box_[4]}};
-    // P10's circle: the arcs' length labels ("d = …" first) and the handles' dots and names.
-    if (args.is_object() && args.value("layout", false)) {
-      const auto boxes = [](const std::vector<Box>& bs) {
-        json out = json::array();
-        for (const Box& b : bs) out.push_back({b.x0, b.y0, b.x1, b.y1});
-        return out;
-      };
-      const auto at = [&](std::size_t i) { return i < handle_boxes_.size() ? boxes({handle_boxes_[i]})[0] : json(); };
-      out["circle_layout"] = {{"arc_labels", boxes(arc_boxes_)}, {"q1_dot", at(0)}, {"q2_dot", at(1)},
-                              {"q1_label", at(2)}, {"q2_label", at(3)}};
+      // P10's circle: the arcs' length labels ("d = …" first); the handles' dots (q₁'s, q₂'s),
+      // then their names (each box: left, top, right, bottom).
+      json labels = json::array(), handles = json::array();
+      for (const Box& b : arc_boxes_) labels.push_back({b.x0, b.y0, b.x1, b.y1});
+      for (const Box& b : handle_boxes_) handles.push_back({b.x0, b.y0, b.x1, b.y1});
+      out["circle_layout"] = {{"arc_labels", labels}, {"handles", handles}};
     }
     return out;
   }
