@@ -191,7 +191,7 @@
       this.state = null;
       this.tries = null;   // each item's tries when last reported
       this.journal = [];   // an interaction per try (report)
-      this.base = 0;       // where the journal starts: after what the LMS holds from before
+      this.base = 0;       // where the journal starts: after what the LMS holds (null: unknown)
       this.started = Date.now();
       this.finished = false;
       this.commitTimer = null;
@@ -270,7 +270,9 @@
           this.win.addEventListener('pageshow', this.onShow);
           learner = this.lmsCall(v.get, v.learner) || undefined;
           resume = this.lmsCall(v.get, 'cmi.suspend_data') || null;
-          this.base = Number(this.lmsCall(v.get, 'cmi.interactions._count')) || 0;
+          // Unread, a journal would overwrite an earlier session's entries: then none is kept.
+          const count = String(this.lmsCall(v.get, 'cmi.interactions._count'));
+          this.base = /^\d+$/.test(count) ? +count : null;
         }
       }
       if (!this.lms) {
@@ -336,8 +338,9 @@
       const its = state.interactions || [];
       const base = Math.max(this.base, its.length);
       (state.items || []).forEach((item, i) => {
-        for (let t = this.tries ? this.tries[i] + 1 : Infinity; t <= item.tries && base + this.journal.length < 250; t++)
-          this.journal.push({ ...its[i], id: `${its[i].id}-try-${t}`, description: `${item.title} (try ${t})`, at: new Date() });
+        for (let t = this.tries && this.base !== null ? this.tries[i] + 1 : Infinity; t <= item.tries && base + this.journal.length < 250; t++)
+          // No weighting: a log of tries, not items an LMS would count again.
+          this.journal.push({ ...its[i], id: `${its[i].id}-try-${t}`, description: `(try ${t}) ${item.title}`, at: new Date(), weighting: undefined });
       });
       this.tries = (state.items || []).map((item) => item.tries);
       let changed = false;
