@@ -22,7 +22,7 @@ function rowsOf(s) {
   const rows = ['Start', 'Goal'].map((name) => {
     const q = name.toLowerCase();
     return { key: q + r + n, name, say: `${name}: ${pt(s[q])}.`, fields: s[q].map((_, k) => [!arm && k < 2 ? 'xy'[k] +
-      ', position' : `${arm ? 'joint ' + (k + 1) : 'angle'} θ (radians)`, [q, k]]) };
+      ' (position)' : `${arm ? 'joint ' + (k + 1) : 'angle'} θ (radians)`, [q, k]]) };
   });
   s.obstacles.forEach((o, i) => {
     const name = { disk: 'Disk ', polygon: 'Polygon ', segment: 'Wall ' }[o.type] + (i + 1), fields = [], say = [];
@@ -93,9 +93,19 @@ function mirrorScene(access) {
       input.oninput = () => { f.typing = true; };
       input.onblur = () => { f.typing = false; };  // (left unchanged)
       input.onchange = () => change(row, f);
+      // Up and Down (a screen reader's spin keys too) step a little: the browser's step would be
+      // 1, out of a unit workspace. An angle by 0.05 rad; a length by 1% of the workspace.
+      input.onkeydown = (e) => {
+        const d = !text && { ArrowUp: 1, ArrowDown: -1 }[e.key];
+        if (!d) return;
+        e.preventDefault();
+        const w = scene.workspace, unit = 0.01 * Math.min(w.max[0] - w.min[0], w.max[1] - w.min[1]);
+        input.value = f4(+input.value + d * (label.includes('θ') ? 0.05 : unit));
+        change(row, f);
+      };
       row.fields.push(f);
     }
-    if (spec.i + 1) {
+    if (spec.i !== undefined) {
       press(el('button', { text: 'Delete ' + spec.name.toLowerCase() }, row.el), () => {
         edit(row, (s) => s.obstacles.splice(row.i, 1));
         add.focus();  // before the row goes
@@ -141,6 +151,8 @@ function mirrorScene(access) {
       status = status || api.status();
       s = api.getScene();
     } catch { /* no scene, or a lab that stopped */ }
+    // A lesson without a scene: the focus, if it was here, goes to the lesson's button.
+    if (!s && g.contains(document.activeElement)) access.section.querySelector('[aria-current="true"], button')?.focus();
     heading.hidden = g.hidden = !s;
     if (!s) return;
     const specs = rowsOf(scene = s), keys = specs.map((r) => r.key).join();
@@ -159,7 +171,11 @@ function mirrorScene(access) {
     if (lock.textContent !== why) lock.textContent = why;
     rows.forEach((r, i) => specs[i]?.key === r.key && r.fields.forEach((f) => {
       const v = value(f, s);
-      if (!f.typing && f.input.value !== v) f.input.value = v;
+      if (!f.typing && f.input.value !== v) {
+        f.input.value = v;  // changed elsewhere (Undo, the mouse): an old refusal no longer holds
+        f.error.textContent = '';
+        f.input.setAttribute('aria-invalid', false);
+      }
       if (f.input.readOnly !== locked) f.input.readOnly = locked;
     }));
     for (const b of g.querySelectorAll(`button:not([aria-disabled="${locked}"])`)) b.setAttribute('aria-disabled', locked);

@@ -8,7 +8,7 @@
 //   lab-author.js and lab-scorm-package.js, loaded only by the instructor's Author view, <= 48 KB;
 //   lab-homework-access.js, lab-actions-access.js, lab-tables-access.js, lab-scene-access.js and
 //   lab-print.js, which every lab loads once it has started (after its first frame, so not in the
-//   250 KB), <= 8 KB each;
+//   250 KB), <= 10 KB each (8 KB until the scene copy's arrow keys);
 //   first frame <= 1 s after navigation on localhost in headless Chromium.
 //   node tests/bench/web_budgets.mjs [--quick] [--runs N]
 // First frame = performance.now() (milliseconds since the navigation started) when Emscripten's
@@ -25,7 +25,7 @@ const args = process.argv.slice(2);
 const quick = args.includes('--quick');
 const runs = Number(args[args.indexOf('--runs') + 1]) || (quick ? 2 : 10);
 const KB = 1024;
-const budgets = { wasm: 2.0 * KB * KB, js: 250 * KB, assignmentJs: 26 * KB, authorJs: 48 * KB, lateJs: 8 * KB,
+const budgets = { wasm: 2.0 * KB * KB, js: 250 * KB, assignmentJs: 26 * KB, authorJs: 48 * KB, lateJs: 10 * KB,
                   firstFrameMs: 1000 };
 
 function size(file) {

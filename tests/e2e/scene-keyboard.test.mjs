@@ -94,17 +94,27 @@ test('the scene by keyboard: add a disk, its numbers, a refusal, the goal, delet
   assert.deepEqual(await api(page, 'get_scene'), before, 'still unchanged');
 
   // The goal moves (Enter sends it too; the focus stays).
-  await keyTo(page, 'Shift+Tab', 'Goal x, position');
+  await keyTo(page, 'Shift+Tab', 'Goal x (position)');
   await type(page, '0.8');
   await page.keyboard.press('Enter');
   await heard(page, /^Goal: \(0\.8, 0\.9\)\.$/);
   assert.deepEqual((await api(page, 'get_scene')).goal, [0.8, 0.9]);
-  assert.equal(await named(page), 'Goal x, position');
+  assert.equal(await named(page), 'Goal x (position)');
   await type(page, '5');  // outside the workspace: refused, and the goal stays
   await page.keyboard.press('Enter');
   await heard(page, /goal.*inside the workspace/);
   assert.deepEqual((await api(page, 'get_scene')).goal, [0.8, 0.9]);
   assert.equal(await page.evaluate(() => document.activeElement.value), '0.8');
+  // Up and Down step by 1% of the unit workspace, each an edit (the browser's own step is 1).
+  await page.keyboard.press('ArrowUp');
+  await heard(page, /^Goal: \(0\.81, 0\.9\)\.$/);
+  await page.keyboard.press('ArrowDown');
+  await page.keyboard.press('ArrowDown');
+  await heard(page, /^Goal: \(0\.79, 0\.9\)\.$/);
+  assert.deepEqual((await api(page, 'get_scene')).goal, [0.79, 0.9]);
+  await type(page, '0.8');
+  await page.keyboard.press('Enter');
+  await heard(page, /^Goal: \(0\.8, 0\.9\)\.$/);
 
   // Delete the disk; the focus goes to Add a disk; the top bar copy's Undo brings it back.
   await keyTo(page, 'Tab', 'Delete disk 1');
@@ -147,7 +157,7 @@ test('lock=scene: the fields are read-only and say why; a lesson without a scene
   assert.equal(await page.evaluate(() => document.activeElement.getAttribute('aria-disabled')), 'true');
   await page.keyboard.press('Enter');
   await heard(page, /fixed by your instructor \(lock=scene\)/);
-  await keyTo(page, 'Shift+Tab', 'Goal y, position');
+  await keyTo(page, 'Shift+Tab', 'Goal y (position)');
   await page.keyboard.type('5');
   await page.keyboard.press('Tab');
   assert.deepEqual(await api(page, 'get_scene'), scene, 'nothing changed');
