@@ -303,8 +303,9 @@ void HomeworkPanel::problem_body(const HomeworkProblem& problem) {
     check(answer_);
     focus_answer_ = true;  // correct it and press Enter again
   }
-  // Where the result and the buttons it brings end (screen y).
-  float result_bottom = ImGui::GetCursorScreenPos().y;
+  // Where the result starts and where the buttons it brings end (screen y).
+  const float result_top = ImGui::GetCursorScreenPos().y;
+  float result_bottom = result_top;
   const auto result_end = [&] { result_bottom = ImGui::GetItemRectMax().y; };
   if (checked_) {
     // A wrong try is told what went wrong, not the answer: another try, or the solution on request.
@@ -353,12 +354,12 @@ void HomeworkPanel::problem_body(const HomeworkProblem& problem) {
   if (checked_ && reveal_result_ > 0) {
     // The card is taller than a phone on its side: a check's result and "Show these numbers in
     // the tool" were under the panel's bottom edge, and a student who did not know to swipe did
-    // not see them. Scrolled up just so far that its last button is on screen (its first line
-    // stays where both fit).
+    // not see them. Scrolled up just so far that its last button is on screen, but never past
+    // the verdict's first line ("Right.", "Not right yet."): where both do not fit, the verdict.
     --reveal_result_;
     const float pad = ImGui::GetStyle().ItemSpacing.y;
-    const float bottom = ImGui::GetWindowPos().y + ImGui::GetWindowHeight();
-    const float below = result_bottom + pad - bottom;
+    const float top = ImGui::GetWindowPos().y, bottom = top + ImGui::GetWindowHeight();
+    const float below = std::min(result_bottom + pad - bottom, result_top - pad - top);
     if (below > 0.5f) ImGui::SetScrollY(ImGui::GetScrollY() + below);
   }
   if (ui::small_button("New numbers")) set_exercise(e.id, fresh_seed());
