@@ -158,7 +158,13 @@ class CSpaceLabAccess {
       this.seen.log = key;
       if (!first) this.announce(newest?.text ?? '');
     }
-    for (const show of this.watchers) show(status, page);
+    for (const show of this.watchers) {
+      try {
+        show(status, page);
+      } catch (e) {
+        console.warn('C-Space Lab:', e);  // one copy's fault: the others go on
+      }
+    }
   }
 
   // Shown, the section covers the app's side panel in the wide layout (whose controls it
