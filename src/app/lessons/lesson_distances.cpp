@@ -591,7 +591,10 @@ class DistancesLesson : public Lesson {
     bool meets(const Box& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
   };
   static Box text_box(ImDrawList* dl, ImVec2 c, const std::string& text) {
-    const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+    return text_box(dl, c, ImGui::CalcTextSize(text.c_str()));
+  }
+  // With the text's size measured once (arc_label tries up to 961 places in each font).
+  static Box text_box(ImDrawList* dl, ImVec2 c, ImVec2 size) {
     const ImVec2 lo = dl->GetClipRectMin(), hi = dl->GetClipRectMax();
     const float x = std::max(lo.x + 4.0f, std::min(c.x - 0.5f * size.x, hi.x - size.x - 4.0f));
     const float y = std::max(lo.y + 2.0f, std::min(c.y - 0.5f * size.y, hi.y - size.y - 2.0f));
@@ -611,7 +614,9 @@ class DistancesLesson : public Lesson {
   }
   static Box dot_box(const WorkspaceView& v, const Handle& h) {
     const ImVec2 c = on_circle(v, h.angle);
-    const float e = h.size + (h.hot ? 7.0f : 2.0f);  // the dot, its edge, the ring when hot
+    // The dot, its edge and the ring it has when hot, hot or not: the arcs' labels, placed clear
+    // of it, would jump as the pointer passed over the handle.
+    const float e = h.size + 7.0f;
     return {c.x - e, c.y - e, c.x + e, c.y + e};
   }
   static ImVec2 handle_label_at(const WorkspaceView& v, const Handle& h) {
@@ -659,6 +664,7 @@ class DistancesLesson : public Lesson {
     // circle 120 px across), else clear of the dots.
     for (const int tier : {0, 1, 2}) {
       if (tier > 0) ImGui::PushFont(fonts().small);
+      const ImVec2 size = ImGui::CalcTextSize(text.c_str());
       for (int step = 0; step <= 60; ++step) {
         const float reach = 2.0f * static_cast<float>(step);
         for (int i = 0; i < (step == 0 ? 1 : kDirections); ++i) {
@@ -666,7 +672,7 @@ class DistancesLesson : public Lesson {
           const float turn = static_cast<float>(kPi * ((i + 1) / 2) * (i % 2 ? 1 : -1) / (kDirections / 2));
           const float dx = -uy * std::cos(turn) - ux * std::sin(turn), dy = ux * std::cos(turn) - uy * std::sin(turn);
           const ImVec2 at(base.x + reach * dx, base.y + reach * dy);
-          const Box b = text_box(dl, at, text);
+          const Box b = text_box(dl, at, size);
           if (clear(b, tier < 2)) {
             boxed_text_centred(dl, at, colour, text);
             if (tier > 0) ImGui::PopFont();
