@@ -132,7 +132,8 @@
    * The values one state writes, in order ([element, value]): score, status, interactions (the
    * items', then `journal`'s from index `base`: see report), suspend data. SCORM 1.2's raw score
    * is compared with the manifest's masteryscore (0-100) and kept within 0-100 by runtimes, so
-   * 1.2 reports core's scaled as a percentage; 2004 reports points and scaled. Passed/failed only once submitted (core's `completed`: all attempted).
+   * 1.2 reports core's scaled as a percentage; 2004 reports points and scaled. Passed/failed
+   * only once submitted (core's `completed`: all attempted).
    */
   function valuesOf(state, v, journal = [], base = 0) {
     const g = state.grade || {};
@@ -338,9 +339,12 @@
       const its = state.interactions || [];
       const base = Math.max(this.base, its.length);
       (state.items || []).forEach((item, i) => {
-        for (let t = this.tries && this.base !== null ? this.tries[i] + 1 : Infinity; t <= item.tries && base + this.journal.length < 250; t++)
+        const first = this.tries && this.base !== null ? this.tries[i] + 1 : Infinity;
+        for (let t = first; t <= item.tries && base + this.journal.length < 250; t++) {
           // No weighting: a log of tries, not items an LMS would count again.
-          this.journal.push({ ...its[i], id: `${its[i].id}-try-${t}`, description: `(try ${t}) ${item.title}`, at: new Date(), weighting: undefined });
+          this.journal.push({ ...its[i], id: `${its[i].id}-try-${t}`, description: `(try ${t}) ${item.title}`,
+                              at: new Date(), weighting: undefined });
+        }
       });
       this.tries = (state.items || []).map((item) => item.tries);
       let changed = false;
