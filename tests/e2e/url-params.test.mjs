@@ -22,7 +22,13 @@ async function fresh(browser, { init } = {}) {
 }
 
 // Every element of the page, as tag names: what the lab and its scripts put there.
-const dom = (page) => page.evaluate(() => Array.from(document.querySelectorAll('*'), (e) => e.tagName.toLowerCase()).join(' '));
+// The page's elements by tag, once the parts loaded after the first frame are in and the scene's
+// copy shows a box for start, goal and each obstacle (its shape follows the scene).
+async function dom(page) {
+  await page.waitForFunction(() => document.querySelector('.lab').cspacelabPrint &&
+    document.querySelectorAll('.lab-access-scene fieldset').length === window.cspacelab.call('get_scene').obstacles.length + 2);
+  return page.evaluate(() => Array.from(document.querySelectorAll('*'), (e) => e.tagName.toLowerCase()).join(' '));
+}
 
 test('garbage values: an in-app notice, the defaults, nothing else', () => withBrowser(async ({ browser, url }) => {
   const { page: clean } = await fresh(browser);
@@ -103,14 +109,15 @@ test('a 10 MB scene, a zip bomb, broken encodings and an invalid scene', () => w
 }));
 
 test('script tags in strings stay text', () => withBrowser(async ({ browser, url }) => {
-  const { page: clean } = await fresh(browser);
-  // The same lesson: the page's accessible section holds the lesson's own controls.
-  await openLab(clean, url + '?lesson=step-prm');
-  const cleanDom = await dom(clean);
-
   const evil = '<script>window.__pwned=1</script><img src=x onerror="window.__pwned=2">';
   const scene = { version: 1, name: evil, robot: { type: 'point' }, obstacles: [{ type: 'disk', center: [0.5, 0.5], radius: 0.1 }],
                   start: [0.1, 0.1], goal: [0.9, 0.9] };
+  const { page: clean } = await fresh(browser);
+  // The same lesson and obstacles: the page's accessible section holds the lesson's own controls
+  // and a box per obstacle.
+  await openLab(clean, url + '?lesson=step-prm&scene=j.' + b64url(JSON.stringify({ ...scene, name: 'clean' })));
+  const cleanDom = await dom(clean);
+
   const link = url + '?lesson=step-prm&scene=j.' + b64url(JSON.stringify(scene)) + '&neighbors=' + encodeURIComponent(evil) +
                '&' + encodeURIComponent('<script>') + '=1&id=' + encodeURIComponent(evil);
   const { page, errors, dialogs } = await fresh(browser);
