@@ -6,7 +6,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import zlib from 'node:zlib';
 import {
-  withPage, withBrowser, openLab, collectErrors, worldToPage, drag, keys, waitFrames, screenshot, inspectPng, api, refusal,
+  withPage, withBrowser, openLab, openPage, collectErrors, worldToPage, drag, keys, waitFrames, screenshot, inspectPng, api, refusal,
 } from './lib/harness.mjs';
 import { cliFreeFraction } from './lib/cspace-volume.mjs';
 
@@ -258,11 +258,8 @@ test('A scene whose volumes cost past the lab\'s limit is refused, by the API an
 }));
 
 test('Phone upright: the lesson is usable with fingers', () => withBrowser(async ({ browser, url }) => {
-  const ctx = await browser.newContext({ viewport: { width: 390, height: 844 }, deviceScaleFactor: 3, hasTouch: true, isMobile: true });
-  const page = await ctx.newPage();
-  await page.addInitScript(() => localStorage.setItem('cspacelab:v1:welcomed', '1'));
-  const errors = collectErrors(page);
-  await openLab(page, url + '?lesson=cspace-3d');
+  const { page, errors } = await openPage(browser, url + '?lesson=cspace-3d',
+                                         { viewport: { width: 390, height: 844 }, deviceScaleFactor: 3, hasTouch: true, isMobile: true });
   await waitFrames(page, 3);
   const layout = (await api(page, 'status')).layout;
   assert.equal(layout.mode, 'compact');
@@ -270,7 +267,7 @@ test('Phone upright: the lesson is usable with fingers', () => withBrowser(async
   assert.ok(ws && vol, 'both views are drawn');
   assert.ok(vol.w >= 0.9 * 390 && vol.h >= 150, `the volume is ${vol.w} x ${vol.h}`);
   assert.ok(vol.y + vol.h <= 844, 'the volume is on screen');
-  const cdp = await ctx.newCDPSession(page);
+  const cdp = await page.context().newCDPSession(page);
   const touch = async (type, points) => {
     await cdp.send('Input.dispatchTouchEvent', { type, touchPoints: points.map((p, i) => ({ x: p.x, y: p.y, id: i })) });
     await waitFrames(page, 2);
@@ -293,5 +290,5 @@ test('Phone upright: the lesson is usable with fingers', () => withBrowser(async
   assert.ok(Math.abs(wrap(r.drawn.yaw - t.drawn.yaw)) > 0.3, `a finger turns the block: ${t.drawn.yaw} -> ${r.drawn.yaw}`);
   await screenshot(page, 'cspace3d-phone.png');
   assert.deepEqual(errors, []);
-  await ctx.close();
+  await page.close();
 }));

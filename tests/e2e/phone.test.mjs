@@ -4,20 +4,16 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import {
-  api, collectErrors, openLab, screenshot, waitFrames, withBrowser, worldToPage,
+  api, openPage, screenshot, waitFrames, withBrowser, worldToPage,
 } from './lib/harness.mjs';
 
 const PORTRAIT = { width: 390, height: 844 };
 const LANDSCAPE = { width: 844, height: 390 };
 
 async function phone(browser, url, viewport, open) {
-  const ctx = await browser.newContext({ viewport, deviceScaleFactor: 3, hasTouch: true, isMobile: true });
-  const page = await ctx.newPage();
-  await page.addInitScript(() => localStorage.setItem('cspacelab:v1:welcomed', '1'));
-  const errors = collectErrors(page);
-  await openLab(page, url + open);
+  const { page, errors } = await openPage(browser, url + open, { viewport, deviceScaleFactor: 3, hasTouch: true, isMobile: true });
   await waitFrames(page, 3);
-  const cdp = await ctx.newCDPSession(page);
+  const cdp = await page.context().newCDPSession(page);
   // Fingers through the browser's touch events (the way a phone delivers them), frames between.
   const touch = async (type, points) => {
     await cdp.send('Input.dispatchTouchEvent', { type, touchPoints: points.map((p, i) => ({ x: p.x, y: p.y, id: i })) });
@@ -47,7 +43,7 @@ async function phone(browser, url, viewport, open) {
     await tap(at);
   };
   const layout = async () => (await page.evaluate(() => window.cspacelab.status())).layout;
-  return { ctx, page, errors, touch, tap, fingerDrag, control, press, layout };
+  return { page, errors, touch, tap, fingerDrag, control, press, layout };
 }
 
 const view = (layout, name) => layout.views.find((v) => v.name === name);
@@ -325,11 +321,7 @@ test('A tablet on its side by touch: the lesson buttons and the top bar\'s are 4
   () => withBrowser(async ({ browser, url }) => {
   const viewport = { width: 1180, height: 820 };
   for (const touch of [true, false]) {
-    const ctx = await browser.newContext({ viewport, hasTouch: touch, isMobile: touch });
-    const page = await ctx.newPage();
-    await page.addInitScript(() => localStorage.setItem('cspacelab:v1:welcomed', '1'));
-    const errors = collectErrors(page);
-    await openLab(page, url + '?lesson=torus');
+    const { page, errors } = await openPage(browser, url + '?lesson=torus', { viewport, hasTouch: touch, isMobile: touch });
     await waitFrames(page, 3);
     const l = (await api(page, 'status')).layout;
     assert.equal(l.mode, 'wide');
@@ -345,7 +337,7 @@ test('A tablet on its side by touch: the lesson buttons and the top bar\'s are 4
     assert.ok(ws.h >= 500, `the workspace is ${ws.h} px tall`);
     await screenshot(page, `tablet-1180x820-${touch ? 'touch' : 'mouse'}.png`);
     assert.deepEqual(errors, []);
-    await ctx.close();
+    await page.close();
   }
 }));
 
@@ -372,10 +364,7 @@ test('Phone on its side: compact, views side by side, PRM stepped', () => withBr
 
 test('A laptop keeps the wide layout; a tablet upright stacks two views', () => withBrowser(async ({ browser, url }) => {
   for (const [viewport, mode] of [[{ width: 1280, height: 800 }, 'wide'], [{ width: 768, height: 1024 }, 'wide']]) {
-    const page = await browser.newPage({ viewport });
-    const errors = collectErrors(page);
-    await page.addInitScript(() => localStorage.setItem('cspacelab:v1:welcomed', '1'));
-    await openLab(page, url + '?lesson=torus');
+    const { page, errors } = await openPage(browser, url + '?lesson=torus', { viewport });
     await waitFrames(page, 3);
     const l = (await api(page, 'status')).layout;
     assert.equal(l.mode, mode);

@@ -62,16 +62,26 @@ export async function withBrowser(fn) {
  */
 export async function withPage(options, fn) {
   if (typeof options === 'function') [options, fn] = [{}, options];
-  const { open = '', welcome = false, ...pageOptions } = options;
+  const { open = '', ...pageOptions } = options;
   return withBrowser(async ({ browser, url }) => {
-    const page = await browser.newPage({ viewport: { width: 1280, height: 800 }, ...pageOptions });
-    // The first-visit welcome moves the side panel down: only the tests about it see it.
-    if (!welcome) await page.addInitScript(() => localStorage.setItem('cspacelab:v1:welcomed', '1'));
-    const errors = collectErrors(page);
-    await openLab(page, url + open);
+    const { page, errors } = await openPage(browser, url + open, pageOptions);
     await fn({ page, errors, browser, url });
     assert.deepEqual(errors, [], 'no console errors or uncaught exceptions');
   });
+}
+
+/**
+ * A new page of `browser` (in a context of its own) that has opened the lab at `at`: { page,
+ * errors } (collectErrors). Options: browser.newPage's (default viewport 1280 x 800; hasTouch,
+ * isMobile, deviceScaleFactor for a phone or a tablet), and `welcome` to keep the first-visit
+ * welcome, which moves the side panel down: only the tests about it see it.
+ */
+export async function openPage(browser, at, { welcome = false, ...pageOptions } = {}) {
+  const page = await browser.newPage({ viewport: { width: 1280, height: 800 }, ...pageOptions });
+  if (!welcome) await page.addInitScript(() => localStorage.setItem('cspacelab:v1:welcomed', '1'));
+  const errors = collectErrors(page);
+  await openLab(page, at);
+  return { page, errors };
 }
 
 /** The focused element's text (a button's label, a heading). */
