@@ -186,6 +186,11 @@ class CSpaceLabAccess {
     } catch { /* a lab that stopped: its shell shows why */ }
   }
 
+  /** Text set only where it changed: a rewrite would move a screen reader's place in it. */
+  static put(node, text) {
+    if (node.textContent !== text) node.textContent = text;
+  }
+
   /** Into a live region: emptied, then set, so that the same words twice are read twice. */
   static say(region, text) {
     region.textContent = '';

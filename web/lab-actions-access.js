@@ -114,7 +114,7 @@
       seen.notices = status.notices;
       const q = `Reset ${shell.lessonName(status.lesson)} to its default scene and parameters? ` +
         'What you have now is kept: Previous work brings it back.';
-      if (question.textContent !== q) question.textContent = q;  // focused, it is not rewritten
+      global.CSpaceLabAccess.put(question, q);  // focused, it is not rewritten
       // The labels and the ids are set together (the shell's refreshHistory).
       const labels = (page.history || []).map((h, i) => [shell.historyIds[i], h.label]);
       const key = JSON.stringify(labels);

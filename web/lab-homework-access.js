@@ -86,8 +86,7 @@
     let again = false;      // a check from here: its verdict is read even if the text is the same
     access.description.setAttribute('tabindex', '-1');
 
-    // Text set only when it changed: a rewrite would move a screen reader's place in it.
-    const put = (node, text) => { if (node.textContent !== text) node.textContent = text; };
+    const put = global.CSpaceLabAccess.put;  // text set only where it changed
 
     // Into the live region; `repeat`: an equal text is read again (emptied first, then set).
     function say(text, repeat) {

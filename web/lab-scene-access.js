@@ -168,7 +168,7 @@ function mirrorScene(access) {
     }
     const locked = !!status.restrictions?.scene;
     const why = locked ? 'Fixed by your instructor (lock=scene).' : '';
-    if (lock.textContent !== why) lock.textContent = why;
+    global.CSpaceLabAccess.put(lock, why);
     rows.forEach((r, i) => specs[i]?.key === r.key && r.fields.forEach((f) => {
       const v = value(f, s);
       if (!f.typing && f.input.value !== v) {

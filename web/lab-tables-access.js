@@ -21,7 +21,7 @@
   /** Adds the open lesson's table to `access` (a CSpaceLabAccess) and keeps it in step. */
   function mirrorTables(access) {
     const el = (tag, props, parent) => access.el(tag, props, parent);
-    const put = (node, text) => { if (node.textContent !== text) node.textContent = text; };
+    const put = global.CSpaceLabAccess.put;  // text set only where it changed
     const id = access.id + '-table';
     const heading = el('h3', { id });
     const box = el('div', { className: 'lab-access-table', role: 'region', 'aria-labelledby': id });
