@@ -139,7 +139,7 @@ function mirrorScene(access) {
       if (gap > room) [c, room] = [p, gap];
     }
     edit({}, (t) => t.obstacles.push({ type: 'disk', center: c, radius: r }));
-    access.poll();
+    show();  // its row, to focus now (press() then polls the whole copy, once)
     const row = rows[rows.length - 1];
     row.fields[0].input.focus();
     return 'Added. ' + row.say;
