@@ -561,12 +561,10 @@ void App::notice() {
   // At the bottom it covered a phone's panel (P13's Field sliders, for 5 s) or its views' strip:
   // in the compact layout it is over the top bar, whose buttons are not what was just used (and
   // take a tap through it).
-  if (ctx_.compact)
-    ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x + vp->WorkSize.x * 0.5f, vp->WorkPos.y + 4), ImGuiCond_Always,
-                            ImVec2(0.5f, 0.0f));
-  else
-    ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x + vp->WorkSize.x * 0.5f, vp->WorkPos.y + vp->WorkSize.y - 24),
-                            ImGuiCond_Always, ImVec2(0.5f, 1.0f));
+  const bool top = ctx_.compact;
+  ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x + vp->WorkSize.x * 0.5f,
+                                 top ? vp->WorkPos.y + 4 : vp->WorkPos.y + vp->WorkSize.y - 24),
+                          ImGuiCond_Always, ImVec2(0.5f, top ? 0.0f : 1.0f));
   ImGui::SetNextWindowBgAlpha(0.92f);
   ImGui::Begin("##notice", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoFocusOnAppearing |
